@@ -1,0 +1,166 @@
+// springlab-sim: runs a scene with no window (issue 2, docs/scene-format.md).
+//   springlab-sim SCENE.json [--duration SECONDS | --steps N] [--time-step H] [--substeps S]
+//                 [--integrator NAME] [--output FINAL.json] [--trace TRACE.csv [--every K]] [--quiet]
+// Exit code 0 done, 2 bad file or argument, 3 the simulation blew up.
+
+#include "sim_options.h"
+#include "trace_writer.h"
+
+#include "core/diagnostics.h"
+#include "core/io/scene_file.h"
+#include "core/model.h"
+#include "core/state.h"
+#include "core/step.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QTextStream>
+
+#include <algorithm>
+
+using namespace Qt::Literals::StringLiterals;
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitBadInput = 2;
+constexpr int kExitBlewUp = 3;
+
+int failWith(const QString &message)
+{
+    QTextStream(stderr) << "springlab-sim: " << message << '\n';
+    return kExitBadInput;
+}
+
+// "1 spring", "2 springs"
+QString counted(std::size_t count, const char *noun)
+{
+    return QString::number(count) + u' ' + QString::fromLatin1(noun) + (count == 1 ? u""_s : u"s"_s);
+}
+
+QString energyRow(const char *label, const core::Energies &e)
+{
+    return QString::asprintf("    %-9s %-14.6g %-14.6g %-14.6g %.6g\n", label, e.kinetic, e.gravitational, e.spring,
+                             e.total());
+}
+
+// what stopped the run, where and when, and what to try
+QString blowupMessage(const core::Blowup &blowup)
+{
+    const char *quantity = blowup.quantity == core::Blowup::Quantity::Velocity ? "velocity" : "position";
+    return QString::asprintf("the simulation blew up in step %llu (t = %.9g s): the %s of particle %d reached %g "
+                             "(the limit is %g)\n  hint: try a smaller time step (--time-step) or more substeps "
+                             "(--substeps)",
+                             static_cast<unsigned long long>(blowup.step), blowup.time, quantity, blowup.particle,
+                             blowup.value, core::kBlowupBound);
+}
+
+}  // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication application(argc, argv);
+    QCoreApplication::setApplicationName(u"springlab-sim"_s);
+    QCoreApplication::setApplicationVersion(QStringLiteral(SPRINGLAB_VERSION));
+
+    // the command line
+    const app::ParsedOptions parsed = app::parseSimOptions(QCoreApplication::arguments());
+    if (!parsed.text.isEmpty()) {
+        QTextStream(stdout) << parsed.text;
+        return kExitOk;
+    }
+    if (!parsed.options)
+        return failWith(parsed.error + u"\n  (springlab-sim --help lists the options)"_s);
+    const app::SimOptions &options = *parsed.options;
+
+    // the scene, with the command line's settings over the file's
+    const io::LoadResult loaded = io::loadScene(options.scenePath);
+    if (!loaded.ok())
+        return failWith(loaded.error);
+    if (!options.quiet)
+        for (const QString &warning : loaded.warnings)
+            QTextStream(stderr) << "springlab-sim: warning: " << warning << '\n';
+    core::SceneDesc scene = *loaded.scene;
+    if (const QString problem = app::applyOverrides(options, scene); !problem.isEmpty())
+        return failWith(problem);
+    QString error;
+    const std::optional<std::uint64_t> steps = app::stepsToRun(options, scene.settings, error);
+    if (!steps)
+        return failWith(error);
+
+    // model and initial state
+    const auto model = core::compileModel(scene);
+    core::State state = core::makeState(*model, scene);
+    const core::Energies start = core::energies(*model, state);
+
+    // the trace starts with step 0
+    app::TraceWriter trace;
+    const bool tracing = !options.tracePath.isEmpty();
+    if (tracing) {
+        if (const QString failure = trace.open(options.tracePath); !failure.isEmpty())
+            return failWith(failure);
+        trace.writeRows(state);
+    }
+
+    // the run, in chunks between trace rows (every K steps, not the last step unless K divides it);
+    // only stepping is timed
+    QElapsedTimer timer;
+    qint64 nanoseconds = 0;
+    bool blewUp = false;
+    const std::uint64_t chunk = tracing ? options.every : std::max<std::uint64_t>(*steps, 1);
+    while (state.step < *steps && !blewUp) {
+        const std::uint64_t until = std::min(*steps, state.step + chunk);
+        timer.start();
+        while (state.step < until)
+            if (!core::step(*model, state)) {
+                blewUp = true;
+                break;
+            }
+        nanoseconds += timer.nsecsElapsed();
+        if (tracing && !blewUp && state.step % options.every == 0)
+            trace.writeRows(state);
+    }
+    if (tracing)
+        if (const QString failure = trace.close(); !failure.isEmpty())
+            return failWith(failure);
+    const core::Energies end = core::energies(*model, state);
+
+    // the final state as a scene to run on from; a blown-up state is not worth saving
+    if (!options.outputPath.isEmpty() && !blewUp) {
+        core::storeState(state, scene);
+        if (const io::SaveResult saved = io::saveScene(options.outputPath, scene); !saved.ok())
+            return failWith(saved.error);
+    }
+
+    // the summary
+    if (!options.quiet) {
+        const double seconds = static_cast<double>(nanoseconds) * 1e-9;
+        QTextStream out(stdout);
+        out << "springlab-sim: " << options.scenePath << " (\"" << QString::fromStdString(scene.name)
+            << "\"): " << counted(scene.particles.size(), "particle") << ", " << counted(scene.springs.size(), "spring")
+            << ", " << counted(scene.planes.size(), "plane") << '\n';
+        out << QString::asprintf("  settings   time step %.9g s, ", scene.settings.timeStep)
+            << counted(static_cast<std::size_t>(scene.settings.substeps), "substep") << ", "
+            << QString::fromStdString(std::string(core::integratorName(scene.settings.integrator))) << '\n';
+        out << QString::asprintf("  ran        %llu of %llu steps%s, %.9g s simulated, in %.3g s wall time",
+                                 static_cast<unsigned long long>(state.step), static_cast<unsigned long long>(*steps),
+                                 blewUp ? " (stopped: blew up)" : "", state.time, seconds);
+        if (seconds > 0.0)
+            out << QString::asprintf(" (%.4g steps/s)", static_cast<double>(state.step) / seconds);
+        out << "\n  energy (J) kinetic        gravitational  spring         total\n"
+            << energyRow("start", start) << energyRow("end", end);
+        out << "  warnings   "
+            << (loaded.warnings.isEmpty() ? u"none"_s : QString::number(loaded.warnings.size()) + u" (above)"_s)
+            << '\n';
+        if (tracing)
+            out << "  trace      " << options.tracePath << ", " << trace.rowCount() << " rows\n";
+        if (!options.outputPath.isEmpty() && !blewUp)
+            out << "  output     " << options.outputPath << '\n';
+    }
+
+    // what went wrong, if it did
+    if (blewUp)
+        QTextStream(stderr) << "springlab-sim: " << blowupMessage(*state.blowup)
+                            << (options.outputPath.isEmpty() ? "" : "\n  (no --output written)") << '\n';
+    return blewUp ? kExitBlewUp : kExitOk;
+}

@@ -1,0 +1,236 @@
+#include "sim_options.h"
+
+#include "core/parameters.h"
+#include "core/validate.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+#include <cmath>
+
+namespace app {
+
+using namespace Qt::Literals::StringLiterals;
+
+namespace {
+
+// more steps than this cannot be counted exactly in a double, nor run in a lifetime
+constexpr double kMaxSteps = 9007199254740992.0;  // 2^53
+
+QString knownIntegrators()
+{
+    QStringList names;
+    for (core::Integrator integrator : core::kIntegrators)
+        names += QString::fromUtf8(core::integratorName(integrator).data(),
+                                   static_cast<qsizetype>(core::integratorName(integrator).size()));
+    return names.join(u", "_s);
+}
+
+// "--name: reason"
+QString optionError(const QString &name, const QString &reason)
+{
+    return u"--"_s + name + u": "_s + reason;
+}
+
+std::optional<std::uint64_t> readCount(const QString &name, const QString &text, std::uint64_t minimum, QString &error)
+{
+    bool ok = false;
+    const qulonglong value = text.trimmed().toULongLong(&ok);
+    if (!ok || text.trimmed().startsWith(u'+') || value < minimum) {
+        error = optionError(name, u"expected a whole number of at least %1, got \""_s.arg(minimum) + text + u'"');
+        return std::nullopt;
+    }
+    if (static_cast<double>(value) > kMaxSteps) {
+        error = optionError(name, u"%1 is too large"_s.arg(value));
+        return std::nullopt;
+    }
+    return value;
+}
+
+std::optional<double> readNumber(const QString &name, const QString &text, const QString &what, QString &error)
+{
+    bool ok = false;
+    const double value = text.trimmed().toDouble(&ok);
+    if (!ok) {
+        error = optionError(name, u"expected "_s + what + u", got \""_s + text + u'"');
+        return std::nullopt;
+    }
+    return value;
+}
+
+// a value checked against the scene files' parameter table
+bool checkAgainstTable(const QString &name, core::Parameter parameter, double value, QString &error)
+{
+    if (const auto reason = core::checkParameter(parameter, value)) {
+        error = optionError(name, QString::fromStdString(*reason));
+        return false;
+    }
+    return true;
+}
+
+// every option's value, one after the other; false with error set at the first bad one
+bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString &error)
+{
+    const QStringList positional = parser.positionalArguments();
+    if (positional.isEmpty()) {
+        error = u"missing the scene file (SCENE.json)"_s;
+        return false;
+    }
+    if (positional.size() > 1) {
+        error = u"one scene file only, got also: "_s + positional.mid(1).join(u' ');
+        return false;
+    }
+    options.scenePath = positional.first();
+
+    // how long
+    if (parser.isSet(u"steps"_s) && parser.isSet(u"duration"_s)) {
+        error = u"--steps and --duration cannot be used together"_s;
+        return false;
+    }
+    if (parser.isSet(u"steps"_s) && !(options.steps = readCount(u"steps"_s, parser.value(u"steps"_s), 0, error)))
+        return false;
+    if (parser.isSet(u"duration"_s)) {
+        options.duration = readNumber(u"duration"_s, parser.value(u"duration"_s), u"a number of seconds"_s, error);
+        if (!options.duration)
+            return false;
+        if (!std::isfinite(*options.duration) || *options.duration < 0.0) {
+            error = optionError(u"duration"_s, u"must be a finite number of seconds, at least 0 (got "_s +
+                                                   parser.value(u"duration"_s) + u")"_s);
+            return false;
+        }
+    }
+
+    // settings that override the file's
+    if (parser.isSet(u"time-step"_s)) {
+        options.timeStep = readNumber(u"time-step"_s, parser.value(u"time-step"_s), u"a number of seconds"_s, error);
+        if (!options.timeStep ||
+            !checkAgainstTable(u"time-step"_s, core::Parameter::TimeStep, *options.timeStep, error))
+            return false;
+    }
+    if (parser.isSet(u"substeps"_s)) {
+        bool ok = false;
+        const int substeps = parser.value(u"substeps"_s).trimmed().toInt(&ok);
+        if (!ok) {
+            error =
+                optionError(u"substeps"_s, u"expected a whole number, got \""_s + parser.value(u"substeps"_s) + u'"');
+            return false;
+        }
+        if (!checkAgainstTable(u"substeps"_s, core::Parameter::Substeps, substeps, error))
+            return false;
+        options.substeps = substeps;
+    }
+    if (parser.isSet(u"integrator"_s)) {
+        const QString name = parser.value(u"integrator"_s);
+        options.integrator = core::integratorFromName(name.toStdString());
+        if (!options.integrator) {
+            error = optionError(u"integrator"_s,
+                                u"unknown integrator \""_s + name + u"\" (known: "_s + knownIntegrators() + u")"_s);
+            return false;
+        }
+    }
+
+    // what to write
+    options.outputPath = parser.value(u"output"_s);
+    options.tracePath = parser.value(u"trace"_s);
+    if (parser.isSet(u"output"_s) && options.outputPath.isEmpty()) {
+        error = optionError(u"output"_s, u"needs a file name"_s);
+        return false;
+    }
+    if (parser.isSet(u"trace"_s) && options.tracePath.isEmpty()) {
+        error = optionError(u"trace"_s, u"needs a file name"_s);
+        return false;
+    }
+    if (parser.isSet(u"every"_s)) {
+        if (!parser.isSet(u"trace"_s)) {
+            error = u"--every only makes sense with --trace"_s;
+            return false;
+        }
+        const auto every = readCount(u"every"_s, parser.value(u"every"_s), 1, error);
+        if (!every)
+            return false;
+        options.every = *every;
+    }
+    options.quiet = parser.isSet(u"quiet"_s);
+    return true;
+}
+
+}  // namespace
+
+ParsedOptions parseSimOptions(const QStringList &arguments)
+{
+    // the options, as --help lists them
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        u"Runs a Springlab scene with no window and prints a summary.\n"
+        "Without --steps or --duration it runs %1 steps. Command-line settings override the file's.\n"
+        "Exit code: 0 done, 2 bad file or argument, 3 the simulation blew up."_s.arg(kDefaultSteps));
+    parser.addPositionalArgument(u"SCENE.json"_s, u"The scene file to run."_s);
+    const QCommandLineOption help(QStringList{u"h"_s, u"help"_s}, u"Show this help."_s);
+    const QCommandLineOption version(u"version"_s, u"Show the version."_s);
+    parser.addOptions({
+        help,
+        version,
+        {u"duration"_s, u"Simulated time to run: round(SECONDS / time step) steps."_s, u"SECONDS"_s},
+        {u"steps"_s, u"Run exactly N steps."_s, u"N"_s},
+        {u"time-step"_s, u"Time step in seconds, instead of the file's."_s, u"H"_s},
+        {u"substeps"_s, u"Sub-steps per step, instead of the file's."_s, u"S"_s},
+        {u"integrator"_s, u"Integrator, instead of the file's: "_s + knownIntegrators() + u'.', u"NAME"_s},
+        {u"output"_s, u"Write the final state as a scene file, to run on from."_s, u"FINAL.json"_s},
+        {u"trace"_s, u"Write positions and velocities as CSV: step,time,particle,x,y,z,vx,vy,vz."_s, u"TRACE.csv"_s},
+        {u"every"_s, u"With --trace: one set of rows every K steps (default 1), step 0 included."_s, u"K"_s},
+        {u"quiet"_s, u"Print nothing but errors."_s},
+    });
+
+    ParsedOptions parsed;
+    if (!parser.parse(arguments)) {
+        parsed.error = parser.errorText();
+        return parsed;
+    }
+    if (parser.isSet(help)) {
+        parsed.text = parser.helpText();
+        return parsed;
+    }
+    if (parser.isSet(version)) {
+        parsed.text = QCoreApplication::applicationName() + u' ' + QCoreApplication::applicationVersion() + u'\n';
+        return parsed;
+    }
+    SimOptions options;
+    if (readOptions(parser, options, parsed.error))
+        parsed.options = options;
+    return parsed;
+}
+
+QString applyOverrides(const SimOptions &options, core::SceneDesc &scene)
+{
+    core::Settings &settings = scene.settings;
+    if (options.timeStep)
+        settings.timeStep = *options.timeStep;
+    if (options.substeps)
+        settings.substeps = *options.substeps;
+    if (options.integrator)
+        settings.integrator = *options.integrator;
+
+    // the options were checked one by one; the scene as a whole is checked once more
+    if (const auto problem = core::findProblem(scene))
+        return options.scenePath + u": "_s + QString::fromStdString(problem->path) + u": "_s +
+               QString::fromStdString(problem->message);
+    return {};
+}
+
+std::optional<std::uint64_t> stepsToRun(const SimOptions &options, const core::Settings &settings, QString &error)
+{
+    if (options.steps)
+        return *options.steps;
+    if (!options.duration)
+        return kDefaultSteps;
+    const double steps = std::round(*options.duration / settings.timeStep);
+    if (!(steps <= kMaxSteps)) {
+        error = optionError(
+            u"duration"_s,
+            u"%1 s at a time step of %2 s is too many steps"_s.arg(*options.duration).arg(settings.timeStep));
+        return std::nullopt;
+    }
+    return static_cast<std::uint64_t>(steps);
+}
+
+}  // namespace app

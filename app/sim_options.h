@@ -1,0 +1,49 @@
+#pragma once
+// The command line of springlab-sim, parsed with QCommandLineParser and checked against the same
+// parameter table as scene files (core/parameters.h), so "--time-step 5" is refused with the
+// same words as "timeStep": 5 in a file.
+
+#include "core/integrator.h"
+#include "core/scene.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <cstdint>
+#include <optional>
+
+namespace app {
+
+// steps run when neither --steps nor --duration is given
+inline constexpr std::uint64_t kDefaultSteps = 1000;
+
+struct SimOptions {
+    QString scenePath;
+    std::optional<std::uint64_t> steps;  // --steps N
+    std::optional<double> duration;      // --duration SECONDS
+    std::optional<double> timeStep;      // --time-step H, s
+    std::optional<int> substeps;         // --substeps S
+    std::optional<core::Integrator> integrator;
+    QString outputPath;       // --output FINAL.json; empty: none
+    QString tracePath;        // --trace TRACE.csv; empty: none
+    std::uint64_t every = 1;  // --every K: a trace row set every K steps
+    bool quiet = false;
+};
+
+struct ParsedOptions {
+    std::optional<SimOptions> options;  // set when the run should go ahead
+    QString error;                      // bad arguments: print it and exit 2
+    QString text;                       // --help or --version: print it and exit 0
+};
+
+// arguments as main() gets them, the program name first
+ParsedOptions parseSimOptions(const QStringList &arguments);
+
+// the command line's settings written over the file's; empty on success, else the message
+QString applyOverrides(const SimOptions &options, core::SceneDesc &scene);
+
+// how many steps to run: --steps N, or round(--duration / time step), or kDefaultSteps;
+// nullopt (with error set) when the duration asks for more steps than can be counted
+std::optional<std::uint64_t> stepsToRun(const SimOptions &options, const core::Settings &settings, QString &error);
+
+}  // namespace app

@@ -1,0 +1,19 @@
+# Compiler flags shared by every Springlab target.
+
+# warnings: every target links springlab_warnings; CI turns them into errors
+add_library(springlab_warnings INTERFACE)
+target_compile_options(springlab_warnings INTERFACE -Wall -Wextra -Wpedantic
+                       $<$<BOOL:${SPRINGLAB_WERROR}>:-Werror>)
+
+# determinism: results must not depend on build flags, so no fast-math and no FMA contraction
+# (a fused multiply-add rounds once where the source rounds twice, which changes the bits)
+add_compile_options(-ffp-contract=off -fno-fast-math)
+
+# sanitizers for the whole build: -DSPRINGLAB_SANITIZE=address,undefined or =thread
+if(SPRINGLAB_SANITIZE)
+  if(SPRINGLAB_SANITIZE MATCHES "thread" AND SPRINGLAB_SANITIZE MATCHES "address")
+    message(FATAL_ERROR "SPRINGLAB_SANITIZE: thread cannot be combined with address")
+  endif()
+  add_compile_options(-fsanitize=${SPRINGLAB_SANITIZE} -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=${SPRINGLAB_SANITIZE})
+endif()

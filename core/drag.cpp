@@ -1,0 +1,13 @@
+#include "passes.h"
+
+namespace core {
+
+// viscous drag of the medium, -c v (pinned particles are at rest, so they get none)
+void addDrag(const Model &model, State &state)
+{
+    if (!model.plan.drag)
+        return;
+    state.force.noalias() -= model.viscosity * state.velocity;
+}
+
+}  // namespace core

@@ -1,0 +1,187 @@
+#include "json_scan.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace io {
+
+namespace {
+
+// one open object or array on the way down to the current value
+struct Frame {
+    bool array = false;
+    qsizetype index = 0;    // arrays: the element being read
+    QString key;            // objects: the member being read
+    bool haveKey = false;   // objects: a key has been read since '{' or ','
+    bool expectKey = true;  // objects: the next string is a key
+};
+
+bool isSpace(char c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
+bool isNumberChar(char c)
+{
+    return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
+}
+
+int hexValue(char c)
+{
+    if (c >= '0' && c <= '9')
+        return c - '0';
+    if (c >= 'a' && c <= 'f')
+        return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F')
+        return c - 'A' + 10;
+    return -1;
+}
+
+// a number literal is a negative zero when it has a minus sign and no non-zero mantissa digit
+bool isNegativeZero(const char *begin, const char *end)
+{
+    if (begin == end || *begin != '-')
+        return false;
+    for (const char *c = begin + 1; c != end && *c != 'e' && *c != 'E'; ++c)
+        if (*c >= '1' && *c <= '9')
+            return false;
+    return true;
+}
+
+// reads the string starting at the quote json[pos]; returns the position after its closing quote,
+// or -1 when the text ends first
+qsizetype readString(const QByteArray &json, qsizetype pos, QString &out)
+{
+    out.clear();
+    const qsizetype size = json.size();
+    qsizetype runStart = ++pos;
+    auto flushRun = [&](qsizetype runEnd) { out += QString::fromUtf8(json.constData() + runStart, runEnd - runStart); };
+    while (pos < size && json[pos] != '"') {
+        if (json[pos] != '\\') {
+            ++pos;
+            continue;
+        }
+        // an escape: decode it, then start a new raw run after it
+        flushRun(pos);
+        if (pos + 1 >= size)
+            return -1;
+        const char kind = json[pos + 1];
+        pos += 2;
+        switch (kind) {
+        case 'b': out += QChar(u'\b'); break;
+        case 'f': out += QChar(u'\f'); break;
+        case 'n': out += QChar(u'\n'); break;
+        case 'r': out += QChar(u'\r'); break;
+        case 't': out += QChar(u'\t'); break;
+        case 'u': {
+            char16_t unit = 0;
+            for (int digit = 0; digit < 4 && pos < size; ++digit, ++pos)
+                unit = static_cast<char16_t>(unit * 16 + std::max(0, hexValue(json[pos])));
+            out += QChar(unit);
+            break;
+        }
+        default: out += QLatin1Char(kind); break;  // \" \\ \/
+        }
+        runStart = pos;
+    }
+    flushRun(pos);
+    return pos < size ? pos + 1 : -1;
+}
+
+QString pathOf(const std::vector<Frame> &stack)
+{
+    QString path;
+    for (const Frame &frame : stack) {
+        if (frame.array)
+            path = elementPath(path, frame.index);
+        else if (frame.haveKey)
+            path = memberPath(path, frame.key);
+    }
+    return path;
+}
+
+}  // namespace
+
+QString memberPath(const QString &parent, const QString &key)
+{
+    return parent.isEmpty() ? key : parent + u'.' + key;
+}
+
+QString elementPath(const QString &parent, qsizetype index)
+{
+    return parent + u'[' + QString::number(index) + u']';
+}
+
+JsonScan scanJson(const QByteArray &json, qsizetype stopOffset)
+{
+    JsonScan scan;
+    std::vector<Frame> stack;
+    const qsizetype size = json.size();
+    const qsizetype stop = stopOffset < 0 ? size : std::min(stopOffset, size);
+    QString text;
+    bool unterminatedString = false;
+
+    // one token per turn, after a byte order mark if there is one; a token that starts before
+    // the stop is read whole
+    qsizetype pos = json.startsWith("\xEF\xBB\xBF") ? 3 : 0;
+    while (pos < stop) {
+        const char c = json[pos];
+        if (isSpace(c)) {
+            ++pos;
+        } else if (c == '{' || c == '[') {
+            Frame frame;
+            frame.array = c == '[';
+            stack.push_back(frame);
+            ++pos;
+        } else if (c == '}' || c == ']') {
+            if (!stack.empty())
+                stack.pop_back();
+            ++pos;
+        } else if (c == ',') {
+            if (!stack.empty()) {
+                Frame &top = stack.back();
+                if (top.array) {
+                    ++top.index;
+                } else {
+                    top.haveKey = false;
+                    top.expectKey = true;
+                }
+            }
+            ++pos;
+        } else if (c == ':') {
+            ++pos;
+        } else if (c == '"') {
+            pos = readString(json, pos, text);
+            if (pos < 0) {
+                unterminatedString = true;
+                break;
+            }
+            if (!stack.empty() && !stack.back().array && stack.back().expectKey) {
+                Frame &top = stack.back();
+                top.key = text;
+                top.haveKey = true;
+                top.expectKey = false;
+            }
+        } else if (isNumberChar(c)) {
+            const qsizetype start = pos;
+            while (pos < size && isNumberChar(json[pos]))
+                ++pos;
+            // the last literal at a path wins, as it does in QJsonDocument
+            const bool negativeZero = isNegativeZero(json.constData() + start, json.constData() + pos);
+            if (negativeZero)
+                scan.negativeZeros.insert(pathOf(stack));
+            else if (!scan.negativeZeros.isEmpty())
+                scan.negativeZeros.remove(pathOf(stack));
+        } else if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) {
+            while (pos < size && ((json[pos] >= 'a' && json[pos] <= 'z') || (json[pos] >= 'A' && json[pos] <= 'Z')))
+                ++pos;
+        } else {
+            break;
+        }
+    }
+    scan.pathAtStop = pathOf(stack);
+    scan.openAtStop = static_cast<int>(stack.size()) + (unterminatedString ? 1 : 0);
+    return scan;
+}
+
+}  // namespace io

@@ -1,0 +1,637 @@
+// Design note. Reading goes through QJsonDocument, then a Reader walks the objects and stops at
+// the first problem with one message; value ranges are checked afterwards by core::findProblem(),
+// so a range is written once (core/parameters.cpp). Writing is done by hand rather than by
+// QJsonDocument::toJson() for two reasons: Qt writes -0.0 as "0" (losing the sign bit), and its
+// indented style puts every number of every vector on a line of its own, which makes a cloth
+// unreadable. Numbers are written with std::to_chars, whose output is the shortest text that
+// reads back as the same double. Qt's parser also turns a "-0" literal into +0; json_scan.h
+// finds those literals so the Reader can give the sign back.
+
+#include "scene_file.h"
+
+#include "json_scan.h"
+
+#include "core/validate.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonParseError>
+#include <QSaveFile>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <system_error>
+
+namespace io {
+
+namespace {
+
+using namespace Qt::Literals::StringLiterals;
+
+constexpr QLatin1String kFormatName("springlab-scene");
+
+enum class Need { Required, Optional };
+
+// the shortest text that reads back as the same double; JSON has no NaN or infinity, so a
+// non-finite value (which a valid scene never holds) is written as null and refused on load
+QByteArray formatNumber(double value)
+{
+    if (!std::isfinite(value))
+        return "null";
+    std::array<char, 32> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    return QByteArray(buffer.data(), result.ptr - buffer.data());
+}
+
+QString describe(const QJsonValue &value)
+{
+    switch (value.type()) {
+    case QJsonValue::Null: return QStringLiteral("null");
+    case QJsonValue::Bool: return QStringLiteral("a boolean");
+    case QJsonValue::Double: return QStringLiteral("a number");
+    case QJsonValue::String: return QStringLiteral("a string");
+    case QJsonValue::Array: return QStringLiteral("an array");
+    case QJsonValue::Object: return QStringLiteral("an object");
+    case QJsonValue::Undefined: break;
+    }
+    return QStringLiteral("nothing");
+}
+
+QString knownIntegrators()
+{
+    QStringList names;
+    for (core::Integrator integrator : core::kIntegrators) {
+        const std::string_view name = core::integratorName(integrator);
+        names += QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+    }
+    return names.join(QStringLiteral(", "));
+}
+
+// walks a parsed document into a SceneDesc, stopping at the first problem
+class Reader {
+public:
+    Reader(const QString &source, const QByteArray &json) : m_source(source)
+    {
+        // only a file with a "-0" in it can hold a negative zero
+        if (json.contains("-0"))
+            m_negativeZeros = scanJson(json).negativeZeros;
+    }
+
+    QString error() const { return m_error; }
+    QStringList warnings() const { return m_warnings; }
+
+    bool readScene(const QJsonObject &root, core::SceneDesc &scene);
+
+private:
+    bool fail(const QString &path, const QString &reason)
+    {
+        if (m_error.isEmpty())
+            m_error = path.isEmpty() ? m_source + u": "_s + reason : m_source + u": "_s + path + u": "_s + reason;
+        return false;
+    }
+
+    bool expected(const QString &path, const QString &what, const QJsonValue &got)
+    {
+        return fail(path, u"expected "_s + what + u", got "_s + describe(got));
+    }
+
+    void warnUnknownKeys(const QJsonObject &object, const QString &path, std::initializer_list<QLatin1String> known)
+    {
+        for (auto it = object.begin(); it != object.end(); ++it)
+            if (std::find(known.begin(), known.end(), it.key()) == known.end())
+                m_warnings += m_source + u": "_s + memberPath(path, it.key()) + u": unknown key, ignored"_s;
+    }
+
+    // one value of each kind
+    bool read(const QJsonValue &value, const QString &path, double &out)
+    {
+        if (!value.isDouble())
+            return expected(path, QStringLiteral("a number"), value);
+        out = value.toDouble();
+        if (out == 0.0 && m_negativeZeros.contains(path))
+            out = -0.0;
+        return true;
+    }
+
+    bool read(const QJsonValue &value, const QString &path, int &out)
+    {
+        if (!value.isDouble())
+            return expected(path, QStringLiteral("an integer"), value);
+        const double number = value.toDouble();
+        if (std::trunc(number) != number)
+            return fail(path, u"expected an integer, got "_s + QString::fromLatin1(formatNumber(number)));
+        if (number < std::numeric_limits<int>::min() || number > std::numeric_limits<int>::max())
+            return fail(path, u"the integer "_s + QString::fromLatin1(formatNumber(number)) + u" is too large"_s);
+        out = static_cast<int>(number);
+        return true;
+    }
+
+    bool read(const QJsonValue &value, const QString &path, bool &out)
+    {
+        if (!value.isBool())
+            return expected(path, QStringLiteral("true or false"), value);
+        out = value.toBool();
+        return true;
+    }
+
+    bool read(const QJsonValue &value, const QString &path, QString &out)
+    {
+        if (!value.isString())
+            return expected(path, QStringLiteral("a string"), value);
+        out = value.toString();
+        return true;
+    }
+
+    bool read(const QJsonValue &value, const QString &path, Eigen::Vector3d &out)
+    {
+        if (!value.isArray())
+            return expected(path, QStringLiteral("an array of 3 numbers"), value);
+        const QJsonArray array = value.toArray();
+        if (array.size() != 3)
+            return fail(path, u"expected an array of 3 numbers, got "_s + QString::number(array.size()));
+        for (int axis = 0; axis < 3; ++axis)
+            if (!read(array[axis], elementPath(path, axis), out[axis]))
+                return false;
+        return true;
+    }
+
+    bool read(const QJsonValue &value, const QString &path, QJsonObject &out)
+    {
+        if (!value.isObject())
+            return expected(path, QStringLiteral("an object"), value);
+        out = value.toObject();
+        return true;
+    }
+
+    bool read(const QJsonValue &value, const QString &path, QJsonArray &out)
+    {
+        if (!value.isArray())
+            return expected(path, QStringLiteral("an array"), value);
+        out = value.toArray();
+        return true;
+    }
+
+    // a member of an object; an optional one that is absent leaves out as it was
+    template <typename T>
+    bool member(const QJsonObject &object, const QString &parent, QLatin1String key, Need need, T &out,
+                bool *present = nullptr)
+    {
+        const auto it = object.constFind(key);
+        if (present)
+            *present = it != object.constEnd();
+        if (it == object.constEnd())
+            return need == Need::Optional ||
+                   fail(memberPath(parent, key), QStringLiteral("missing: this key is required"));
+        return read(it.value(), memberPath(parent, key), out);
+    }
+
+    bool readHeader(const QJsonObject &root);
+    bool readSettings(const QJsonObject &root, core::Settings &settings);
+    bool readParticles(const QJsonObject &root, std::vector<core::ParticleDesc> &particles);
+    bool readSprings(const QJsonObject &root, core::SceneDesc &scene);
+    bool readPlanes(const QJsonObject &root, std::vector<core::PlaneDesc> &planes);
+
+    QString m_source;
+    QString m_error;
+    QStringList m_warnings;
+    QSet<QString> m_negativeZeros;
+};
+
+bool Reader::readHeader(const QJsonObject &root)
+{
+    // format: a file of another kind says only that
+    const auto format = root.constFind(QLatin1String("format"));
+    if (format == root.constEnd())
+        return fail(QStringLiteral("format"),
+                    u"missing: not a Springlab scene (expected \"format\": \""_s + kFormatName + u"\")"_s);
+    if (!format->isString() || format->toString() != kFormatName)
+        return fail(QStringLiteral("format"),
+                    u"not a Springlab scene (expected \""_s + kFormatName + u"\", got "_s +
+                        (format->isString() ? u'"' + format->toString() + u'"' : describe(*format)) + u")"_s);
+
+    // version: this build reads every version up to its own
+    int version = 0;
+    if (!member(root, {}, QLatin1String("version"), Need::Required, version))
+        return false;
+    if (version > kSceneFormatVersion)
+        return fail(QStringLiteral("version"),
+                    QStringLiteral("the file is version %1, newer than this build of Springlab reads "
+                                   "(version %2 at most); open it with a newer Springlab")
+                        .arg(version)
+                        .arg(kSceneFormatVersion));
+    if (version < 1)
+        return fail(QStringLiteral("version"),
+                    QStringLiteral("there is no version %1 (versions start at 1)").arg(version));
+    return true;
+}
+
+bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
+{
+    // the settings object and every key in it are optional: an absent one keeps its default
+    QJsonObject object;
+    const QString path = QStringLiteral("settings");
+    if (!member(root, {}, QLatin1String("settings"), Need::Optional, object))
+        return false;
+    const std::string_view defaultName = core::integratorName(settings.integrator);
+    QString integrator = QString::fromUtf8(defaultName.data(), static_cast<qsizetype>(defaultName.size()));
+    if (!member(object, path, QLatin1String("timeStep"), Need::Optional, settings.timeStep) ||
+        !member(object, path, QLatin1String("substeps"), Need::Optional, settings.substeps) ||
+        !member(object, path, QLatin1String("integrator"), Need::Optional, integrator) ||
+        !member(object, path, QLatin1String("gravity"), Need::Optional, settings.gravity) ||
+        !member(object, path, QLatin1String("viscosity"), Need::Optional, settings.viscosity) ||
+        !member(object, path, QLatin1String("restitution"), Need::Optional, settings.restitution) ||
+        !member(object, path, QLatin1String("planeCollisions"), Need::Optional, settings.planeCollisions) ||
+        !member(object, path, QLatin1String("particleCollisions"), Need::Optional, settings.particleCollisions))
+        return false;
+
+    // the integrator by name
+    const auto chosen = core::integratorFromName(integrator.toStdString());
+    if (!chosen)
+        return fail(QStringLiteral("settings.integrator"),
+                    u"unknown integrator \""_s + integrator + u"\" (known: "_s + knownIntegrators() + u")"_s);
+    settings.integrator = *chosen;
+
+    warnUnknownKeys(object, path,
+                    {QLatin1String("timeStep"), QLatin1String("substeps"), QLatin1String("integrator"),
+                     QLatin1String("gravity"), QLatin1String("viscosity"), QLatin1String("restitution"),
+                     QLatin1String("planeCollisions"), QLatin1String("particleCollisions")});
+    return true;
+}
+
+bool Reader::readParticles(const QJsonObject &root, std::vector<core::ParticleDesc> &particles)
+{
+    QJsonArray array;
+    if (!member(root, {}, QLatin1String("particles"), Need::Required, array))
+        return false;
+    particles.resize(static_cast<std::size_t>(array.size()));
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString path = elementPath(QStringLiteral("particles"), i);
+        core::ParticleDesc &particle = particles[static_cast<std::size_t>(i)];
+        QJsonObject object;
+        if (!read(array[i], path, object) ||
+            !member(object, path, QLatin1String("position"), Need::Required, particle.position) ||
+            !member(object, path, QLatin1String("velocity"), Need::Optional, particle.velocity) ||
+            !member(object, path, QLatin1String("mass"), Need::Required, particle.mass) ||
+            !member(object, path, QLatin1String("radius"), Need::Required, particle.radius) ||
+            !member(object, path, QLatin1String("pinned"), Need::Optional, particle.pinned))
+            return false;
+        warnUnknownKeys(object, path,
+                        {QLatin1String("position"), QLatin1String("velocity"), QLatin1String("mass"),
+                         QLatin1String("radius"), QLatin1String("pinned")});
+    }
+    return true;
+}
+
+bool Reader::readSprings(const QJsonObject &root, core::SceneDesc &scene)
+{
+    QJsonArray array;
+    if (!member(root, {}, QLatin1String("springs"), Need::Required, array))
+        return false;
+    scene.springs.resize(static_cast<std::size_t>(array.size()));
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString path = elementPath(QStringLiteral("springs"), i);
+        core::SpringDesc &spring = scene.springs[static_cast<std::size_t>(i)];
+        QJsonObject object;
+        QJsonArray ends;
+        bool hasRestLength = false;
+        if (!read(array[i], path, object) || !member(object, path, QLatin1String("particles"), Need::Required, ends))
+            return false;
+
+        // the two ends: particle indices; findProblem() checks they exist and differ
+        const QString endsPath = memberPath(path, QLatin1String("particles"));
+        if (ends.size() != 2)
+            return fail(endsPath, u"expected an array of 2 particle indices, got "_s + QString::number(ends.size()));
+        if (!read(ends[0], elementPath(endsPath, 0), spring.a) || !read(ends[1], elementPath(endsPath, 1), spring.b))
+            return false;
+
+        if (!member(object, path, QLatin1String("stiffness"), Need::Required, spring.stiffness) ||
+            !member(object, path, QLatin1String("damping"), Need::Required, spring.damping) ||
+            !member(object, path, QLatin1String("restLength"), Need::Optional, spring.restLength, &hasRestLength))
+            return false;
+        warnUnknownKeys(object, path,
+                        {QLatin1String("particles"), QLatin1String("stiffness"), QLatin1String("damping"),
+                         QLatin1String("restLength")});
+
+        // no rest length: the spring rests at its initial length
+        const auto count = static_cast<int>(scene.particles.size());
+        if (!hasRestLength && spring.a >= 0 && spring.a < count && spring.b >= 0 && spring.b < count)
+            spring.restLength = (scene.particles[static_cast<std::size_t>(spring.a)].position -
+                                 scene.particles[static_cast<std::size_t>(spring.b)].position)
+                                    .norm();
+    }
+    return true;
+}
+
+bool Reader::readPlanes(const QJsonObject &root, std::vector<core::PlaneDesc> &planes)
+{
+    QJsonArray array;
+    if (!member(root, {}, QLatin1String("planes"), Need::Required, array))
+        return false;
+    planes.resize(static_cast<std::size_t>(array.size()));
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString path = elementPath(QStringLiteral("planes"), i);
+        core::PlaneDesc &plane = planes[static_cast<std::size_t>(i)];
+        QJsonObject object;
+        if (!read(array[i], path, object) ||
+            !member(object, path, QLatin1String("normal"), Need::Required, plane.normal) ||
+            !member(object, path, QLatin1String("offset"), Need::Required, plane.offset))
+            return false;
+        warnUnknownKeys(object, path, {QLatin1String("normal"), QLatin1String("offset")});
+    }
+    return true;
+}
+
+bool Reader::readScene(const QJsonObject &root, core::SceneDesc &scene)
+{
+    // structure and types, in file order
+    QString name;
+    if (!readHeader(root) || !member(root, {}, QLatin1String("name"), Need::Required, name) ||
+        !readSettings(root, scene.settings) || !readParticles(root, scene.particles) || !readSprings(root, scene) ||
+        !readPlanes(root, scene.planes) ||
+        !member(root, {}, QLatin1String("steerable"), Need::Optional, scene.steerable))
+        return false;
+    scene.name = name.toStdString();
+    warnUnknownKeys(root, {},
+                    {QLatin1String("format"), QLatin1String("version"), QLatin1String("name"),
+                     QLatin1String("settings"), QLatin1String("particles"), QLatin1String("springs"),
+                     QLatin1String("planes"), QLatin1String("steerable")});
+
+    // values: the same checks and messages as the editor's
+    if (const auto problem = core::findProblem(scene))
+        return fail(QString::fromStdString(problem->path), QString::fromStdString(problem->message));
+
+    // planes are kept with unit normals
+    for (core::PlaneDesc &plane : scene.planes)
+        plane.normal = core::unitNormal(plane.normal);
+    return true;
+}
+
+bool isWordChar(char c)
+{
+    return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '-' || c == '+' ||
+           c == '.';
+}
+
+// the message for text QJsonDocument could not parse, with the JSON path it broke off in
+QString syntaxError(const QByteArray &json, const QJsonParseError &error, const QString &source)
+{
+    if (json.trimmed().isEmpty())
+        return source + u": the file is empty (expected a JSON object)"_s;
+
+    const qsizetype offset = std::clamp<qsizetype>(error.offset, 0, json.size());
+    const qsizetype lineStart = json.lastIndexOf('\n', offset - 1) + 1;
+    const QString where = QStringLiteral("%1 at byte %2, line %3, column %4")
+                              .arg(error.errorString())
+                              .arg(offset)
+                              .arg(json.left(offset).count('\n') + 1)
+                              .arg(offset - lineStart + 1);
+    QString reason = u"not valid JSON ("_s + where + u")"_s;
+
+    // an illegal number: most often one too large for a double, or a NaN or infinity
+    qsizetype tokenStart = offset;
+    qsizetype tokenEnd = offset;
+    while (tokenStart > 0 && isWordChar(json[tokenStart - 1]))
+        --tokenStart;
+    while (tokenEnd < json.size() && isWordChar(json[tokenEnd]))
+        ++tokenEnd;
+    const QByteArray token = json.mid(tokenStart, tokenEnd - tokenStart);
+    const bool numeric = !token.isEmpty() &&
+                         (std::isdigit(static_cast<unsigned char>(token[0])) ||
+                          (token.size() > 1 && token[0] == '-' && std::isdigit(static_cast<unsigned char>(token[1]))));
+    if (error.error == QJsonParseError::IllegalNumber && numeric) {
+        double value = 0.0;
+        const auto parsed = std::from_chars(token.constData(), token.constData() + token.size(), value);
+        const bool tiny = token.contains("e-") || token.contains("E-");
+        if (parsed.ec == std::errc::result_out_of_range)
+            reason = u"the number "_s + QString::fromLatin1(token) +
+                     (tiny ? u" is too close to zero for a double ("_s
+                           : u" is too large for a double: JSON has no infinity or NaN ("_s) +
+                     where + u")"_s;
+        else
+            reason = QString::fromLatin1(token) + u" is not a valid number ("_s + where + u")"_s;
+    } else if (error.error == QJsonParseError::IllegalNumber || error.error == QJsonParseError::IllegalValue) {
+        const QByteArray lower = token.toLower();
+        if (lower.contains("nan") || lower.contains("inf"))
+            reason =
+                QString::fromLatin1(token) + u" is not a JSON number: JSON has no NaN or infinity ("_s + where + u")"_s;
+    }
+
+    // the text stops in the middle of a value: objects or arrays left open and nothing after the
+    // place the parser gave up
+    qsizetype textEnd = json.size();
+    while (textEnd > 0 && std::isspace(static_cast<unsigned char>(json[textEnd - 1])))
+        --textEnd;
+    if (std::max(offset, tokenEnd) >= textEnd && scanJson(json).openAtStop > 0)
+        reason = u"the file ends too early: is it truncated? ("_s + where + u")"_s;
+
+    const QString path = scanJson(json, offset).pathAtStop;
+    return path.isEmpty() ? source + u": "_s + reason : source + u": "_s + path + u": "_s + reason;
+}
+
+// why a file could not be read or written, in words; errno, when set, is the last resort
+QString explainFailure(const QString &path, bool writing, int savedErrno, const QString &qtReason)
+{
+    const QFileInfo info(path);
+    const QFileInfo folder(info.absolutePath());
+    if (path.isEmpty())
+        return QStringLiteral("no file name given");
+    if (info.isDir())
+        return QStringLiteral("it is a folder, not a file");
+    if (!writing && !info.exists())
+        return QStringLiteral("no such file");
+    if (writing && !folder.exists())
+        return u"the folder "_s + QDir::toNativeSeparators(folder.filePath()) + u" does not exist"_s;
+    if (writing && !folder.isDir())
+        return QDir::toNativeSeparators(folder.filePath()) + u" is not a folder"_s;
+    if (!writing && !info.isReadable())
+        return QStringLiteral("permission denied: the file is not readable");
+    if (writing && info.exists() && !info.isWritable())
+        return QStringLiteral("permission denied: the file is read-only");
+    if (writing && !folder.isWritable())
+        return u"permission denied: cannot create files in "_s + QDir::toNativeSeparators(folder.filePath());
+    if (savedErrno != 0)
+        return QString::fromStdString(std::generic_category().message(savedErrno));
+    return qtReason;
+}
+
+void appendVector(QByteArray &out, const Eigen::Vector3d &v)
+{
+    out += '[' + formatNumber(v.x()) + ", " + formatNumber(v.y()) + ", " + formatNumber(v.z()) + ']';
+}
+
+// a JSON string: quotes, backslashes and control characters escaped, UTF-8 kept as it is
+void appendString(QByteArray &out, std::string_view text)
+{
+    out += '"';
+    for (const char c : text) {
+        switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\r': out += "\\r"; break;
+        case '\t': out += "\\t"; break;
+        case '\b': out += "\\b"; break;
+        case '\f': out += "\\f"; break;
+        default:
+            if (static_cast<unsigned char>(c) < 0x20)
+                out += "\\u00" + QByteArray::number(static_cast<unsigned char>(c), 16).rightJustified(2, '0');
+            else
+                out += c;
+        }
+    }
+    out += '"';
+}
+
+// "key": [ one item per line ]
+template <typename T, typename WriteItem>
+void appendList(QByteArray &out, const char *key, const std::vector<T> &items, bool last, WriteItem writeItem)
+{
+    out += "    \"" + QByteArray(key) + "\": [";
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        out += i == 0 ? "\n        " : ",\n        ";
+        writeItem(items[i]);
+    }
+    out += items.empty() ? "]" : "\n    ]";
+    out += last ? "\n" : ",\n";
+}
+
+}  // namespace
+
+LoadResult parseScene(const QByteArray &json, const QString &sourceName)
+{
+    LoadResult result;
+
+    // syntax
+    QJsonParseError parseError{};
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        result.error = syntaxError(json, parseError, sourceName);
+        return result;
+    }
+    if (!document.isObject()) {
+        result.error = sourceName + u": expected a JSON object at the top level, got "_s +
+                       describe(document.isArray() ? QJsonValue(document.array()) : QJsonValue());
+        return result;
+    }
+
+    // structure, types and values; the scene is handed out only when all of it is right
+    Reader reader(sourceName, json);
+    core::SceneDesc scene;
+    const bool ok = reader.readScene(document.object(), scene);
+    result.warnings = reader.warnings();
+    if (ok)
+        result.scene = std::move(scene);
+    else
+        result.error = reader.error();
+    return result;
+}
+
+LoadResult loadScene(const QString &path)
+{
+    const QString shown = QDir::toNativeSeparators(path);
+    QFile file(path);
+    errno = 0;
+    if (!file.open(QIODevice::ReadOnly)) {
+        LoadResult result;
+        result.error = shown + u": cannot open: "_s + explainFailure(path, false, errno, file.errorString());
+        return result;
+    }
+    errno = 0;
+    const QByteArray json = file.readAll();
+    if (file.error() != QFileDevice::NoError) {
+        LoadResult result;
+        result.error = shown + u": cannot read: "_s + explainFailure(path, false, errno, file.errorString());
+        return result;
+    }
+    return parseScene(json, shown);
+}
+
+QByteArray sceneToJson(const core::SceneDesc &scene)
+{
+    const core::Settings &s = scene.settings;
+    const std::string_view integrator = core::integratorName(s.integrator);
+    auto flag = [](bool value) { return QByteArray(value ? "true" : "false"); };
+    QByteArray out;
+
+    // header
+    out += "{\n    \"format\": \"" + QByteArray(kFormatName.data(), kFormatName.size()) + "\",\n";
+    out += "    \"version\": " + QByteArray::number(kSceneFormatVersion) + ",\n";
+    out += "    \"name\": ";
+    appendString(out, scene.name);
+    out += ",\n";
+
+    // settings, one per line
+    out += "    \"settings\": {\n";
+    out += "        \"timeStep\": " + formatNumber(s.timeStep) + ",\n";
+    out += "        \"substeps\": " + QByteArray::number(s.substeps) + ",\n";
+    out += "        \"integrator\": ";
+    appendString(out, integrator);
+    out += ",\n        \"gravity\": ";
+    appendVector(out, s.gravity);
+    out += ",\n        \"viscosity\": " + formatNumber(s.viscosity) + ",\n";
+    out += "        \"restitution\": " + formatNumber(s.restitution) + ",\n";
+    out += "        \"planeCollisions\": " + flag(s.planeCollisions) + ",\n";
+    out += "        \"particleCollisions\": " + flag(s.particleCollisions) + "\n    },\n";
+
+    // particles, springs and planes, one per line
+    appendList(out, "particles", scene.particles, false, [&](const core::ParticleDesc &p) {
+        out += "{\"position\": ";
+        appendVector(out, p.position);
+        out += ", \"velocity\": ";
+        appendVector(out, p.velocity);
+        out += ", \"mass\": " + formatNumber(p.mass) + ", \"radius\": " + formatNumber(p.radius) +
+               ", \"pinned\": " + flag(p.pinned) + '}';
+    });
+    appendList(out, "springs", scene.springs, false, [&](const core::SpringDesc &spring) {
+        out += "{\"particles\": [" + QByteArray::number(spring.a) + ", " + QByteArray::number(spring.b) +
+               "], \"stiffness\": " + formatNumber(spring.stiffness) +
+               ", \"damping\": " + formatNumber(spring.damping) +
+               ", \"restLength\": " + formatNumber(spring.restLength) + '}';
+    });
+    appendList(out, "planes", scene.planes, true, [&](const core::PlaneDesc &plane) {
+        out += "{\"normal\": ";
+        appendVector(out, plane.normal);
+        out += ", \"offset\": " + formatNumber(plane.offset) + '}';
+    });
+    // the particle the arrow keys push, only in scenes that have one
+    if (scene.steerable >= 0) {
+        out.chop(1);  // the newline after the planes' closing bracket
+        out += ",\n    \"steerable\": " + QByteArray::number(scene.steerable) + '\n';
+    }
+    out += "}\n";
+    return out;
+}
+
+SaveResult saveScene(const QString &path, const core::SceneDesc &scene)
+{
+    const QString shown = QDir::toNativeSeparators(path);
+    const QByteArray json = sceneToJson(scene);
+
+    // QSaveFile writes a temporary file and renames it over the old one only once all is written
+    QSaveFile file(path);
+    errno = 0;
+    if (!file.open(QIODevice::WriteOnly))
+        return {shown + u": cannot save: "_s + explainFailure(path, true, errno, file.errorString())};
+    errno = 0;
+    if (file.write(json) != json.size()) {
+        const int savedErrno = errno;
+        file.cancelWriting();
+        return {shown + u": cannot save: "_s + explainFailure(path, true, savedErrno, file.errorString())};
+    }
+    errno = 0;
+    if (!file.commit())
+        return {shown + u": cannot save: "_s + explainFailure(path, true, errno, file.errorString())};
+    return {};
+}
+
+}  // namespace io

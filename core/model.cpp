@@ -1,0 +1,74 @@
+#include "model.h"
+
+#include "validate.h"
+
+#include <cassert>
+
+namespace core {
+
+std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
+{
+    assert(!findProblem(scene) && "compileModel needs a validated scene");
+    auto model = std::make_shared<Model>();
+    const Settings &s = scene.settings;
+
+    // settings
+    model->timeStep = s.timeStep;
+    model->substeps = s.substeps;
+    model->integrator = s.integrator;
+    model->gravity = s.gravity;
+    model->viscosity = s.viscosity;
+    model->restitution = s.restitution;
+
+    // particles, structure of arrays
+    const auto n = static_cast<Eigen::Index>(scene.particles.size());
+    model->mass.resize(n);
+    model->invMass.resize(n);
+    model->radius.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const ParticleDesc &p = scene.particles[static_cast<std::size_t>(i)];
+        model->mass[i] = p.mass;
+        model->invMass[i] = p.pinned ? 0.0 : 1.0 / p.mass;
+        model->radius[i] = p.radius;
+        if (!p.pinned)
+            model->freeParticles.push_back(static_cast<int>(i));
+    }
+
+    // springs
+    const auto springs = static_cast<Eigen::Index>(scene.springs.size());
+    model->springA.reserve(scene.springs.size());
+    model->springB.reserve(scene.springs.size());
+    model->restLength.resize(springs);
+    model->stiffness.resize(springs);
+    model->damping.resize(springs);
+    for (Eigen::Index k = 0; k < springs; ++k) {
+        const SpringDesc &spring = scene.springs[static_cast<std::size_t>(k)];
+        model->springA.push_back(spring.a);
+        model->springB.push_back(spring.b);
+        model->restLength[k] = spring.restLength;
+        model->stiffness[k] = spring.stiffness;
+        model->damping[k] = spring.damping;
+    }
+
+    // planes
+    const auto planes = static_cast<Eigen::Index>(scene.planes.size());
+    model->planeNormal.resize(3, planes);
+    model->planeOffset.resize(planes);
+    for (Eigen::Index k = 0; k < planes; ++k) {
+        const PlaneDesc &plane = scene.planes[static_cast<std::size_t>(k)];
+        model->planeNormal.col(k) = unitNormal(plane.normal);
+        model->planeOffset[k] = plane.offset;
+    }
+
+    // the step plan: a pass this scene cannot need is never run
+    const bool anythingFree = !model->freeParticles.empty();
+    StepPlan &plan = model->plan;
+    plan.gravity = anythingFree && !model->gravity.isZero(0.0);
+    plan.drag = anythingFree && model->viscosity > 0.0;
+    plan.springs = springs > 0;
+    plan.planeCollisions = anythingFree && s.planeCollisions && planes > 0;
+    plan.particleCollisions = anythingFree && s.particleCollisions && n >= 2;
+    return model;
+}
+
+}  // namespace core

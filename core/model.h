@@ -1,0 +1,63 @@
+#pragma once
+// Model: a SceneDesc compiled for stepping. Structure-of-arrays, immutable once built, shared
+// between threads as std::shared_ptr<const Model>. The step plan says which passes this scene
+// needs; a pass the plan leaves out is never run.
+
+#include "scene.h"
+
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+namespace core {
+
+// which passes of the step this scene needs
+struct StepPlan {
+    bool gravity = false;             // g != 0 and something free to fall
+    bool drag = false;                // viscosity > 0 and something free
+    bool springs = false;             // at least one spring
+    bool planeCollisions = false;     // switched on, a plane, and something free
+    bool particleCollisions = false;  // switched on, two particles, one of them free
+
+    bool operator==(const StepPlan &) const = default;
+};
+
+struct Model {
+    // settings
+    double timeStep = 0.01;  // s
+    int substeps = 1;
+    Integrator integrator = Integrator::SymplecticEuler;
+    Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // m/s²
+    double viscosity = 0.0;                             // kg/s
+    double restitution = 1.0;
+
+    // particles; a pinned particle has inverse mass 0 (infinite mass)
+    Eigen::VectorXd mass;     // kg
+    Eigen::VectorXd invMass;  // 1/kg, 0 when pinned
+    Eigen::VectorXd radius;   // m
+    std::vector<int> freeParticles;  // indices of the particles that are not pinned, ascending
+
+    // springs
+    std::vector<int> springA;
+    std::vector<int> springB;
+    Eigen::VectorXd restLength;  // m
+    Eigen::VectorXd stiffness;   // N/m
+    Eigen::VectorXd damping;     // N·s/m
+
+    // planes n·p = offset, unit normals
+    Eigen::Matrix3Xd planeNormal;
+    Eigen::VectorXd planeOffset;  // m
+
+    StepPlan plan;
+
+    int particleCount() const { return static_cast<int>(mass.size()); }
+    int springCount() const { return static_cast<int>(springA.size()); }
+    int planeCount() const { return static_cast<int>(planeOffset.size()); }
+    bool isPinned(int particle) const { return invMass[particle] == 0.0; }
+    double subStep() const { return timeStep / substeps; }
+};
+
+// compiles a scene that findProblem() accepts (asserted in debug builds)
+std::shared_ptr<const Model> compileModel(const SceneDesc &scene);
+
+}  // namespace core

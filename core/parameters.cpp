@@ -1,0 +1,82 @@
+#include "parameters.h"
+
+#include <cassert>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace core {
+
+namespace {
+
+// the ranges: wide enough for any sensible scene, narrow enough that a typo (a time step of 5 s,
+// a mass of 1e300) is caught at the boundary instead of blowing up the simulation
+constexpr ParameterInfo kTable[] = {
+    {Parameter::TimeStep, "timeStep", "Time step", "s", 0.0, 1.0, true, Scale::Log, 0.01,
+     "Simulated time advanced by one step"},
+    {Parameter::Substeps, "substeps", "Substeps", "", 1.0, 10000.0, false, Scale::Log, 1.0,
+     "Each step is split into this many equal sub-steps; more is slower but more stable"},
+    {Parameter::Viscosity, "viscosity", "Viscosity", "kg/s", 0.0, 1.0e6, false, Scale::Linear, 0.0,
+     "Drag of the medium: a force -c v on every particle"},
+    {Parameter::Restitution, "restitution", "Restitution", "", 0.0, 1.0, false, Scale::Linear, 1.0,
+     "Share of the approach speed kept after a contact: 1 elastic, 0 fully inelastic"},
+    {Parameter::Gravity, "gravity", "Gravity", "m/s²", -1.0e4, 1.0e4, false, Scale::Linear, -9.81,
+     "Acceleration of gravity, one component (y is up)"},
+    {Parameter::Mass, "mass", "Mass", "kg", 0.0, 1.0e9, true, Scale::Log, 1.0, "Mass of a particle"},
+    {Parameter::Radius, "radius", "Radius", "m", 0.0, 1.0e6, true, Scale::Log, 0.1,
+     "Radius of a particle, used for contacts and drawing"},
+    {Parameter::Stiffness, "stiffness", "Stiffness", "N/m", 0.0, 1.0e9, false, Scale::Log, 1000.0,
+     "Spring constant k of Hooke's law"},
+    {Parameter::Damping, "damping", "Damping", "N·s/m", 0.0, 1.0e7, false, Scale::Log, 0.0,
+     "Damper coefficient kc along the spring"},
+    {Parameter::RestLength, "restLength", "Rest length", "m", 0.0, 1.0e6, false, Scale::Linear, 0.0,
+     "Length at which the spring exerts no force"},
+    {Parameter::Coordinate, "position", "Position", "m", -1.0e9, 1.0e9, false, Scale::Linear, 0.0,
+     "A coordinate in space"},
+    {Parameter::Speed, "velocity", "Velocity", "m/s", -1.0e9, 1.0e9, false, Scale::Linear, 0.0,
+     "A velocity component"},
+};
+
+std::string formatValue(double value, std::string_view unit)
+{
+    std::ostringstream out;
+    out << value;
+    if (!unit.empty())
+        out << ' ' << unit;
+    return out.str();
+}
+
+}  // namespace
+
+std::span<const ParameterInfo> parameterTable()
+{
+    return kTable;
+}
+
+const ParameterInfo &parameterInfo(Parameter parameter)
+{
+    const ParameterInfo &info = kTable[static_cast<int>(parameter)];
+    assert(info.parameter == parameter);  // the table is in enum order
+    return info;
+}
+
+std::optional<std::string> checkParameter(Parameter parameter, double value)
+{
+    const ParameterInfo &info = parameterInfo(parameter);
+    if (std::isnan(value))
+        return std::string("is not a number (NaN)");
+    if (!std::isfinite(value))
+        return std::string("must be finite (got ") + (value > 0 ? "infinity)" : "-infinity)");
+    if (info.minimumExclusive && value <= info.minimum)
+        return "must be greater than " + formatValue(info.minimum, info.unit) + " (got " +
+               formatValue(value, info.unit) + ")";
+    if (value < info.minimum)
+        return "must be at least " + formatValue(info.minimum, info.unit) + " (got " +
+               formatValue(value, info.unit) + ")";
+    if (value > info.maximum)
+        return "must be at most " + formatValue(info.maximum, info.unit) + " (got " +
+               formatValue(value, info.unit) + ")";
+    return std::nullopt;
+}
+
+}  // namespace core

@@ -1,0 +1,49 @@
+#pragma once
+// One table of parameter metadata: name, unit, range, scale, default, tooltip. The parameters
+// panel builds its sliders from it and the scene validation checks against it, so every range is
+// written once.
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace core {
+
+enum class Parameter {
+    TimeStep,
+    Substeps,
+    Viscosity,
+    Restitution,
+    Gravity,  // one component of the gravity vector
+    Mass,
+    Radius,
+    Stiffness,
+    Damping,
+    RestLength,
+    Coordinate,  // a position component or a plane offset
+    Speed,       // a velocity component
+};
+
+enum class Scale { Linear, Log };
+
+struct ParameterInfo {
+    Parameter parameter;
+    std::string_view key;    // as in scene files: "timeStep"
+    std::string_view label;  // as in the panel: "Time step"
+    std::string_view unit;   // "s", "kg", "N/m", "" for none
+    double minimum;          // inclusive
+    double maximum;          // inclusive
+    bool minimumExclusive;   // true: the value must be strictly greater than minimum
+    Scale scale;             // how a slider maps onto the range
+    double defaultValue;
+    std::string_view tooltip;
+};
+
+std::span<const ParameterInfo> parameterTable();
+const ParameterInfo &parameterInfo(Parameter parameter);
+
+// nullopt when value is finite and inside the parameter's range; else the reason, e.g.
+// "must be greater than 0 (got -1 kg)"
+std::optional<std::string> checkParameter(Parameter parameter, double value);
+
+}  // namespace core

@@ -1,0 +1,65 @@
+#pragma once
+// SceneDesc: plain values, exactly what a scene file holds. The GUI thread owns it; the physics
+// compiles it into a Model (model.h) and a State (state.h).
+
+#include "integrator.h"
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace core {
+
+struct Settings {
+    double timeStep = 0.01;  // s, one step of the simulation clock
+    int substeps = 1;        // each step is split into this many equal sub-steps
+    Integrator integrator = Integrator::SymplecticEuler;
+    Eigen::Vector3d gravity{0.0, -9.81, 0.0};  // m/s², y is up
+    double viscosity = 0.0;                    // kg/s, drag force -c v on every particle
+    double restitution = 1.0;                  // 1 elastic .. 0 fully inelastic, for every contact
+    bool planeCollisions = true;
+    bool particleCollisions = true;
+
+    bool operator==(const Settings &) const = default;
+};
+
+struct ParticleDesc {
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s (a pinned particle is at rest)
+    double mass = 1.0;                                   // kg, > 0
+    double radius = 0.1;                                 // m, > 0
+    bool pinned = false;                                 // infinite mass: never moves
+
+    bool operator==(const ParticleDesc &) const = default;
+};
+
+struct SpringDesc {
+    int a = 0;                // particle indices, a != b
+    int b = 0;
+    double stiffness = 0.0;   // N/m, k
+    double damping = 0.0;     // N·s/m, kc
+    double restLength = 0.0;  // m, l0
+
+    bool operator==(const SpringDesc &) const = default;
+};
+
+// the plane n·p = offset; particles live on the side n points to
+struct PlaneDesc {
+    Eigen::Vector3d normal{0.0, 1.0, 0.0};  // unit length once loaded
+    double offset = 0.0;                    // m
+
+    bool operator==(const PlaneDesc &) const = default;
+};
+
+struct SceneDesc {
+    std::string name;
+    Settings settings;
+    std::vector<ParticleDesc> particles;
+    std::vector<SpringDesc> springs;
+    std::vector<PlaneDesc> planes;
+    int steerable = -1;  // the particle the arrow keys push (the pool's cue ball); -1: none
+
+    bool operator==(const SceneDesc &) const = default;
+};
+
+}  // namespace core

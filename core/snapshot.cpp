@@ -1,0 +1,47 @@
+#include "snapshot.h"
+
+namespace core {
+
+std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &state)
+{
+    auto snapshot = std::make_shared<Snapshot>();
+    snapshot->step = state.step;
+    snapshot->time = state.time;
+
+    // particles
+    const int n = model.particleCount();
+    snapshot->positions.resize(3 * static_cast<std::size_t>(n));
+    snapshot->radii.resize(static_cast<std::size_t>(n));
+    snapshot->pinned.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const auto at = static_cast<std::size_t>(i);
+        for (int axis = 0; axis < 3; ++axis)
+            snapshot->positions[3 * at + static_cast<std::size_t>(axis)] = static_cast<float>(state.position(axis, i));
+        snapshot->radii[at] = static_cast<float>(model.radius[i]);
+        snapshot->pinned[at] = model.isPinned(i) ? 1 : 0;
+    }
+
+    // springs: both ends, and the strain that colours them
+    const int springs = model.springCount();
+    snapshot->springEnds.resize(6 * static_cast<std::size_t>(springs));
+    snapshot->springStrain.resize(static_cast<std::size_t>(springs));
+    for (int k = 0; k < springs; ++k) {
+        const auto at = static_cast<std::size_t>(k);
+        const auto a = state.position.col(model.springA[at]);
+        const auto b = state.position.col(model.springB[at]);
+        for (int axis = 0; axis < 3; ++axis) {
+            snapshot->springEnds[6 * at + static_cast<std::size_t>(axis)] = static_cast<float>(a[axis]);
+            snapshot->springEnds[6 * at + 3 + static_cast<std::size_t>(axis)] = static_cast<float>(b[axis]);
+        }
+        const double rest = model.restLength[k];
+        snapshot->springStrain[at] = rest > 0.0 ? static_cast<float>(((a - b).norm() - rest) / rest) : 0.0f;
+    }
+
+    // diagnostics
+    snapshot->energies = energies(model, state);
+    snapshot->momentum = momentum(model, state);
+    snapshot->blowup = state.blowup;
+    return snapshot;
+}
+
+}  // namespace core

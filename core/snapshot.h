@@ -1,0 +1,38 @@
+#pragma once
+// Snapshot: what the viewport and panels read of one step. Immutable once published; floats,
+// since it is for drawing and display. The worker builds one after a step and publishes it
+// through a latest-wins mailbox; the viewport never waits for a step.
+
+#include "diagnostics.h"
+#include "model.h"
+#include "state.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace core {
+
+struct Snapshot {
+    std::uint64_t step = 0;  // the step these values belong to: a frame never mixes two steps
+    double time = 0.0;       // s
+
+    std::vector<float> positions;  // xyz per particle, m
+    std::vector<float> radii;      // per particle, m
+    std::vector<std::uint8_t> pinned;  // 1 per pinned particle
+    std::vector<float> springEnds;     // xyz of end a, then xyz of end b, per spring
+    std::vector<float> springStrain;   // (l - l0) / l0 per spring (0 when l0 = 0)
+
+    Energies energies;
+    Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+    std::optional<Blowup> blowup;
+
+    int particleCount() const { return static_cast<int>(radii.size()); }
+    int springCount() const { return static_cast<int>(springStrain.size()); }
+};
+
+// fills a snapshot of the state (the model gives radii, pins and spring ends)
+std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &state);
+
+}  // namespace core

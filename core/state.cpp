@@ -1,0 +1,59 @@
+#include "state.h"
+
+#include <cassert>
+
+namespace core {
+
+std::string_view stageName(Stage stage)
+{
+    switch (stage) {
+    case Stage::Gravity: return "gravity";
+    case Stage::Drag: return "drag";
+    case Stage::Springs: return "springs";
+    case Stage::Applied: return "applied forces";
+    case Stage::Integrate: return "integrate";
+    case Stage::PlaneCollisions: return "plane collisions";
+    case Stage::ParticleCollisions: return "particle collisions";
+    case Stage::Check: return "check";
+    }
+    return "unknown";
+}
+
+State makeState(const Model &model, const SceneDesc &scene)
+{
+    assert(static_cast<int>(scene.particles.size()) == model.particleCount());
+    const Eigen::Index n = model.particleCount();
+    State state;
+    state.position.resize(3, n);
+    state.velocity.resize(3, n);
+    state.force.setZero(3, n);
+    state.applied.setZero(3, n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const ParticleDesc &p = scene.particles[static_cast<std::size_t>(i)];
+        state.position.col(i) = p.position;
+        // a pinned particle has infinite mass: it is at rest, whatever the file says
+        state.velocity.col(i) = p.pinned ? Eigen::Vector3d::Zero() : p.velocity;
+    }
+    return state;
+}
+
+void setAppliedForce(State &state, int particle, const Eigen::Vector3d &force)
+{
+    assert(particle >= 0 && particle < state.applied.cols());
+    const bool wasSet = !state.applied.col(particle).isZero(0.0);
+    const bool isSet = !force.isZero(0.0);
+    state.applied.col(particle) = force;
+    state.appliedCount += static_cast<int>(isSet) - static_cast<int>(wasSet);
+}
+
+void storeState(const State &state, SceneDesc &scene)
+{
+    assert(static_cast<Eigen::Index>(scene.particles.size()) == state.position.cols());
+    for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+        const auto column = static_cast<Eigen::Index>(i);
+        scene.particles[i].position = state.position.col(column);
+        scene.particles[i].velocity = state.velocity.col(column);
+    }
+}
+
+}  // namespace core

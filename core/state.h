@@ -1,0 +1,67 @@
+#pragma once
+// State: what changes as the simulation runs. Only the thread that steps touches it. Scratch
+// buffers live here so that a step allocates nothing.
+
+#include "model.h"
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace core {
+
+// the passes of one sub-step, in the order they run
+enum class Stage { Gravity, Drag, Springs, Applied, Integrate, PlaneCollisions, ParticleCollisions, Check };
+inline constexpr int kStageCount = 8;
+std::string_view stageName(Stage stage);
+
+struct StageTiming {
+    std::uint64_t calls = 0;
+    double seconds = 0.0;
+};
+
+struct Profile {
+    std::array<StageTiming, kStageCount> stages{};
+    const StageTiming &operator[](Stage stage) const { return stages[static_cast<int>(stage)]; }
+    StageTiming &operator[](Stage stage) { return stages[static_cast<int>(stage)]; }
+};
+
+// the first value that stopped being finite or bounded
+struct Blowup {
+    enum class Quantity { Position, Velocity };
+    int particle = -1;
+    Quantity quantity = Quantity::Position;
+    double value = 0.0;       // the offending component
+    std::uint64_t step = 0;   // the step it happened in (1 = the first step)
+    double time = 0.0;        // s, the time at the start of that step
+};
+
+struct State {
+    Eigen::Matrix3Xd position;  // m, one column per particle
+    Eigen::Matrix3Xd velocity;  // m/s
+    Eigen::Matrix3Xd force;     // N, scratch: the forces of the current sub-step
+
+    // forces applied from outside the scene (the steering keys, the mouse), N per particle;
+    // appliedCount says how many columns are non-zero so that the pass costs nothing without them
+    Eigen::Matrix3Xd applied;
+    int appliedCount = 0;
+
+    double time = 0.0;       // s
+    std::uint64_t step = 0;  // steps taken since the initial conditions
+
+    Profile profile;
+    std::optional<Blowup> blowup;  // set once the run has blown up; stepping then stops
+};
+
+// the initial state of a scene (pinned particles start, and stay, at rest)
+State makeState(const Model &model, const SceneDesc &scene);
+
+// sets (or, with a zero force, clears) the force applied from outside to one particle
+void setAppliedForce(State &state, int particle, const Eigen::Vector3d &force);
+
+// writes the state's positions and velocities into the scene as its new initial conditions
+void storeState(const State &state, SceneDesc &scene);
+
+}  // namespace core

@@ -1,0 +1,17 @@
+#pragma once
+// One step of the simulation: forces, integration, collisions, checks (see step.cpp).
+
+#include "model.h"
+#include "state.h"
+
+namespace core {
+
+// the largest position or velocity component the checks let through (m, m/s)
+inline constexpr double kBlowupBound = 1.0e10;
+
+// advances the state by model.timeStep in model.substeps equal sub-steps; returns false (and sets
+// state.blowup) if a value stopped being finite or bounded, in which case the state is not
+// stepped again
+bool step(const Model &model, State &state);
+
+}  // namespace core

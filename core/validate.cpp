@@ -1,0 +1,106 @@
+#include "validate.h"
+
+#include "parameters.h"
+
+#include <cmath>
+#include <limits>
+
+namespace core {
+
+namespace {
+
+std::string indexed(const char *array, std::size_t index, const char *key)
+{
+    return std::string(array) + "[" + std::to_string(index) + "]." + key;
+}
+
+// checks one value; fills problem and returns false at the first failure
+bool check(Parameter parameter, double value, std::string path, std::optional<SceneProblem> &problem)
+{
+    if (auto reason = checkParameter(parameter, value)) {
+        problem = SceneProblem{std::move(path), std::move(*reason)};
+        return false;
+    }
+    return true;
+}
+
+bool checkVector(Parameter parameter, const Eigen::Vector3d &value, const std::string &path,
+                 std::optional<SceneProblem> &problem)
+{
+    for (int axis = 0; axis < 3; ++axis)
+        if (!check(parameter, value[axis], path + "[" + std::to_string(axis) + "]", problem))
+            return false;
+    return true;
+}
+
+}  // namespace
+
+Eigen::Vector3d unitNormal(const Eigen::Vector3d &normal)
+{
+    const double squared = normal.squaredNorm();
+    if (std::abs(squared - 1.0) <= 4.0 * std::numeric_limits<double>::epsilon())
+        return normal;
+    return normal / std::sqrt(squared);
+}
+
+std::optional<SceneProblem> findProblem(const SceneDesc &scene)
+{
+    std::optional<SceneProblem> problem;
+    const Settings &s = scene.settings;
+
+    // settings
+    if (!check(Parameter::TimeStep, s.timeStep, "settings.timeStep", problem) ||
+        !check(Parameter::Substeps, s.substeps, "settings.substeps", problem) ||
+        !checkVector(Parameter::Gravity, s.gravity, "settings.gravity", problem) ||
+        !check(Parameter::Viscosity, s.viscosity, "settings.viscosity", problem) ||
+        !check(Parameter::Restitution, s.restitution, "settings.restitution", problem))
+        return problem;
+
+    // particles
+    for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+        const ParticleDesc &p = scene.particles[i];
+        if (!checkVector(Parameter::Coordinate, p.position, indexed("particles", i, "position"), problem) ||
+            !checkVector(Parameter::Speed, p.velocity, indexed("particles", i, "velocity"), problem) ||
+            !check(Parameter::Mass, p.mass, indexed("particles", i, "mass"), problem) ||
+            !check(Parameter::Radius, p.radius, indexed("particles", i, "radius"), problem))
+            return problem;
+    }
+
+    // springs
+    const auto count = static_cast<long long>(scene.particles.size());
+    for (std::size_t i = 0; i < scene.springs.size(); ++i) {
+        const SpringDesc &spring = scene.springs[i];
+        for (int end = 0; end < 2; ++end) {
+            const long long index = end == 0 ? spring.a : spring.b;
+            if (index < 0 || index >= count)
+                return SceneProblem{indexed("springs", i, "particles") + "[" + std::to_string(end) + "]",
+                                    "particle index " + std::to_string(index) + " is out of range (the scene has " +
+                                        std::to_string(count) + " particles)"};
+        }
+        if (spring.a == spring.b)
+            return SceneProblem{indexed("springs", i, "particles"),
+                                "joins particle " + std::to_string(spring.a) + " to itself"};
+        if (!check(Parameter::Stiffness, spring.stiffness, indexed("springs", i, "stiffness"), problem) ||
+            !check(Parameter::Damping, spring.damping, indexed("springs", i, "damping"), problem) ||
+            !check(Parameter::RestLength, spring.restLength, indexed("springs", i, "restLength"), problem))
+            return problem;
+    }
+
+    // planes
+    for (std::size_t i = 0; i < scene.planes.size(); ++i) {
+        const PlaneDesc &plane = scene.planes[i];
+        if (!checkVector(Parameter::Coordinate, plane.normal, indexed("planes", i, "normal"), problem) ||
+            !check(Parameter::Coordinate, plane.offset, indexed("planes", i, "offset"), problem))
+            return problem;
+        if (!(plane.normal.squaredNorm() > 1e-24))
+            return SceneProblem{indexed("planes", i, "normal"), "is zero: a plane needs a direction"};
+    }
+    // the particle the arrow keys push
+    if (scene.steerable < -1 || scene.steerable >= count)
+        return SceneProblem{"steerable", "particle index " + std::to_string(scene.steerable) +
+                                             " is out of range (the scene has " + std::to_string(count) +
+                                             " particles)"};
+    return std::nullopt;
+}
+
+}  // namespace core

@@ -1,0 +1,25 @@
+#pragma once
+// Checks a SceneDesc's values before it is compiled: every number finite and in its range, every
+// spring joining two distinct existing particles, every plane normal non-zero. Shared by the file
+// loader and the editor, so both give the same message.
+
+#include "scene.h"
+
+#include <optional>
+#include <string>
+
+namespace core {
+
+struct SceneProblem {
+    std::string path;     // where, as a JSON path: "particles[3].mass"
+    std::string message;  // why: "must be greater than 0 kg (got -1 kg)"
+};
+
+// the first problem in the scene, in file order; nullopt when it can be simulated
+std::optional<SceneProblem> findProblem(const SceneDesc &scene);
+
+// planes are stored with unit normals; this makes one so without disturbing one that already is
+// (so that loading a saved file gives back the same bits)
+Eigen::Vector3d unitNormal(const Eigen::Vector3d &normal);
+
+}  // namespace core

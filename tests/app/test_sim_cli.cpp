@@ -1,0 +1,380 @@
+// springlab-sim end to end, through QProcess: exit codes, the CSV trace's shape, and that
+// --output then resuming gives the same bits as a run that never stopped.
+
+#include "core/io/scene_file.h"
+
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <bit>
+#include <charconv>
+#include <cstdint>
+
+using namespace Qt::Literals::StringLiterals;
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+Run sim(const QStringList &arguments)
+{
+    QProcess process;
+    process.start(QStringLiteral(SPRINGLAB_SIM), arguments);
+    Run run;
+    if (!process.waitForFinished(120000) || process.exitStatus() != QProcess::NormalExit)
+        return run;
+    run.exitCode = process.exitCode();
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    return run;
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+// a scene that runs every pass: gravity, drag, springs, both kinds of collision, a pinned end
+core::SceneDesc testScene()
+{
+    core::SceneDesc scene;
+    scene.name = "cli test";
+    scene.settings.timeStep = 0.005;
+    scene.settings.substeps = 2;
+    scene.settings.viscosity = 0.05;
+    scene.settings.restitution = 0.7;
+
+    // a chain hanging from a pinned particle
+    for (int i = 0; i < 5; ++i) {
+        core::ParticleDesc particle;
+        particle.position = {0.3 * i, 2.0, 0.0};
+        particle.mass = 0.5;
+        particle.pinned = i == 0;
+        scene.particles.push_back(particle);
+        if (i > 0)
+            scene.springs.push_back({i - 1, i, 500.0, 0.5, 0.3});
+    }
+
+    // two balls that meet, then fall on the floor
+    core::ParticleDesc ball;
+    ball.position = {1.5, 0.5, 0.0};
+    ball.velocity = {-1.0, 0.0, 0.3};
+    ball.radius = 0.2;
+    scene.particles.push_back(ball);
+    ball.position = {1.0, 0.45, 0.05};
+    ball.velocity = {0.5, 1.0, 0.0};
+    scene.particles.push_back(ball);
+
+    // a floor and a wall
+    scene.planes.push_back({{0.0, 1.0, 0.0}, 0.0});
+    scene.planes.push_back({{1.0, 0.0, 0.0}, -1.0});
+    return scene;
+}
+
+// a stiff spring and a long step: the explicit integration runs away within a few steps
+core::SceneDesc explodingScene()
+{
+    core::SceneDesc scene;
+    scene.name = "boom";
+    scene.settings.timeStep = 0.1;
+    core::ParticleDesc particle;
+    particle.pinned = true;
+    scene.particles.push_back(particle);
+    particle.pinned = false;
+    particle.position = {1.0, 0.0, 0.0};
+    scene.particles.push_back(particle);
+    scene.springs.push_back({0, 1, 1e9, 0.0, 0.5});
+    return scene;
+}
+
+QStringList exampleFiles()
+{
+    const QDir dir(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes"));
+    QStringList files;
+    for (const QString &name : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name))
+        files += dir.filePath(name);
+    return files;
+}
+
+double parseDouble(const QByteArray &text, bool &ok)
+{
+    double value = 0.0;
+    const auto result = std::from_chars(text.constData(), text.constData() + text.size(), value);
+    ok = result.ec == std::errc() && result.ptr == text.constData() + text.size();
+    return value;
+}
+
+}  // namespace
+
+class TestSimCli : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void exitCodes_data();
+    void exitCodes();
+    void examplesRun_data();
+    void examplesRun();
+    void traceShape_data();
+    void traceShape();
+    void durationRoundsToSteps_data();
+    void durationRoundsToSteps();
+    void overridesReachTheOutput();
+    void resumeEqualsUninterrupted_data();
+    void resumeEqualsUninterrupted();
+
+private:
+    QString path(const QString &name) const { return m_dir.filePath(name); }
+
+    QTemporaryDir m_dir;
+};
+
+void TestSimCli::initTestCase()
+{
+    QVERIFY(QFileInfo(QStringLiteral(SPRINGLAB_SIM)).isExecutable());
+    QVERIFY(m_dir.isValid());
+    QVERIFY(io::saveScene(path(u"scene.json"_s), testScene()).ok());
+    QVERIFY(io::saveScene(path(u"boom.json"_s), explodingScene()).ok());
+    QFile bad(path(u"bad.json"_s));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write("{\"format\": \"springlab-scene\", \"version\": 1, \"particles\": [");
+}
+
+void TestSimCli::exitCodes_data()
+{
+    // "@" stands for the temporary folder
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QStringList>("stderrHas");
+
+    QTest::newRow("runs") << QStringList{u"@/scene.json"_s, u"--steps"_s, u"20"_s} << 0 << QStringList();
+    QTest::newRow("help") << QStringList{u"--help"_s} << 0 << QStringList();
+    QTest::newRow("bad file") << QStringList{u"@/bad.json"_s} << 2
+                              << QStringList{u"bad.json: particles[0]: the file ends too early"_s};
+    QTest::newRow("no such file") << QStringList{u"@/none.json"_s} << 2
+                                  << QStringList{u"none.json: cannot open: no such file"_s};
+    QTest::newRow("no scene") << QStringList{u"--steps"_s, u"3"_s} << 2 << QStringList{u"missing the scene file"_s};
+    QTest::newRow("time step 5") << QStringList{u"@/scene.json"_s, u"--time-step"_s, u"5"_s} << 2
+                                 << QStringList{u"--time-step: must be at most 1 s (got 5 s)"_s};
+    QTest::newRow("time step text") << QStringList{u"@/scene.json"_s, u"--time-step"_s, u"fast"_s} << 2
+                                    << QStringList{u"--time-step: expected a number of seconds, got \"fast\""_s};
+    QTest::newRow("substeps 0") << QStringList{u"@/scene.json"_s, u"--substeps"_s, u"0"_s} << 2
+                                << QStringList{u"--substeps: must be at least 1"_s};
+    QTest::newRow("unknown integrator") << QStringList{u"@/scene.json"_s, u"--integrator"_s, u"rk9"_s} << 2
+                                        << QStringList{u"--integrator: unknown integrator \"rk9\""_s,
+                                                       u"symplectic-euler"_s};
+    QTest::newRow("negative steps") << QStringList{u"@/scene.json"_s, u"--steps"_s, u"-4"_s} << 2
+                                    << QStringList{u"--steps:"_s};
+    QTest::newRow("steps and duration") << QStringList{u"@/scene.json"_s, u"--steps"_s, u"4"_s, u"--duration"_s, u"1"_s}
+                                        << 2 << QStringList{u"cannot be used together"_s};
+    QTest::newRow("every without trace") << QStringList{u"@/scene.json"_s, u"--every"_s, u"2"_s} << 2
+                                         << QStringList{u"--every only makes sense with --trace"_s};
+    QTest::newRow("every 0") << QStringList{u"@/scene.json"_s, u"--trace"_s, u"@/t.csv"_s, u"--every"_s, u"0"_s} << 2
+                             << QStringList{u"--every:"_s};
+    QTest::newRow("unknown option") << QStringList{u"@/scene.json"_s, u"--fast"_s} << 2 << QStringList{u"fast"_s};
+    QTest::newRow("output folder missing")
+        << QStringList{u"@/scene.json"_s, u"--steps"_s, u"2"_s, u"--output"_s, u"@/no/such/out.json"_s} << 2
+        << QStringList{u"cannot save: the folder"_s};
+    QTest::newRow("blows up") << QStringList{u"@/boom.json"_s, u"--steps"_s, u"100"_s, u"--output"_s,
+                                             u"@/boom-out.json"_s}
+                              << 3
+                              << QStringList{u"blew up in step"_s, u"particle 1"_s,
+                                             u"try a smaller time step (--time-step) or more substeps (--substeps)"_s};
+}
+
+void TestSimCli::exitCodes()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(int, exitCode);
+    QFETCH(QStringList, stderrHas);
+    for (QString &argument : arguments)
+        argument.replace(u'@', m_dir.path());
+
+    const Run run = sim(arguments);
+    QVERIFY2(run.exitCode == exitCode, run.err.constData());
+    for (const QString &text : stderrHas)
+        QVERIFY2(QString::fromUtf8(run.err).contains(text), run.err.constData());
+    if (exitCode == 0)
+        QVERIFY2(run.err.isEmpty(), run.err.constData());
+
+    // a run that blew up writes no final state
+    QVERIFY(!QFile::exists(path(u"boom-out.json"_s)));
+}
+
+void TestSimCli::examplesRun_data()
+{
+    QTest::addColumn<QString>("scene");
+    for (const QString &file : exampleFiles())
+        QTest::newRow(qPrintable(QFileInfo(file).fileName())) << file;
+    if (exampleFiles().isEmpty())
+        QTest::newRow("none") << QString();
+}
+
+void TestSimCli::examplesRun()
+{
+    QFETCH(QString, scene);
+    if (scene.isEmpty())
+        QFAIL("no example scenes in resources/scenes");
+    const Run run = sim({scene, u"--steps"_s, u"50"_s});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+    QVERIFY(run.out.contains("ran        50 of 50 steps"));
+}
+
+void TestSimCli::traceShape_data()
+{
+    QTest::addColumn<int>("steps");
+    QTest::addColumn<int>("every");
+    QTest::newRow("every step") << 12 << 1;
+    QTest::newRow("every 5 of 20") << 20 << 5;
+    QTest::newRow("every 7 of 20") << 20 << 7;
+    QTest::newRow("every 50 of 20") << 20 << 50;
+    QTest::newRow("no steps") << 0 << 3;
+}
+
+void TestSimCli::traceShape()
+{
+    QFETCH(int, steps);
+    QFETCH(int, every);
+    const QString trace = path(u"trace.csv"_s);
+    const Run run = sim({path(u"scene.json"_s), u"--steps"_s, QString::number(steps), u"--trace"_s, trace, u"--every"_s,
+                         QString::number(every), u"--quiet"_s});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY(run.out.isEmpty());
+
+    // a header, then one row per particle for step 0 and every K steps after it
+    const core::SceneDesc scene = testScene();
+    const auto particles = static_cast<int>(scene.particles.size());
+    QList<QByteArray> lines = readAll(trace).split('\n');
+    QCOMPARE(lines.takeLast(), QByteArray());  // the file ends with a newline
+    QCOMPARE(lines.takeFirst(), QByteArray("step,time,particle,x,y,z,vx,vy,vz"));
+    QCOMPARE(lines.size(), particles * (steps / every + 1));
+
+    for (int row = 0; row < lines.size(); ++row) {
+        const QList<QByteArray> fields = lines[row].split(',');
+        QCOMPARE(fields.size(), 9);
+        QCOMPARE(fields[0].toLongLong(), static_cast<long long>(row / particles * every));
+        QCOMPARE(fields[2].toInt(), row % particles);
+        for (int column = 1; column < 9; ++column) {
+            bool ok = false;
+            parseDouble(fields[column], ok);
+            QVERIFY2(ok, lines[row].constData());
+        }
+    }
+
+    // step 0 is the initial state, bit for bit
+    for (int i = 0; i < particles; ++i) {
+        const QList<QByteArray> fields = lines[i].split(',');
+        const core::ParticleDesc &p = scene.particles[static_cast<std::size_t>(i)];
+        bool ok = false;
+        for (int axis = 0; axis < 3; ++axis) {
+            QCOMPARE(std::bit_cast<std::uint64_t>(parseDouble(fields[3 + axis], ok)),
+                     std::bit_cast<std::uint64_t>(p.position[axis]));
+            const double velocity = p.pinned ? 0.0 : p.velocity[axis];
+            QCOMPARE(std::bit_cast<std::uint64_t>(parseDouble(fields[6 + axis], ok)),
+                     std::bit_cast<std::uint64_t>(velocity));
+        }
+    }
+}
+
+void TestSimCli::durationRoundsToSteps_data()
+{
+    QTest::addColumn<QString>("duration");
+    QTest::addColumn<QString>("timeStep");
+    QTest::addColumn<int>("steps");
+    QTest::newRow("exact") << u"0.5"_s << u"0.01"_s << 50;
+    QTest::newRow("rounds up") << u"0.126"_s << u"0.01"_s << 13;
+    QTest::newRow("rounds down") << u"0.124"_s << u"0.01"_s << 12;
+    QTest::newRow("zero") << u"0"_s << u"0.01"_s << 0;
+    QTest::newRow("file's time step") << u"0.1"_s << QString() << 20;  // testScene: 0.005 s
+}
+
+void TestSimCli::durationRoundsToSteps()
+{
+    QFETCH(QString, duration);
+    QFETCH(QString, timeStep);
+    QFETCH(int, steps);
+    QStringList arguments{path(u"scene.json"_s), u"--duration"_s, duration, u"--trace"_s,
+                          path(u"d.csv"_s),      u"--every"_s,    u"1"_s};
+    if (!timeStep.isEmpty())
+        arguments += {u"--time-step"_s, timeStep};
+    const Run run = sim(arguments);
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY2(run.out.contains(QStringLiteral("ran        %1 of %1 steps").arg(steps).toUtf8()), run.out.constData());
+
+    // the last traced step is the last step
+    const QList<QByteArray> lines = readAll(path(u"d.csv"_s)).trimmed().split('\n');
+    QCOMPARE(lines.last().split(',').first().toInt(), steps);
+}
+
+void TestSimCli::overridesReachTheOutput()
+{
+    // the command line's settings win over the file's, and the final state keeps them
+    const QString output = path(u"overridden.json"_s);
+    const Run run = sim({path(u"scene.json"_s), u"--steps"_s, u"10"_s, u"--time-step"_s, u"0.002"_s, u"--substeps"_s,
+                         u"3"_s, u"--integrator"_s, u"explicit-euler"_s, u"--output"_s, output, u"--quiet"_s});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    const io::LoadResult result = io::loadScene(output);
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QCOMPARE(result.scene->settings.timeStep, 0.002);
+    QCOMPARE(result.scene->settings.substeps, 3);
+    QVERIFY(result.scene->settings.integrator == core::Integrator::ExplicitEuler);
+    QCOMPARE(result.scene->settings.viscosity, testScene().settings.viscosity);
+    QVERIFY(result.scene->particles[1].position != testScene().particles[1].position);
+}
+
+void TestSimCli::resumeEqualsUninterrupted_data()
+{
+    QTest::addColumn<QString>("scene");  // "" for the test scene
+    QTest::addColumn<int>("first");
+    QTest::addColumn<int>("second");
+    QTest::addColumn<QStringList>("extra");
+    QTest::newRow("test scene") << QString() << 137 << 263 << QStringList();
+    QTest::newRow("test scene, overridden")
+        << QString() << 50 << 70 << QStringList{u"--time-step"_s, u"0.003"_s, u"--substeps"_s, u"4"_s};
+    QTest::newRow("test scene, explicit euler")
+        << QString() << 20 << 20 << QStringList{u"--integrator"_s, u"explicit-euler"_s};
+    for (const QString &file : exampleFiles())
+        QTest::newRow(qPrintable(QFileInfo(file).fileName())) << file << 60 << 90 << QStringList();
+}
+
+void TestSimCli::resumeEqualsUninterrupted()
+{
+    QFETCH(QString, scene);
+    QFETCH(int, first);
+    QFETCH(int, second);
+    QFETCH(QStringList, extra);
+    if (scene.isEmpty())
+        scene = path(u"scene.json"_s);
+    const QString whole = path(u"whole.json"_s);
+    const QString half = path(u"half.json"_s);
+    const QString resumed = path(u"resumed.json"_s);
+
+    // one run of first + second steps
+    Run run = sim(
+        QStringList{scene, u"--steps"_s, QString::number(first + second), u"--output"_s, whole, u"--quiet"_s} + extra);
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+
+    // first steps, stop, then second steps from the saved state
+    run = sim(QStringList{scene, u"--steps"_s, QString::number(first), u"--output"_s, half, u"--quiet"_s} + extra);
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    run = sim({half, u"--steps"_s, QString::number(second), u"--output"_s, resumed, u"--quiet"_s});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+
+    // the same file, byte for byte; the files hold every double's bits (see test_scene_file)
+    const QByteArray expected = readAll(whole);
+    QVERIFY(!expected.isEmpty());
+    QVERIFY(readAll(half) != expected);
+    QCOMPARE(readAll(resumed), expected);
+}
+
+QTEST_GUILESS_MAIN(TestSimCli)
+#include "test_sim_cli.moc"

@@ -1,0 +1,38 @@
+// Snapshots: floats of the state, strains, pins, energies, step id.
+#include "core/snapshot.h"
+#include "core/step.h"
+#include "scene_builder.h"
+
+#include <QtTest>
+
+class TestSnapshot : public QObject {
+    Q_OBJECT
+
+private slots:
+    void packsTheState();
+};
+
+void TestSnapshot::packsTheState()
+{
+    core::SceneDesc scene = test::quietScene();
+    scene.particles = {test::particle({0, 0, 0}, {0, 0, 0}, 1, 0.25, true), test::particle({1.5, 2, 3}, {1, 0, 0}, 2, 0.5)};
+    scene.springs = {{0, 1, 10, 0, 2}};  // length √15.25 ≈ 3.905
+    test::Sim sim = test::compile(scene);
+    QVERIFY(core::step(*sim.model, sim.state));
+    auto snap = core::makeSnapshot(*sim.model, sim.state);
+    QCOMPARE(snap->step, std::uint64_t(1));
+    QCOMPARE(snap->particleCount(), 2);
+    QCOMPARE(snap->springCount(), 1);
+    QCOMPARE(snap->positions[3], float(sim.state.position(0, 1)));
+    QCOMPARE(snap->positions[5], float(sim.state.position(2, 1)));
+    QCOMPARE(snap->radii[1], 0.5f);
+    QCOMPARE(snap->pinned[0], std::uint8_t(1));
+    QCOMPARE(snap->pinned[1], std::uint8_t(0));
+    QCOMPARE(snap->springEnds[3], float(sim.state.position(0, 1)));
+    const double length = (sim.state.position.col(1) - sim.state.position.col(0)).norm();
+    QCOMPARE(snap->springStrain[0], float((length - 2.0) / 2.0));
+    QCOMPARE(snap->energies.total(), core::energies(*sim.model, sim.state).total());
+}
+
+QTEST_APPLESS_MAIN(TestSnapshot)
+#include "test_snapshot.moc"

@@ -1,0 +1,103 @@
+// The damped spring force against values worked out by hand, and Newton's third law.
+#include "core/passes.h"
+#include "scene_builder.h"
+
+#include <QtTest>
+
+class TestSprings : public QObject {
+    Q_OBJECT
+
+private slots:
+    void hookeAndDamperByHand_data();
+    void hookeAndDamperByHand();
+    void equalAndOpposite();
+    void zeroLengthGivesNoNaN();
+    void pinnedEndIsStillPulled();
+};
+
+void TestSprings::hookeAndDamperByHand_data()
+{
+    QTest::addColumn<double>("length");
+    QTest::addColumn<double>("restLength");
+    QTest::addColumn<double>("stiffness");
+    QTest::addColumn<double>("damping");
+    QTest::addColumn<double>("relativeSpeed");  // (va - vb)·u, u from b to a
+    QTest::addColumn<double>("expectedForce");  // on a, along u
+
+    // stretched by 0.5 m at 100 N/m: pulled back by 50 N
+    QTest::newRow("stretched") << 1.5 << 1.0 << 100.0 << 0.0 << 0.0 << -50.0;
+    // compressed by 0.25 m at 40 N/m: pushed out by 10 N
+    QTest::newRow("compressed") << 0.75 << 1.0 << 40.0 << 0.0 << 0.0 << 10.0;
+    // at rest length, separating at 2 m/s with kc = 3: damper pulls back 6 N
+    QTest::newRow("damper only") << 1.0 << 1.0 << 100.0 << 3.0 << 2.0 << -6.0;
+    // both: -k (l - l0) - kc s = -10 * 0.2 - 0.5 * (-4) = -2 + 2 = 0
+    QTest::newRow("cancel") << 1.2 << 1.0 << 10.0 << 0.5 << -4.0 << 0.0;
+}
+
+void TestSprings::hookeAndDamperByHand()
+{
+    QFETCH(double, length);
+    QFETCH(double, restLength);
+    QFETCH(double, stiffness);
+    QFETCH(double, damping);
+    QFETCH(double, relativeSpeed);
+    QFETCH(double, expectedForce);
+
+    // a along a skew axis so that every component is exercised
+    const Eigen::Vector3d u = Eigen::Vector3d(1.0, 2.0, -2.0) / 3.0;
+    core::SceneDesc scene = test::quietScene();
+    scene.particles = {test::particle(length * u, relativeSpeed * u), test::particle(Eigen::Vector3d::Zero())};
+    scene.springs = {core::SpringDesc{0, 1, stiffness, damping, restLength}};
+    test::Sim sim = test::compile(scene);
+
+    sim.state.force.setZero();
+    core::addSprings(*sim.model, sim.state);
+    const Eigen::Vector3d expected = expectedForce * u;
+    QVERIFY2((sim.state.force.col(0) - expected).norm() < 1e-12,
+             qPrintable(QString("force on a %1 %2 %3").arg(sim.state.force(0, 0)).arg(sim.state.force(1, 0)).arg(sim.state.force(2, 0))));
+}
+
+void TestSprings::equalAndOpposite()
+{
+    // three particles in a triangle with moving ends: the forces sum to zero, pair by pair
+    core::SceneDesc scene = test::quietScene();
+    scene.particles = {test::particle({0, 0, 0}, {1, 0, 0}), test::particle({1, 0.2, 0}, {0, -1, 0.5}),
+                       test::particle({0.3, 1, 0.4}, {0, 0, 0})};
+    scene.springs = {{0, 1, 50, 0.7, 0.8}, {1, 2, 20, 0.1, 1.3}, {2, 0, 5, 2.0, 0.2}};
+    test::Sim sim = test::compile(scene);
+    sim.state.force.setZero();
+    core::addSprings(*sim.model, sim.state);
+    const Eigen::Vector3d total = sim.state.force.rowwise().sum();
+    QVERIFY(total.norm() < 1e-12);
+    QVERIFY(sim.state.force.col(0).norm() > 1.0);  // and the forces are not trivially zero
+}
+
+void TestSprings::zeroLengthGivesNoNaN()
+{
+    // two particles at the same point, rest length 0.5: a finite push along a fixed axis
+    core::SceneDesc scene = test::quietScene();
+    scene.particles = {test::particle({1, 1, 1}), test::particle({1, 1, 1})};
+    scene.springs = {{0, 1, 10, 1, 0.5}};
+    test::Sim sim = test::compile(scene);
+    sim.state.force.setZero();
+    core::addSprings(*sim.model, sim.state);
+    QVERIFY(sim.state.force.allFinite());
+    QCOMPARE(sim.state.force.col(0).norm(), 5.0);
+    QCOMPARE(Eigen::Vector3d(sim.state.force.col(0)), Eigen::Vector3d(-sim.state.force.col(1)));
+}
+
+void TestSprings::pinnedEndIsStillPulled()
+{
+    // the free end of a spring from a pinned anchor falls back toward it
+    core::SceneDesc scene = test::quietScene();
+    scene.particles = {test::particle({0, 0, 0}, {0, 0, 0}, 1.0, 0.1, true), test::particle({2, 0, 0})};
+    scene.springs = {{0, 1, 10, 0, 1}};
+    test::Sim sim = test::compile(scene);
+    sim.state.force.setZero();
+    core::addSprings(*sim.model, sim.state);
+    QCOMPARE(Eigen::Vector3d(sim.state.force.col(1)), Eigen::Vector3d(-10, 0, 0));
+    QCOMPARE(Eigen::Vector3d(sim.state.force.col(0)), Eigen::Vector3d(10, 0, 0));
+}
+
+QTEST_APPLESS_MAIN(TestSprings)
+#include "test_springs.moc"

@@ -1,0 +1,175 @@
+// The step: order of passes, sub-steps, passes the plan skips, blow-up detection, determinism.
+#include "core/generators.h"
+#include "core/step.h"
+#include "scene_builder.h"
+
+#include <QtTest>
+#include <cstring>
+
+class TestStep : public QObject {
+    Q_OBJECT
+
+private slots:
+    void skippedPassesNeverRun_data();
+    void skippedPassesNeverRun();
+    void substepsEqualSmallerSteps();
+    void blowupIsCaughtAndNamed();
+    void blownUpStateIsNotSteppedAgain();
+    void appliedForcePushes();
+    void sameSceneSameBits();
+};
+
+namespace {
+
+std::uint64_t calls(const core::State &state, core::Stage stage)
+{
+    return state.profile[stage].calls;
+}
+
+}  // namespace
+
+void TestStep::skippedPassesNeverRun_data()
+{
+    QTest::addColumn<bool>("gravity");
+    QTest::addColumn<bool>("drag");
+    QTest::addColumn<bool>("springs");
+    QTest::addColumn<bool>("planes");
+    QTest::addColumn<bool>("pairs");
+    QTest::newRow("nothing") << false << false << false << false << false;
+    QTest::newRow("gravity only") << true << false << false << false << false;
+    QTest::newRow("drag only") << false << true << false << false << false;
+    QTest::newRow("springs only") << false << false << true << false << false;
+    QTest::newRow("planes only") << false << false << false << true << false;
+    QTest::newRow("pairs only") << false << false << false << false << true;
+    QTest::newRow("everything") << true << true << true << true << true;
+}
+
+void TestStep::skippedPassesNeverRun()
+{
+    QFETCH(bool, gravity);
+    QFETCH(bool, drag);
+    QFETCH(bool, springs);
+    QFETCH(bool, planes);
+    QFETCH(bool, pairs);
+
+    core::SceneDesc scene = test::quietScene();
+    scene.settings.gravity = gravity ? Eigen::Vector3d(0, -9.81, 0) : Eigen::Vector3d::Zero();
+    scene.settings.viscosity = drag ? 0.1 : 0.0;
+    scene.settings.planeCollisions = planes;
+    scene.settings.particleCollisions = pairs;
+    scene.settings.substeps = 3;
+    scene.particles = {test::particle({0, 1, 0}), test::particle({1, 1, 0})};
+    if (springs)
+        scene.springs = {{0, 1, 10, 0, 1}};
+    scene.planes = {core::PlaneDesc{{0, 1, 0}, 0.0}};  // present, but only used when switched on
+
+    test::Sim sim = test::compile(scene);
+    for (int i = 0; i < 10; ++i)
+        QVERIFY(core::step(*sim.model, sim.state));
+
+    // a planned pass runs once per sub-step; an unplanned one never, and costs no time
+    const auto expect = [&](core::Stage stage, bool planned) {
+        QCOMPARE(calls(sim.state, stage), planned ? std::uint64_t(30) : std::uint64_t(0));
+        if (!planned)
+            QCOMPARE(sim.state.profile[stage].seconds, 0.0);
+    };
+    expect(core::Stage::Gravity, gravity);
+    expect(core::Stage::Drag, drag);
+    expect(core::Stage::Springs, springs);
+    expect(core::Stage::Applied, false);
+    expect(core::Stage::Integrate, true);
+    expect(core::Stage::PlaneCollisions, planes);
+    expect(core::Stage::ParticleCollisions, pairs);
+    expect(core::Stage::Check, true);
+}
+
+void TestStep::substepsEqualSmallerSteps()
+{
+    // one step of h in 4 sub-steps equals 4 steps of h/4, bit for bit
+    core::SceneDesc scene = core::makeChain({});
+    scene.settings.timeStep = 0.004;
+    scene.settings.substeps = 4;
+    test::Sim sub = test::compile(scene);
+    scene.settings.timeStep = 0.001;
+    scene.settings.substeps = 1;
+    test::Sim fine = test::compile(scene);
+    for (int i = 0; i < 50; ++i) {
+        QVERIFY(core::step(*sub.model, sub.state));
+        for (int k = 0; k < 4; ++k)
+            QVERIFY(core::step(*fine.model, fine.state));
+    }
+    QVERIFY(sub.state.position == fine.state.position);
+    QVERIFY(sub.state.velocity == fine.state.velocity);
+    QCOMPARE(sub.state.step, std::uint64_t(50));
+}
+
+void TestStep::blowupIsCaughtAndNamed()
+{
+    // a stiff spring with a time step far beyond the stability limit: the run diverges
+    core::SceneDesc scene = test::quietScene();
+    scene.settings.timeStep = 0.1;
+    scene.particles = {test::particle({0, 0, 0}, {0, 0, 0}, 1.0, 0.1, true), test::particle({1.5, 0, 0})};
+    scene.springs = {{0, 1, 1e6, 0, 1}};
+    test::Sim sim = test::compile(scene);
+    int steps = 0;
+    while (core::step(*sim.model, sim.state))
+        QVERIFY(++steps < 1000);
+    QVERIFY(sim.state.blowup.has_value());
+    const core::Blowup &b = *sim.state.blowup;
+    QCOMPARE(b.particle, 1);
+    QCOMPARE(b.quantity, core::Blowup::Quantity::Velocity);
+    QCOMPARE(b.step, std::uint64_t(steps + 1));
+    QVERIFY(std::abs(b.time - 0.1 * steps) < 1e-9);
+    QVERIFY(!(std::abs(b.value) <= core::kBlowupBound));
+}
+
+void TestStep::blownUpStateIsNotSteppedAgain()
+{
+    core::SceneDesc scene = test::quietScene();
+    scene.particles = {test::particle({0, 0, 0}, {2e10, 0, 0})};
+    test::Sim sim = test::compile(scene);
+    QVERIFY(!core::step(*sim.model, sim.state));
+    const Eigen::Matrix3Xd frozen = sim.state.position;
+    QVERIFY(!core::step(*sim.model, sim.state));
+    QVERIFY(sim.state.position == frozen);
+    QCOMPARE(sim.state.step, std::uint64_t(0));
+}
+
+void TestStep::appliedForcePushes()
+{
+    core::SceneDesc scene = test::quietScene();
+    scene.settings.timeStep = 0.5;
+    scene.particles = {test::particle({0, 0, 0}, {0, 0, 0}, 2.0), test::particle({5, 0, 0})};
+    test::Sim sim = test::compile(scene);
+    core::setAppliedForce(sim.state, 0, {4, 0, 0});
+    QCOMPARE(sim.state.appliedCount, 1);
+    QVERIFY(core::step(*sim.model, sim.state));
+    QCOMPARE(sim.state.velocity(0, 0), 1.0);  // a = F/m = 2, v = a h
+    QCOMPARE(sim.state.velocity(0, 1), 0.0);
+    core::setAppliedForce(sim.state, 0, Eigen::Vector3d::Zero());
+    QCOMPARE(sim.state.appliedCount, 0);
+    QVERIFY(core::step(*sim.model, sim.state));
+    QCOMPARE(sim.state.velocity(0, 0), 1.0);
+    QCOMPARE(sim.state.profile[core::Stage::Applied].calls, std::uint64_t(1));
+}
+
+void TestStep::sameSceneSameBits()
+{
+    // two runs of the same scene give the same bits (no hidden state, no uninitialised memory)
+    core::ClothOptions options;
+    options.rows = options.cols = 8;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.planes = {core::PlaneDesc{{0, 1, 0}, 0.5}};
+    test::Sim a = test::compile(scene);
+    test::Sim b = test::compile(scene);
+    for (int i = 0; i < 300; ++i) {
+        QVERIFY(core::step(*a.model, a.state));
+        QVERIFY(core::step(*b.model, b.state));
+    }
+    QVERIFY(std::memcmp(a.state.position.data(), b.state.position.data(), sizeof(double) * 3 * 64) == 0);
+    QVERIFY(std::memcmp(a.state.velocity.data(), b.state.velocity.data(), sizeof(double) * 3 * 64) == 0);
+    QVERIFY(a.state.position(1, 20) < 1.0);  // and it moved
+}
+
+QTEST_APPLESS_MAIN(TestStep)
+#include "test_step.moc"

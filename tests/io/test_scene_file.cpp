@@ -1,0 +1,704 @@
+// Scene files: every bad-file case gives one message naming the file, the JSON path and the
+// reason; defaults and unknown keys; save then load gives back the same bits, for hand-made
+// scenes and for every example in resources/scenes; saving is atomic.
+
+#include "core/io/scene_file.h"
+#include "core/validate.h"
+
+#include <QDir>
+#include <QFile>
+#include <QRandomGenerator>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+using namespace Qt::Literals::StringLiterals;
+
+namespace {
+
+// a small valid scene that the bad-file cases each break in one place
+const QByteArray kBase = R"({
+    "format": "springlab-scene",
+    "version": 1,
+    "name": "base",
+    "settings": {"timeStep": 0.01, "substeps": 1, "integrator": "symplectic-euler", "gravity": [0, -9.81, 0],
+                 "viscosity": 0, "restitution": 1, "planeCollisions": true, "particleCollisions": true},
+    "particles": [
+        {"position": [0, 1, 0], "velocity": [3, 0, 0], "mass": 1, "radius": 0.1, "pinned": false},
+        {"position": [0.4, 1, 0], "mass": 2, "radius": 0.2},
+        {"position": [0.8, 1, 0], "mass": 3, "radius": 0.3, "pinned": true}
+    ],
+    "springs": [
+        {"particles": [0, 1], "stiffness": 4000, "damping": 0, "restLength": 0.4},
+        {"particles": [1, 2], "stiffness": 5000, "damping": 1}
+    ],
+    "planes": [
+        {"normal": [0, 1, 0], "offset": 0}
+    ]
+}
+)";
+
+std::uint64_t bits(double value)
+{
+    return std::bit_cast<std::uint64_t>(value);
+}
+
+// compares every double by its bits (operator== would take -0.0 for 0.0)
+bool sameBits(double a, double b, const QString &what, QString &difference)
+{
+    if (bits(a) == bits(b))
+        return true;
+    difference = QStringLiteral("%1: %2 (0x%3) != %4 (0x%5)")
+                     .arg(what)
+                     .arg(a, 0, 'g', 17)
+                     .arg(bits(a), 16, 16, QLatin1Char('0'))
+                     .arg(b, 0, 'g', 17)
+                     .arg(bits(b), 16, 16, QLatin1Char('0'));
+    return false;
+}
+
+bool sameBits(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const QString &what, QString &difference)
+{
+    for (int axis = 0; axis < 3; ++axis)
+        if (!sameBits(a[axis], b[axis], what + u'[' + QString::number(axis) + u']', difference))
+            return false;
+    return true;
+}
+
+// empty when the two scenes hold the same bits; else the first difference
+QString bitDifference(const core::SceneDesc &a, const core::SceneDesc &b)
+{
+    QString d;
+    const core::Settings &s = a.settings;
+    const core::Settings &t = b.settings;
+    if (a.name != b.name)
+        return QStringLiteral("name");
+    if (s.substeps != t.substeps || s.integrator != t.integrator || s.planeCollisions != t.planeCollisions ||
+        s.particleCollisions != t.particleCollisions)
+        return QStringLiteral("settings");
+    if (!sameBits(s.timeStep, t.timeStep, QStringLiteral("timeStep"), d) ||
+        !sameBits(s.gravity, t.gravity, QStringLiteral("gravity"), d) ||
+        !sameBits(s.viscosity, t.viscosity, QStringLiteral("viscosity"), d) ||
+        !sameBits(s.restitution, t.restitution, QStringLiteral("restitution"), d))
+        return d;
+    if (a.particles.size() != b.particles.size() || a.springs.size() != b.springs.size() ||
+        a.planes.size() != b.planes.size())
+        return QStringLiteral("counts");
+    for (std::size_t i = 0; i < a.particles.size(); ++i) {
+        const core::ParticleDesc &p = a.particles[i];
+        const core::ParticleDesc &q = b.particles[i];
+        const QString at = QStringLiteral("particles[%1].").arg(i);
+        if (p.pinned != q.pinned)
+            return at + u"pinned"_s;
+        if (!sameBits(p.position, q.position, at + u"position"_s, d) ||
+            !sameBits(p.velocity, q.velocity, at + u"velocity"_s, d) || !sameBits(p.mass, q.mass, at + u"mass"_s, d) ||
+            !sameBits(p.radius, q.radius, at + u"radius"_s, d))
+            return d;
+    }
+    for (std::size_t i = 0; i < a.springs.size(); ++i) {
+        const core::SpringDesc &p = a.springs[i];
+        const core::SpringDesc &q = b.springs[i];
+        const QString at = QStringLiteral("springs[%1].").arg(i);
+        if (p.a != q.a || p.b != q.b)
+            return at + u"particles"_s;
+        if (!sameBits(p.stiffness, q.stiffness, at + u"stiffness"_s, d) ||
+            !sameBits(p.damping, q.damping, at + u"damping"_s, d) ||
+            !sameBits(p.restLength, q.restLength, at + u"restLength"_s, d))
+            return d;
+    }
+    for (std::size_t i = 0; i < a.planes.size(); ++i) {
+        const QString at = QStringLiteral("planes[%1].").arg(i);
+        if (!sameBits(a.planes[i].normal, b.planes[i].normal, at + u"normal"_s, d) ||
+            !sameBits(a.planes[i].offset, b.planes[i].offset, at + u"offset"_s, d))
+            return d;
+    }
+    return {};
+}
+
+// a scene full of values that are hard to write and read back exactly
+core::SceneDesc awkwardScene()
+{
+    const double denormal = std::numeric_limits<double>::denorm_min();  // 5e-324
+    core::SceneDesc scene;
+    scene.name = "awkward \"quoted\" \\ back\tslash\nnewline \x01 na\xc3\xafve \xe2\x98\x83 \xf0\x9f\x98\x80";
+    scene.settings.timeStep = 1.0 / 3.0;
+    scene.settings.substeps = 7;
+    scene.settings.integrator = core::Integrator::ExplicitEuler;
+    scene.settings.gravity = {-0.0, -9.81, 1e-300};
+    scene.settings.viscosity = denormal;
+    scene.settings.restitution = 0.1;
+    scene.settings.planeCollisions = false;
+    scene.settings.particleCollisions = true;
+
+    core::ParticleDesc p;
+    p.position = {0.1, 1.0 / 3.0, 1e-300};
+    p.velocity = {-0.0, denormal, -denormal};
+    p.mass = 1e-300;
+    p.radius = 0.30000000000000004;
+    scene.particles.push_back(p);
+
+    p.position = {-1e9, std::nextafter(1e9, 0.0), std::numeric_limits<double>::min()};
+    p.velocity = {2.0 / 3.0, -1e9, 123456.789e-3};
+    p.mass = 1e9;
+    p.radius = denormal;
+    p.pinned = true;
+    scene.particles.push_back(p);
+
+    p.position = {std::nextafter(0.0, 1.0) * 3, -std::nextafter(1.0, 2.0), 1e-7};
+    p.velocity = {1e-5, 900719925.4740993, -0.0};
+    p.mass = 0.1 + 0.2;
+    p.radius = 1e6;
+    p.pinned = false;
+    scene.particles.push_back(p);
+
+    scene.springs.push_back({0, 1, 1e9, 1.0 / 7.0, -0.0});
+    scene.springs.push_back({2, 0, denormal, 0.0, 1e6});
+    scene.planes.push_back({{0.6, 0.8, -0.0}, -0.0});
+    scene.planes.push_back({{0.0, -1.0, 0.0}, 1.0 / 3.0});
+    return scene;
+}
+
+QStringList exampleFiles()
+{
+    const QDir dir(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes"));
+    QStringList files;
+    for (const QString &name : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name))
+        files += dir.filePath(name);
+    return files;
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+bool writeAll(const QString &path, const QByteArray &data)
+{
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(data) == data.size();
+}
+
+}  // namespace
+
+class TestSceneFile : public QObject {
+    Q_OBJECT
+
+private slots:
+    void baseIsValid();
+    void badFile_data();
+    void badFile();
+    void unreadableFile_data();
+    void unreadableFile();
+    void defaults();
+    void unknownKeysWarn();
+    void negativeZeroLiterals_data();
+    void negativeZeroLiterals();
+    void normalsNormalised_data();
+    void normalsNormalised();
+    void roundTripAwkward();
+    void roundTripRandomBits();
+    void examplesExist();
+    void roundTripExamples_data();
+    void roundTripExamples();
+    void saveWritesEveryKey();
+    void saveFailureKeepsOldFile_data();
+    void saveFailureKeepsOldFile();
+};
+
+void TestSceneFile::baseIsValid()
+{
+    const io::LoadResult result = io::parseScene(kBase, QStringLiteral("base.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY(result.warnings.isEmpty());
+    QCOMPARE(result.scene->particles.size(), std::size_t(3));
+    QCOMPARE(result.scene->springs.size(), std::size_t(2));
+    QCOMPARE(result.scene->planes.size(), std::size_t(1));
+}
+
+void TestSceneFile::badFile_data()
+{
+    // from: text of kBase to replace ("" replaces the whole file); to: its replacement
+    QTest::addColumn<QByteArray>("from");
+    QTest::addColumn<QByteArray>("to");
+    QTest::addColumn<QString>("path");  // "" when the problem has no JSON path
+    QTest::addColumn<QString>("reason");
+
+    // not JSON, empty, truncated, not an object
+    QTest::newRow("not json") << QByteArray() << QByteArray("hello") << QString()
+                              << QStringLiteral("not valid JSON (illegal value at byte");
+    QTest::newRow("empty") << QByteArray() << QByteArray(" \n") << QString() << QStringLiteral("the file is empty");
+    QTest::newRow("truncated") << QByteArray() << kBase.left(kBase.indexOf("0.4, 1") + 4)
+                               << QStringLiteral("particles[1].position[1]")
+                               << QStringLiteral("the file ends too early: is it truncated?");
+    QTest::newRow("truncated in a string")
+        << QByteArray() << kBase.left(kBase.indexOf("symplectic") + 4) << QStringLiteral("settings.integrator")
+        << QStringLiteral("the file ends too early");
+    QTest::newRow("missing comma") << QByteArray("\"mass\": 2,") << QByteArray("\"mass\": 2")
+                                   << QStringLiteral("particles[1].mass")
+                                   << QStringLiteral("not valid JSON (unterminated object at byte");
+    QTest::newRow("trailing garbage") << QByteArray("\n}\n") << QByteArray("\n} }") << QString()
+                                      << QStringLiteral("garbage at the end of the document");
+    QTest::newRow("not an object") << QByteArray() << QByteArray("[1, 2]") << QString()
+                                   << QStringLiteral("expected a JSON object at the top level, got an array");
+
+    // huge numbers and NaN, which JSON cannot hold
+    QTest::newRow("1e999") << QByteArray("\"mass\": 3") << QByteArray("\"mass\": 1e999")
+                           << QStringLiteral("particles[2].mass")
+                           << QStringLiteral("the number 1e999 is too large for a double: JSON has no infinity or NaN");
+    QTest::newRow("-1e999") << QByteArray("\"offset\": 0") << QByteArray("\"offset\": -1e999")
+                            << QStringLiteral("planes[0].offset")
+                            << QStringLiteral("the number -1e999 is too large for a double");
+    QTest::newRow("1e-999") << QByteArray("[3, 0, 0]") << QByteArray("[3, 1e-999, 0]")
+                            << QStringLiteral("particles[0].velocity[1]")
+                            << QStringLiteral("the number 1e-999 is too close to zero for a double");
+    QTest::newRow("NaN") << QByteArray("\"mass\": 2") << QByteArray("\"mass\": NaN")
+                         << QStringLiteral("particles[1].mass")
+                         << QStringLiteral("NaN is not a JSON number: JSON has no NaN or infinity");
+    QTest::newRow("Infinity") << QByteArray("\"radius\": 0.2") << QByteArray("\"radius\": Infinity")
+                              << QStringLiteral("particles[1].radius")
+                              << QStringLiteral("Infinity is not a JSON number");
+
+    // another format, another version
+    QTest::newRow("other format") << QByteArray("\"format\": \"springlab-scene\"")
+                                  << QByteArray("\"format\": \"blender-scene\"") << QStringLiteral("format")
+                                  << QStringLiteral(
+                                         "not a Springlab scene (expected \"springlab-scene\", got \"blender-scene\")");
+    QTest::newRow("format missing") << QByteArray("\"format\": \"springlab-scene\",") << QByteArray()
+                                    << QStringLiteral("format") << QStringLiteral("missing: not a Springlab scene");
+    QTest::newRow("format not a string") << QByteArray("\"format\": \"springlab-scene\"") << QByteArray("\"format\": 1")
+                                         << QStringLiteral("format") << QStringLiteral("got a number");
+    QTest::newRow("newer version") << QByteArray("\"version\": 1") << QByteArray("\"version\": 2")
+                                   << QStringLiteral("version")
+                                   << QStringLiteral("the file is version 2, newer than this build of Springlab reads "
+                                                     "(version 1 at most)");
+    QTest::newRow("version 0") << QByteArray("\"version\": 1") << QByteArray("\"version\": 0")
+                               << QStringLiteral("version") << QStringLiteral("there is no version 0");
+    QTest::newRow("version a string") << QByteArray("\"version\": 1") << QByteArray("\"version\": \"1\"")
+                                      << QStringLiteral("version")
+                                      << QStringLiteral("expected an integer, got a string");
+    QTest::newRow("version missing") << QByteArray("\"version\": 1,") << QByteArray() << QStringLiteral("version")
+                                     << QStringLiteral("missing: this key is required");
+
+    // wrong types
+    QTest::newRow("mass a string") << QByteArray("\"mass\": 3") << QByteArray("\"mass\": \"heavy\"")
+                                   << QStringLiteral("particles[2].mass")
+                                   << QStringLiteral("expected a number, got a string");
+    QTest::newRow("pinned a string") << QByteArray("\"pinned\": true") << QByteArray("\"pinned\": \"yes\"")
+                                     << QStringLiteral("particles[2].pinned")
+                                     << QStringLiteral("expected true or false, got a string");
+    QTest::newRow("name a number") << QByteArray("\"name\": \"base\"") << QByteArray("\"name\": 7")
+                                   << QStringLiteral("name") << QStringLiteral("expected a string, got a number");
+    QTest::newRow("settings an array") << QByteArray("\"settings\": {") << QByteArray("\"settings\": [], \"x\": {")
+                                       << QStringLiteral("settings")
+                                       << QStringLiteral("expected an object, got an array");
+    QTest::newRow("particles an object") << QByteArray("\"particles\": [\n")
+                                         << QByteArray("\"particles\": {}, \"x\": [\n") << QStringLiteral("particles")
+                                         << QStringLiteral("expected an array, got an object");
+    QTest::newRow("particle a number") << QByteArray("\"particles\": [\n") << QByteArray("\"particles\": [7, ")
+                                       << QStringLiteral("particles[0]")
+                                       << QStringLiteral("expected an object, got a number");
+    QTest::newRow("gravity a number") << QByteArray("\"gravity\": [0, -9.81, 0]") << QByteArray("\"gravity\": -9.81")
+                                      << QStringLiteral("settings.gravity")
+                                      << QStringLiteral("expected an array of 3 numbers, got a number");
+    QTest::newRow("position component null")
+        << QByteArray("[0.8, 1, 0]") << QByteArray("[0.8, null, 0]") << QStringLiteral("particles[2].position[1]")
+        << QStringLiteral("expected a number, got null");
+    QTest::newRow("substeps a fraction") << QByteArray("\"substeps\": 1") << QByteArray("\"substeps\": 2.5")
+                                         << QStringLiteral("settings.substeps")
+                                         << QStringLiteral("expected an integer, got 2.5");
+    QTest::newRow("unknown integrator") << QByteArray("\"symplectic-euler\"") << QByteArray("\"rk9\"")
+                                        << QStringLiteral("settings.integrator")
+                                        << QStringLiteral(
+                                               "unknown integrator \"rk9\" (known: symplectic-euler, explicit-euler)");
+
+    // missing keys, vectors of the wrong length
+    QTest::newRow("radius missing") << QByteArray("\"mass\": 2, \"radius\": 0.2}") << QByteArray("\"mass\": 2}")
+                                    << QStringLiteral("particles[1].radius")
+                                    << QStringLiteral("missing: this key is required");
+    QTest::newRow("position missing") << QByteArray("\"position\": [0.8, 1, 0], ") << QByteArray()
+                                      << QStringLiteral("particles[2].position") << QStringLiteral("missing");
+    QTest::newRow("stiffness missing") << QByteArray("\"stiffness\": 5000, ") << QByteArray()
+                                       << QStringLiteral("springs[1].stiffness") << QStringLiteral("missing");
+    QTest::newRow("springs missing") << QByteArray("\"springs\": [") << QByteArray("\"springz\": [")
+                                     << QStringLiteral("springs") << QStringLiteral("missing: this key is required");
+    QTest::newRow("normal missing") << QByteArray("\"normal\": [0, 1, 0], ") << QByteArray()
+                                    << QStringLiteral("planes[0].normal") << QStringLiteral("missing");
+    QTest::newRow("short position") << QByteArray("[0.4, 1, 0]") << QByteArray("[0.4, 1]")
+                                    << QStringLiteral("particles[1].position")
+                                    << QStringLiteral("expected an array of 3 numbers, got 2");
+    QTest::newRow("long velocity") << QByteArray("[3, 0, 0]") << QByteArray("[3, 0, 0, 0]")
+                                   << QStringLiteral("particles[0].velocity")
+                                   << QStringLiteral("expected an array of 3 numbers, got 4");
+
+    // spring ends
+    QTest::newRow("fractional index") << QByteArray("[1, 2]") << QByteArray("[1, 1.5]")
+                                      << QStringLiteral("springs[1].particles[1]")
+                                      << QStringLiteral("expected an integer, got 1.5");
+    QTest::newRow("index a string") << QByteArray("[1, 2]") << QByteArray("[\"1\", 2]")
+                                    << QStringLiteral("springs[1].particles[0]")
+                                    << QStringLiteral("expected an integer, got a string");
+    QTest::newRow("three ends") << QByteArray("[1, 2]") << QByteArray("[1, 2, 0]")
+                                << QStringLiteral("springs[1].particles")
+                                << QStringLiteral("expected an array of 2 particle indices, got 3");
+    QTest::newRow("index out of range") << QByteArray("[1, 2]") << QByteArray("[1, 3]")
+                                        << QStringLiteral("springs[1].particles[1]")
+                                        << QStringLiteral(
+                                               "particle index 3 is out of range (the scene has 3 particles)");
+    QTest::newRow("negative index") << QByteArray("[0, 1]") << QByteArray("[-1, 1]")
+                                    << QStringLiteral("springs[0].particles[0]")
+                                    << QStringLiteral("particle index -1 is out of range");
+    QTest::newRow("huge index") << QByteArray("[0, 1]") << QByteArray("[0, 1e12]")
+                                << QStringLiteral("springs[0].particles[1]")
+                                << QStringLiteral("the integer 1e+12 is too large");
+    QTest::newRow("self spring") << QByteArray("[1, 2]") << QByteArray("[2, 2]")
+                                 << QStringLiteral("springs[1].particles")
+                                 << QStringLiteral("joins particle 2 to itself");
+
+    // values out of range, as core::findProblem() words them
+    QTest::newRow("zero mass") << QByteArray("\"mass\": 3") << QByteArray("\"mass\": 0")
+                               << QStringLiteral("particles[2].mass")
+                               << QStringLiteral("must be greater than 0 kg (got 0 kg)");
+    QTest::newRow("negative mass") << QByteArray("\"mass\": 2") << QByteArray("\"mass\": -1")
+                                   << QStringLiteral("particles[1].mass")
+                                   << QStringLiteral("must be greater than 0 kg (got -1 kg)");
+    QTest::newRow("zero radius") << QByteArray("\"radius\": 0.1") << QByteArray("\"radius\": 0")
+                                 << QStringLiteral("particles[0].radius") << QStringLiteral("must be greater than 0 m");
+    QTest::newRow("negative radius") << QByteArray("\"radius\": 0.3") << QByteArray("\"radius\": -0.3")
+                                     << QStringLiteral("particles[2].radius")
+                                     << QStringLiteral("must be greater than 0 m");
+    QTest::newRow("time step 5 s") << QByteArray("\"timeStep\": 0.01") << QByteArray("\"timeStep\": 5")
+                                   << QStringLiteral("settings.timeStep")
+                                   << QStringLiteral("must be at most 1 s (got 5 s)");
+    QTest::newRow("restitution 2") << QByteArray("\"restitution\": 1") << QByteArray("\"restitution\": 2")
+                                   << QStringLiteral("settings.restitution") << QStringLiteral("must be at most 1");
+    QTest::newRow("negative stiffness") << QByteArray("\"stiffness\": 5000") << QByteArray("\"stiffness\": -5")
+                                        << QStringLiteral("springs[1].stiffness")
+                                        << QStringLiteral("must be at least 0");
+    QTest::newRow("zero normal") << QByteArray("\"normal\": [0, 1, 0]") << QByteArray("\"normal\": [0, 0, 0]")
+                                 << QStringLiteral("planes[0].normal")
+                                 << QStringLiteral("is zero: a plane needs a direction");
+    QTest::newRow("huge coordinate") << QByteArray("[0.8, 1, 0]") << QByteArray("[0.8, 1, 1e300]")
+                                     << QStringLiteral("particles[2].position[2]") << QStringLiteral("must be at most");
+}
+
+void TestSceneFile::badFile()
+{
+    QFETCH(QByteArray, from);
+    QFETCH(QByteArray, to);
+    QFETCH(QString, path);
+    QFETCH(QString, reason);
+
+    // one change to a valid scene
+    QByteArray json = to;
+    if (!from.isEmpty()) {
+        QCOMPARE(kBase.count(from), qsizetype(1));
+        json = QByteArray(kBase).replace(from, to);
+    }
+
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("dir/bad.json"));
+    QVERIFY(!result.ok());
+    QVERIFY(!result.scene.has_value());
+    const QString prefix = path.isEmpty() ? QStringLiteral("dir/bad.json: ") : u"dir/bad.json: "_s + path + u": "_s;
+    QVERIFY2(result.error.startsWith(prefix), qPrintable(result.error));
+    QVERIFY2(result.error.contains(reason), qPrintable(result.error));
+    QVERIFY2(!result.error.contains(u'\n'), qPrintable(result.error));
+}
+
+void TestSceneFile::unreadableFile_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("missing") << QStringLiteral("nothing-here.json") << QStringLiteral("cannot open: no such file");
+    QTest::newRow("a folder") << QStringLiteral("folder.json")
+                              << QStringLiteral("cannot open: it is a folder, not a file");
+}
+
+void TestSceneFile::unreadableFile()
+{
+    QFETCH(QString, name);
+    QFETCH(QString, reason);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("folder.json")));
+    const QString path = dir.filePath(name);
+    const io::LoadResult result = io::loadScene(path);
+    QVERIFY(!result.ok());
+    QCOMPARE(result.error, QDir::toNativeSeparators(path) + u": "_s + reason);
+}
+
+void TestSceneFile::defaults()
+{
+    // only the required keys; settings left out altogether
+    const QByteArray json = R"({"format": "springlab-scene", "version": 1, "name": "minimal",
+        "particles": [{"position": [0, 0, 0], "mass": 1, "radius": 0.5},
+                      {"position": [3, 4, 0], "mass": 2, "radius": 0.5}],
+        "springs": [{"particles": [0, 1], "stiffness": 10, "damping": 0.5}],
+        "planes": []})";
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("minimal.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY(result.warnings.isEmpty());
+    const core::SceneDesc &scene = *result.scene;
+    QCOMPARE(scene.name, std::string("minimal"));
+    QVERIFY(scene.settings == core::Settings{});
+    for (const core::ParticleDesc &particle : scene.particles) {
+        QVERIFY(particle.velocity == Eigen::Vector3d::Zero());
+        QVERIFY(!particle.pinned);
+    }
+    QCOMPARE(scene.springs[0].restLength, 5.0);
+
+    // an empty settings object is the same; a key in it overrides only itself
+    QByteArray withSettings = json;
+    withSettings.replace("\"planes\": []", "\"planes\": [], \"settings\": {\"viscosity\": 0.25}");
+    const io::LoadResult other = io::parseScene(withSettings, QStringLiteral("minimal.json"));
+    QVERIFY2(other.ok(), qPrintable(other.error));
+    core::Settings expected;
+    expected.viscosity = 0.25;
+    QVERIFY(other.scene->settings == expected);
+}
+
+void TestSceneFile::unknownKeysWarn()
+{
+    QByteArray json = kBase;
+    json.replace("\"name\": \"base\",", "\"name\": \"base\", \"author\": \"me\",");
+    json.replace("\"substeps\": 1,", "\"substeps\": 1, \"solver\": {\"x\": 1},");
+    json.replace("\"mass\": 2,", "\"mass\": 2, \"colour\": [1, 0, 0],");
+    json.replace("\"damping\": 1}", "\"damping\": 1, \"breakable\": true}");
+    json.replace("\"offset\": 0}", "\"offset\": 0, \"friction\": 0.5}");
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("extra.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+
+    QStringList warnings = result.warnings;
+    warnings.sort();
+    const QStringList expected = {
+        QStringLiteral("extra.json: author: unknown key, ignored"),
+        QStringLiteral("extra.json: particles[1].colour: unknown key, ignored"),
+        QStringLiteral("extra.json: planes[0].friction: unknown key, ignored"),
+        QStringLiteral("extra.json: settings.solver: unknown key, ignored"),
+        QStringLiteral("extra.json: springs[1].breakable: unknown key, ignored"),
+    };
+    QCOMPARE(warnings, expected);
+
+    // the known keys read as if the others were not there
+    const io::LoadResult base = io::parseScene(kBase, QStringLiteral("base.json"));
+    QVERIFY(*result.scene == *base.scene);
+}
+
+void TestSceneFile::negativeZeroLiterals_data()
+{
+    QTest::addColumn<QByteArray>("literal");
+    QTest::addColumn<bool>("negative");
+    QTest::newRow("0") << QByteArray("0") << false;
+    QTest::newRow("0.0") << QByteArray("0.0") << false;
+    QTest::newRow("-0") << QByteArray("-0") << true;
+    QTest::newRow("-0.0") << QByteArray("-0.0") << true;
+    QTest::newRow("-0e3") << QByteArray("-0e3") << true;
+    QTest::newRow("-0.000E-2") << QByteArray("-0.000E-2") << true;
+}
+
+void TestSceneFile::negativeZeroLiterals()
+{
+    QFETCH(QByteArray, literal);
+    QFETCH(bool, negative);
+    const QByteArray json = QByteArray(kBase).replace("[3, 0, 0]", "[3, " + literal + ", 0]");
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("zero.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    const double value = result.scene->particles[0].velocity.y();
+    QCOMPARE(value, 0.0);
+    QCOMPARE(std::signbit(value), negative);
+    // only that one
+    QVERIFY(!std::signbit(result.scene->particles[0].velocity.z()));
+    QVERIFY(!std::signbit(result.scene->planes[0].offset));
+}
+
+void TestSceneFile::normalsNormalised_data()
+{
+    QTest::addColumn<double>("x");
+    QTest::addColumn<double>("y");
+    QTest::addColumn<double>("z");
+    QTest::newRow("up, unit already") << 0.0 << 1.0 << 0.0;
+    QTest::newRow("up, long") << 0.0 << 2.5 << 0.0;
+    QTest::newRow("3-4-5") << 3.0 << 4.0 << 0.0;
+    QTest::newRow("diagonal") << 1.0 << 1.0 << 1.0;
+    QTest::newRow("tiny") << 1e-9 << -2e-9 << 0.0;
+    QTest::newRow("large") << -7e8 << 1e8 << 3e8;
+}
+
+void TestSceneFile::normalsNormalised()
+{
+    QFETCH(double, x);
+    QFETCH(double, y);
+    QFETCH(double, z);
+    const Eigen::Vector3d raw(x, y, z);
+    const QByteArray literal =
+        QByteArray::number(x, 'g', 17) + ", " + QByteArray::number(y, 'g', 17) + ", " + QByteArray::number(z, 'g', 17);
+    const QByteArray json = QByteArray(kBase).replace("\"normal\": [0, 1, 0]", "\"normal\": [" + literal + "]");
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("plane.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+
+    // unit length, same direction, through core::unitNormal()
+    const Eigen::Vector3d normal = result.scene->planes[0].normal;
+    QVERIFY(std::abs(normal.norm() - 1.0) < 1e-15);
+    QVERIFY((normal - raw.normalized()).norm() < 1e-15);
+    QVERIFY(normal == core::unitNormal(raw));
+
+    // saving and loading again leaves it alone, bit for bit
+    const io::LoadResult again = io::parseScene(io::sceneToJson(*result.scene), QStringLiteral("again.json"));
+    QVERIFY2(again.ok(), qPrintable(again.error));
+    QCOMPARE(bitDifference(*result.scene, *again.scene), QString());
+}
+
+void TestSceneFile::roundTripAwkward()
+{
+    const core::SceneDesc scene = awkwardScene();
+    QVERIFY(!core::findProblem(scene).has_value());
+
+    const QByteArray json = io::sceneToJson(scene);
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("awkward.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY(result.warnings.isEmpty());
+    QCOMPARE(bitDifference(scene, *result.scene), QString());
+
+    // written again, the text is the same too
+    QCOMPARE(io::sceneToJson(*result.scene), json);
+
+    // and through a file
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("awkward.json"));
+    const io::SaveResult saved = io::saveScene(path, scene);
+    QVERIFY2(saved.ok(), qPrintable(saved.error));
+    const io::LoadResult loaded = io::loadScene(path);
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+    QCOMPARE(bitDifference(scene, *loaded.scene), QString());
+}
+
+void TestSceneFile::roundTripRandomBits()
+{
+    // random bit patterns: every finite double inside the coordinate range is fair game
+    QRandomGenerator random(20240531);
+    core::SceneDesc scene;
+    while (scene.particles.size() < 2000) {
+        core::ParticleDesc particle;
+        for (int axis = 0; axis < 6; ++axis) {
+            double value = 0.0;
+            do {
+                value = std::bit_cast<double>(random.generate64());
+            } while (!std::isfinite(value) || std::abs(value) > 1e9);
+            (axis < 3 ? particle.position : particle.velocity)[axis % 3] = value;
+        }
+        scene.particles.push_back(particle);
+    }
+    const io::LoadResult result = io::parseScene(io::sceneToJson(scene), QStringLiteral("random.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QCOMPARE(bitDifference(scene, *result.scene), QString());
+}
+
+void TestSceneFile::examplesExist()
+{
+    // so that roundTripExamples cannot pass with nothing to test
+    QVERIFY2(exampleFiles().size() >= 5, qPrintable(exampleFiles().join(u", "_s)));
+}
+
+void TestSceneFile::roundTripExamples_data()
+{
+    QTest::addColumn<QString>("path");
+    for (const QString &path : exampleFiles())
+        QTest::newRow(qPrintable(QFileInfo(path).fileName())) << path;
+    if (exampleFiles().isEmpty())
+        QTest::newRow("none") << QString();
+}
+
+void TestSceneFile::roundTripExamples()
+{
+    QFETCH(QString, path);
+    if (path.isEmpty())
+        QFAIL("no example scenes in resources/scenes");
+    const io::LoadResult original = io::loadScene(path);
+    QVERIFY2(original.ok(), qPrintable(original.error));
+    QVERIFY2(original.warnings.isEmpty(), qPrintable(original.warnings.join(u'\n')));
+
+    // save, load: the same bits; save again: the same text
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString copy = dir.filePath(QStringLiteral("copy.json"));
+    const io::SaveResult saved = io::saveScene(copy, *original.scene);
+    QVERIFY2(saved.ok(), qPrintable(saved.error));
+    const io::LoadResult reloaded = io::loadScene(copy);
+    QVERIFY2(reloaded.ok(), qPrintable(reloaded.error));
+    QCOMPARE(bitDifference(*original.scene, *reloaded.scene), QString());
+    QCOMPARE(io::sceneToJson(*reloaded.scene), readAll(copy));
+}
+
+void TestSceneFile::saveWritesEveryKey()
+{
+    // every key, defaults included, so a file says all it means
+    core::SceneDesc scene;
+    scene.name = "keys";
+    scene.particles.resize(2);
+    scene.particles[1].position = {1, 0, 0};
+    scene.springs.push_back({0, 1, 10, 0, 1});
+    scene.planes.push_back({});
+    const QByteArray json = io::sceneToJson(scene);
+    for (const char *key :
+         {"format",     "version",   "name",      "settings",    "timeStep",        "substeps",
+          "integrator", "gravity",   "viscosity", "restitution", "planeCollisions", "particleCollisions",
+          "particles",  "position",  "velocity",  "mass",        "radius",          "pinned",
+          "springs",    "stiffness", "damping",   "restLength",  "planes",          "normal",
+          "offset"})
+        QVERIFY2(json.contains(QByteArray("\"") + key + "\": "), key);
+    QVERIFY(json.contains('\n'));
+
+    // an empty scene is still a whole file
+    const io::LoadResult empty = io::parseScene(io::sceneToJson(core::SceneDesc{}), QStringLiteral("empty.json"));
+    QVERIFY2(empty.ok(), qPrintable(empty.error));
+    QVERIFY(*empty.scene == core::SceneDesc{});
+}
+
+void TestSceneFile::saveFailureKeepsOldFile_data()
+{
+    QTest::addColumn<QString>("target");  // relative to a fresh temporary folder
+    QTest::addColumn<QString>("reason");
+
+    // a name one short of the limit: the file fits, its temporary twin (name + suffix) does not
+    QTest::newRow("temporary file cannot be made") << QString(250, u'a') << QStringLiteral("cannot save: ");
+    QTest::newRow("folder missing") << QStringLiteral("no/such/folder/scene.json")
+                                    << QStringLiteral("cannot save: the folder ");
+    QTest::newRow("target is a folder") << QStringLiteral("folder.json")
+                                        << QStringLiteral("cannot save: it is a folder, not a file");
+}
+
+void TestSceneFile::saveFailureKeepsOldFile()
+{
+    QFETCH(QString, target);
+    QFETCH(QString, reason);
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("folder.json")));
+    const QString path = dir.filePath(target);
+
+    // an old file where there can be one
+    const QByteArray old = "old contents\n";
+    const bool hasOld = QFileInfo(path).absoluteDir().exists() && !QFileInfo(path).isDir();
+    if (hasOld)
+        QVERIFY(writeAll(path, old));
+    const QStringList before = QDir(QFileInfo(path).absolutePath()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot);
+
+    const io::SaveResult result = io::saveScene(path, awkwardScene());
+    QVERIFY(!result.ok());
+    QVERIFY2(result.error.startsWith(QDir::toNativeSeparators(path) + u": "_s + reason), qPrintable(result.error));
+
+    // the old file whole, and nothing left beside it
+    if (hasOld)
+        QCOMPARE(readAll(path), old);
+    if (QFileInfo(path).absoluteDir().exists())
+        QCOMPARE(QDir(QFileInfo(path).absolutePath()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot), before);
+}
+
+QTEST_GUILESS_MAIN(TestSceneFile)
+#include "test_scene_file.moc"

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Springlab's entry point on a fresh Debian 12 machine: installs what is missing (once, quietly),
+# builds, then either launches the editor or runs the whole test suite.
+#
+#   tools/dev.sh run [SCENE.json]   build in Release and open the editor (default: the springs example)
+#   tools/dev.sh test               build with warnings as errors and run every test
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# what Springlab needs from Debian; libqt6opengl6-dev and xauth are only "recommended" by others
+packages=(g++ cmake ninja-build qt6-base-dev libqt6opengl6-dev libeigen3-dev
+          xvfb xauth libgl1-mesa-dri libegl-mesa0)
+
+install_missing() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  local sudo=()
+  [ "$(id -u)" -ne 0 ] && sudo=(sudo)
+  echo "Installing ${missing[*]} ..."
+  "${sudo[@]}" apt-get update -qq
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+}
+
+build() {
+  cmake --preset "$1" >/dev/null
+  cmake --build --preset "$1"
+}
+
+case "${1:-}" in
+  run)
+    shift
+    install_missing
+    build release
+    if [ -x build/release/app/springlab ]; then
+      exec build/release/app/springlab "$@"
+    fi
+    exec build/release/app/springlab-sim "${@:-resources/scenes/springs.json}"
+    ;;
+  test)
+    install_missing
+    build ci
+    ctest --preset ci
+    ;;
+  *)
+    echo "usage: tools/dev.sh run [SCENE.json] | tools/dev.sh test" >&2
+    exit 2
+    ;;
+esac

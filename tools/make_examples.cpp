@@ -1,0 +1,100 @@
+// Writes the example scenes of resources/scenes/ from the scene generators and the handout's
+// parameters. Run it after changing a generator: tools/make_examples resources/scenes
+#include "core/generators.h"
+#include "core/io/scene_file.h"
+#include "core/validate.h"
+
+#include <QDir>
+#include <cstdio>
+
+namespace {
+
+using core::ParticleDesc;
+using core::PlaneDesc;
+using Eigen::Vector3d;
+
+// the handout's first scene: two particles under gravity, no contacts, a fine time step
+core::SceneDesc particlesScene()
+{
+    core::SceneDesc scene;
+    scene.name = "particles";
+    scene.settings.timeStep = 5e-4;
+    scene.settings.planeCollisions = false;
+    scene.settings.particleCollisions = false;
+    scene.particles = {ParticleDesc{Vector3d(-1.0, 1.0, 0.0), Vector3d(3.0, 0.0, 0.0), 1.0, 0.1, false},
+                       ParticleDesc{Vector3d(1.0, 2.0, 0.0), Vector3d(0.0, 0.0, 0.0), 2.0, 0.15, false}};
+    return scene;
+}
+
+// the handout's net: 11 × 11 particles, two opposite edges pinned
+core::SceneDesc springsScene()
+{
+    core::SceneDesc scene = core::makeNet({});
+    scene.name = "springs";
+    return scene;
+}
+
+// a floor, a heavy pinned particle, one resting on the floor and one falling onto the pinned one
+core::SceneDesc collisionsScene()
+{
+    core::SceneDesc scene;
+    scene.name = "collisions";
+    scene.settings.restitution = 1.0;
+    scene.particles = {ParticleDesc{Vector3d(0.0, 1.0, 0.0), Vector3d::Zero(), 100.0, 0.3, true},
+                       ParticleDesc{Vector3d(1.2, 0.2, 0.0), Vector3d::Zero(), 1.0, 0.2, false},
+                       ParticleDesc{Vector3d(0.1, 3.0, 0.0), Vector3d::Zero(), 1.0, 0.2, false}};
+    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    return scene;
+}
+
+// the handout's pool: a 10 × 10 table with four walls and two balls; the first is steered with
+// the arrow keys; the medium's drag stands for the cloth of the table
+core::SceneDesc poolScene()
+{
+    core::SceneDesc scene;
+    scene.name = "pool";
+    scene.settings.viscosity = 0.9;
+    scene.settings.restitution = 0.9;
+    scene.particles = {ParticleDesc{Vector3d(-2.0, 0.5, 0.0), Vector3d::Zero(), 1.0, 0.5, false},
+                       ParticleDesc{Vector3d(2.0, 0.5, 0.5), Vector3d::Zero(), 1.0, 0.5, false}};
+    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}, PlaneDesc{Vector3d(1.0, 0.0, 0.0), -5.0},
+                    PlaneDesc{Vector3d(-1.0, 0.0, 0.0), -5.0}, PlaneDesc{Vector3d(0.0, 0.0, 1.0), -5.0},
+                    PlaneDesc{Vector3d(0.0, 0.0, -1.0), -5.0}};
+    scene.steerable = 0;
+    return scene;
+}
+
+// a 32 × 32 cloth pinned at two corners, draping onto a floor
+core::SceneDesc clothScene()
+{
+    core::SceneDesc scene = core::makeCloth({});
+    scene.settings.particleCollisions = false;  // no self contacts: the sheet never folds onto itself here
+    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), -0.3}};
+    return scene;
+}
+
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: %s DIRECTORY\n", argv[0]);
+        return 2;
+    }
+    const QDir dir(QString::fromLocal8Bit(argv[1]));
+    for (const core::SceneDesc &scene :
+         {particlesScene(), springsScene(), collisionsScene(), poolScene(), clothScene()}) {
+        if (auto problem = core::findProblem(scene)) {
+            std::fprintf(stderr, "%s: %s: %s\n", scene.name.c_str(), problem->path.c_str(), problem->message.c_str());
+            return 1;
+        }
+        const QString path = dir.filePath(QString::fromStdString(scene.name) + ".json");
+        const io::SaveResult saved = io::saveScene(path, scene);
+        if (!saved.ok()) {
+            std::fprintf(stderr, "%s\n", qPrintable(saved.error));
+            return 1;
+        }
+        std::printf("wrote %s\n", qPrintable(path));
+    }
+    return 0;
+}
