@@ -1,6 +1,6 @@
 // springlab-sim: runs a scene with no window (issue 2, docs/scene-format.md).
 //   springlab-sim SCENE.json [--duration SECONDS | --steps N] [--time-step H] [--substeps S]
-//                 [--integrator NAME] [--output FINAL.json] [--trace TRACE.csv [--every K]] [--quiet]
+//                 [--integrator NAME] [--tolerance TOL] [--output FINAL.json] [--trace TRACE.csv [--every K]] [--quiet]
 // Exit code 0 done, 2 bad file or argument, 3 the simulation blew up.
 
 #include "sim_options.h"

@@ -119,6 +119,12 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
             return false;
         options.substeps = substeps;
     }
+    if (parser.isSet(u"tolerance"_s)) {
+        options.tolerance = readNumber(u"tolerance"_s, parser.value(u"tolerance"_s), u"a number"_s, error);
+        if (!options.tolerance ||
+            !checkAgainstTable(u"tolerance"_s, core::Parameter::Tolerance, *options.tolerance, error))
+            return false;
+    }
     if (parser.isSet(u"integrator"_s)) {
         const QString name = parser.value(u"integrator"_s);
         options.integrator = core::integratorFromName(name.toStdString());
@@ -175,6 +181,7 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
         {u"time-step"_s, u"Time step in seconds, instead of the file's."_s, u"H"_s},
         {u"substeps"_s, u"Sub-steps per step, instead of the file's."_s, u"S"_s},
         {u"integrator"_s, u"Integrator, instead of the file's: "_s + knownIntegrators() + u'.', u"NAME"_s},
+        {u"tolerance"_s, u"Local error per step (m, m/s) for adaptive-rk45, instead of the file's."_s, u"TOL"_s},
         {u"output"_s, u"Write the final state as a scene file, to run on from."_s, u"FINAL.json"_s},
         {u"trace"_s, u"Write positions and velocities as CSV: step,time,particle,x,y,z,vx,vy,vz."_s, u"TRACE.csv"_s},
         {u"every"_s, u"With --trace: one set of rows every K steps (default 1), step 0 included."_s, u"K"_s},
@@ -209,6 +216,8 @@ QString applyOverrides(const SimOptions &options, core::SceneDesc &scene)
         settings.substeps = *options.substeps;
     if (options.integrator)
         settings.integrator = *options.integrator;
+    if (options.tolerance)
+        settings.tolerance = *options.tolerance;
 
     // the options were checked one by one; the scene as a whole is checked once more
     if (const auto problem = core::findProblem(scene))

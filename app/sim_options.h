@@ -24,6 +24,7 @@ struct SimOptions {
     std::optional<double> timeStep;      // --time-step H, s
     std::optional<int> substeps;         // --substeps S
     std::optional<core::Integrator> integrator;
+    std::optional<double> tolerance;     // --tolerance TOL, for adaptive-rk45
     QString outputPath;       // --output FINAL.json; empty: none
     QString tracePath;        // --trace TRACE.csv; empty: none
     std::uint64_t every = 1;  // --every K: a trace row set every K steps

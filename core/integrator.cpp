@@ -7,8 +7,25 @@ std::string_view integratorName(Integrator integrator)
     switch (integrator) {
     case Integrator::SymplecticEuler: return "symplectic-euler";
     case Integrator::ExplicitEuler: return "explicit-euler";
+    case Integrator::VelocityVerlet: return "velocity-verlet";
+    case Integrator::Rk4: return "rk4";
+    case Integrator::ImplicitEuler: return "implicit-euler";
+    case Integrator::AdaptiveRk45: return "adaptive-rk45";
     }
     return "unknown";
+}
+
+int integratorOrder(Integrator integrator)
+{
+    switch (integrator) {
+    case Integrator::SymplecticEuler: return 1;
+    case Integrator::ExplicitEuler: return 1;
+    case Integrator::VelocityVerlet: return 2;
+    case Integrator::Rk4: return 4;
+    case Integrator::ImplicitEuler: return 1;
+    case Integrator::AdaptiveRk45: return 5;
+    }
+    return 1;
 }
 
 std::optional<Integrator> integratorFromName(std::string_view name)

@@ -9,10 +9,19 @@ namespace core {
 enum class Integrator {
     SymplecticEuler,  // the handout's scheme: v += h/m F, then x += h v (new v); the default
     ExplicitEuler,    // forward Euler: x and v both from the old state; the textbook baseline
+    VelocityVerlet,   // second order, symplectic (kick-drift-kick)
+    Rk4,              // classic fourth-order Runge-Kutta: four force evaluations per step
+    ImplicitEuler,    // backward Euler linearised once per step, conjugate-gradient solve; first order
+    AdaptiveRk45,     // Dormand-Prince 5(4) with step-size control to a tolerance
 };
 
 // every integrator, in the order menus list them
-inline constexpr Integrator kIntegrators[] = {Integrator::SymplecticEuler, Integrator::ExplicitEuler};
+inline constexpr Integrator kIntegrators[] = {Integrator::SymplecticEuler, Integrator::ExplicitEuler,
+                                              Integrator::VelocityVerlet,  Integrator::Rk4,
+                                              Integrator::ImplicitEuler,   Integrator::AdaptiveRk45};
+
+// the order of accuracy of the global error (for adaptive-rk45: of the solution it keeps)
+int integratorOrder(Integrator integrator);
 
 std::string_view integratorName(Integrator integrator);
 std::optional<Integrator> integratorFromName(std::string_view name);

@@ -16,6 +16,7 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
     model->timeStep = s.timeStep;
     model->substeps = s.substeps;
     model->integrator = s.integrator;
+    model->tolerance = s.tolerance;
     model->gravity = s.gravity;
     model->viscosity = s.viscosity;
     model->restitution = s.restitution;

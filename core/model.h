@@ -27,6 +27,7 @@ struct Model {
     double timeStep = 0.01;  // s
     int substeps = 1;
     Integrator integrator = Integrator::SymplecticEuler;
+    double tolerance = 1e-6;  // adaptive-rk45's error target per step
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // m/s²
     double viscosity = 0.0;                             // kg/s
     double restitution = 1.0;

@@ -35,6 +35,8 @@ constexpr ParameterInfo kTable[] = {
      "A coordinate in space"},
     {Parameter::Speed, "velocity", "Velocity", "m/s", -1.0e9, 1.0e9, false, Scale::Linear, 0.0,
      "A velocity component"},
+    {Parameter::Tolerance, "tolerance", "Tolerance", "", 1e-12, 1.0, false, Scale::Log, 1e-6,
+     "Local error per step (m, m/s) the adaptive integrator keeps under"},
 };
 
 std::string formatValue(double value, std::string_view unit)

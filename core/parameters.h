@@ -22,7 +22,9 @@ enum class Parameter {
     RestLength,
     Coordinate,  // a position component or a plane offset
     Speed,       // a velocity component
+    Tolerance,   // adaptive-rk45's local error target
 };
+inline constexpr int kParameterCount = static_cast<int>(Parameter::Tolerance) + 1;
 
 enum class Scale { Linear, Log };
 

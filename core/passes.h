@@ -10,8 +10,19 @@ namespace core {
 void addGravity(const Model &model, State &state);               // gravity.cpp: m g
 void addDrag(const Model &model, State &state);                  // drag.cpp: -c v
 void addSprings(const Model &model, State &state);               // springs.cpp: damped springs
-void addApplied(const Model &model, State &state);               // step.cpp: forces from outside
-void integrate(const Model &model, State &state, double h);      // integrate.cpp
+void addApplied(const Model &model, State &state);               // forces.cpp: forces from outside
+void computeForces(const Model &model, State &state);            // forces.cpp: all of the above
+void accelerations(const Model &model, const State &state, Eigen::Matrix3Xd &out);  // forces.cpp: w F
+
+// advances the free particles by h with the model's integrator, which calls computeForces() as
+// often as its scheme needs (integrate.cpp, with rk4.cpp, implicit_euler.cpp, adaptive_rk45.cpp)
+void integrate(const Model &model, State &state, double h);
+void rk4(const Model &model, State &state, double h);
+void implicitEuler(const Model &model, State &state, double h);
+void adaptiveRk45(const Model &model, State &state, double h);
+
+// scratch arrays of the state's size, made on first use (a step allocates nothing after that)
+Eigen::Matrix3Xd &scratch(State &state, int index);
 void collidePlanes(const Model &model, State &state);            // plane_collisions.cpp
 void collideParticles(const Model &model, State &state);         // particle_collisions.cpp
 bool checkFinite(const Model &model, State &state);              // checks.cpp

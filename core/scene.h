@@ -14,6 +14,7 @@ struct Settings {
     double timeStep = 0.01;  // s, one step of the simulation clock
     int substeps = 1;        // each step is split into this many equal sub-steps
     Integrator integrator = Integrator::SymplecticEuler;
+    double tolerance = 1e-6;  // m and m/s, the local error per step adaptive-rk45 aims for
     Eigen::Vector3d gravity{0.0, -9.81, 0.0};  // m/s², y is up
     double viscosity = 0.0;                    // kg/s, drag force -c v on every particle
     double restitution = 1.0;                  // 1 elastic .. 0 fully inelastic, for every contact

@@ -51,6 +51,15 @@ struct State {
     double time = 0.0;       // s
     std::uint64_t step = 0;  // steps taken since the initial conditions
 
+    // work done, for cost estimates: force evaluations, and the adaptive and implicit schemes' own
+    std::uint64_t forceEvaluations = 0;
+    std::uint64_t rejectedSteps = 0;  // adaptive-rk45: trial steps thrown away
+    double adaptiveStep = 0.0;        // adaptive-rk45: the step size to try next, s (0: not yet chosen)
+    int solverIterations = 0;         // implicit-euler: conjugate-gradient iterations of the last solve
+
+    // scratch arrays of the integrators (state-sized, made on first use)
+    std::array<Eigen::Matrix3Xd, 18> scratchArrays;
+
     Profile profile;
     std::optional<Blowup> blowup;  // set once the run has blown up; stepping then stops
 };

@@ -1,37 +1,35 @@
 #include "step.h"
 
 #include "passes.h"
+#include "timed.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace core {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-// runs one pass and adds its wall time to the profile; a pass the plan skips is not counted
-template <typename Pass>
-void timed(State &state, Stage stage, bool planned, Pass &&pass)
+// seconds spent so far in the force passes
+double forceSeconds(const Profile &profile)
 {
-    if (!planned)
-        return;
-    const auto start = Clock::now();
-    pass();
-    StageTiming &timing = state.profile[stage];
+    return profile[Stage::Gravity].seconds + profile[Stage::Drag].seconds + profile[Stage::Springs].seconds +
+           profile[Stage::Applied].seconds;
+}
+
+// the integrator, timed without the force passes it calls (those are timed on their own)
+void integrateTimed(const Model &model, State &state, double h)
+{
+    const double forcesBefore = forceSeconds(state.profile);
+    const auto start = std::chrono::steady_clock::now();
+    integrate(model, state, h);
+    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    StageTiming &timing = state.profile[Stage::Integrate];
     timing.calls += 1;
-    timing.seconds += std::chrono::duration<double>(Clock::now() - start).count();
+    timing.seconds += std::max(0.0, total - (forceSeconds(state.profile) - forcesBefore));
 }
 
 }  // namespace
-
-// forces from outside the scene (steering keys, mouse spring), only while some are set
-void addApplied(const Model &, State &state)
-{
-    if (state.appliedCount == 0)
-        return;
-    state.force += state.applied;
-}
 
 bool step(const Model &model, State &state)
 {
@@ -41,15 +39,9 @@ bool step(const Model &model, State &state)
     const double h = model.subStep();
 
     for (int sub = 0; sub < model.substeps; ++sub) {
-        // 1. forces at (x, v)
-        state.force.setZero();
-        timed(state, Stage::Gravity, plan.gravity, [&] { addGravity(model, state); });
-        timed(state, Stage::Drag, plan.drag, [&] { addDrag(model, state); });
-        timed(state, Stage::Springs, plan.springs, [&] { addSprings(model, state); });
-        timed(state, Stage::Applied, state.appliedCount > 0, [&] { addApplied(model, state); });
-
-        // 2. integrate every free particle
-        timed(state, Stage::Integrate, true, [&] { integrate(model, state, h); });
+        // 1 and 2. forces at (x, v) and integration of every free particle: the integrator
+        // evaluates the forces as often as its scheme needs (once for the Euler schemes)
+        integrateTimed(model, state, h);
 
         // 3. contacts as projections: particles against planes, then pairs
         timed(state, Stage::PlaneCollisions, plan.planeCollisions, [&] { collidePlanes(model, state); });

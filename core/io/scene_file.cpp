@@ -247,6 +247,7 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
     if (!member(object, path, QLatin1String("timeStep"), Need::Optional, settings.timeStep) ||
         !member(object, path, QLatin1String("substeps"), Need::Optional, settings.substeps) ||
         !member(object, path, QLatin1String("integrator"), Need::Optional, integrator) ||
+        !member(object, path, QLatin1String("tolerance"), Need::Optional, settings.tolerance) ||
         !member(object, path, QLatin1String("gravity"), Need::Optional, settings.gravity) ||
         !member(object, path, QLatin1String("viscosity"), Need::Optional, settings.viscosity) ||
         !member(object, path, QLatin1String("restitution"), Need::Optional, settings.restitution) ||
@@ -263,7 +264,7 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
 
     warnUnknownKeys(object, path,
                     {QLatin1String("timeStep"), QLatin1String("substeps"), QLatin1String("integrator"),
-                     QLatin1String("gravity"), QLatin1String("viscosity"), QLatin1String("restitution"),
+                     QLatin1String("tolerance"), QLatin1String("gravity"), QLatin1String("viscosity"), QLatin1String("restitution"),
                      QLatin1String("planeCollisions"), QLatin1String("particleCollisions")});
     return true;
 }
@@ -576,6 +577,7 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
     out += "        \"substeps\": " + QByteArray::number(s.substeps) + ",\n";
     out += "        \"integrator\": ";
     appendString(out, integrator);
+    out += ",\n        \"tolerance\": " + formatNumber(s.tolerance);
     out += ",\n        \"gravity\": ";
     appendVector(out, s.gravity);
     out += ",\n        \"viscosity\": " + formatNumber(s.viscosity) + ",\n";

@@ -24,7 +24,7 @@ test::Sim oneParticle(core::Integrator integrator)
     scene.settings.integrator = integrator;
     scene.particles = {test::particle({1, 2, 3}, {1, 0, -1}, 2.0)};
     test::Sim sim = test::compile(scene);
-    sim.state.force.col(0) = Eigen::Vector3d(4, -2, 0);
+    core::setAppliedForce(sim.state, 0, Eigen::Vector3d(4, -2, 0));
     return sim;
 }
 

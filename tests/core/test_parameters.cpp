@@ -16,7 +16,7 @@ private slots:
 void TestParameters::tableIsCompleteAndOrdered()
 {
     const auto table = core::parameterTable();
-    QCOMPARE(int(table.size()), int(core::Parameter::Speed) + 1);
+    QCOMPARE(int(table.size()), core::kParameterCount);
     for (std::size_t i = 0; i < table.size(); ++i) {
         const core::ParameterInfo &info = table[i];
         QCOMPARE(int(info.parameter), int(i));

@@ -314,7 +314,7 @@ void TestSceneFile::badFile_data()
     QTest::newRow("unknown integrator") << QByteArray("\"symplectic-euler\"") << QByteArray("\"rk9\"")
                                         << QStringLiteral("settings.integrator")
                                         << QStringLiteral(
-                                               "unknown integrator \"rk9\" (known: symplectic-euler, explicit-euler)");
+                                               "unknown integrator \"rk9\" (known: symplectic-euler, explicit-euler, velocity-verlet, rk4, implicit-euler, adaptive-rk45)");
 
     // missing keys, vectors of the wrong length
     QTest::newRow("radius missing") << QByteArray("\"mass\": 2, \"radius\": 0.2}") << QByteArray("\"mass\": 2}")
@@ -646,7 +646,7 @@ void TestSceneFile::saveWritesEveryKey()
     const QByteArray json = io::sceneToJson(scene);
     for (const char *key :
          {"format",     "version",   "name",      "settings",    "timeStep",        "substeps",
-          "integrator", "gravity",   "viscosity", "restitution", "planeCollisions", "particleCollisions",
+          "integrator", "tolerance", "gravity",   "viscosity", "restitution", "planeCollisions", "particleCollisions",
           "particles",  "position",  "velocity",  "mass",        "radius",          "pinned",
           "springs",    "stiffness", "damping",   "restLength",  "planes",          "normal",
           "offset"})

@@ -1,0 +1,46 @@
+#include "error_estimate.h"
+
+#include "step.h"
+
+#include <cmath>
+
+namespace core {
+
+void StepDoubling::prepare(const std::shared_ptr<const Model> &model)
+{
+    if (m_source == model)
+        return;
+    m_source = model;
+    m_single = *model;
+    m_single.timeStep = model->subStep();
+    m_single.substeps = 1;
+    m_double = m_single;
+    m_double.substeps = 2;
+}
+
+// the parts of a state a step reads; assignment reuses the copies' memory once sized
+void StepDoubling::copyInto(const State &from, State &to) const
+{
+    to.position = from.position;
+    to.velocity = from.velocity;
+    to.applied = from.applied;
+    to.appliedCount = from.appliedCount;
+    to.adaptiveStep = from.adaptiveStep;
+    if (to.force.cols() != from.position.cols())
+        to.force.resize(3, from.position.cols());
+    to.blowup.reset();
+}
+
+std::optional<double> StepDoubling::estimate(const std::shared_ptr<const Model> &model, const State &state)
+{
+    prepare(model);
+    copyInto(state, m_one);
+    copyInto(state, m_two);
+    if (!step(m_single, m_one) || !step(m_double, m_two))
+        return std::nullopt;
+    const double difference = (m_one.position - m_two.position).cwiseAbs().maxCoeff();
+    const int order = integratorOrder(model->integrator);
+    return difference / (1.0 - std::pow(2.0, -order));
+}
+
+}  // namespace core

@@ -1,0 +1,32 @@
+#pragma once
+// Step doubling: the local error of one sub-step estimated by comparing one sub-step of h with
+// two of h/2 from the same state. For a scheme of order p the local error of the h step is
+// C h^(p+1) and the two half steps leave 1/2^p of it, so the difference is (1 - 2^-p) of the
+// error. The estimate runs on copies: the state being simulated is not touched.
+
+#include "model.h"
+#include "state.h"
+
+#include <memory>
+#include <optional>
+
+namespace core {
+
+class StepDoubling {
+public:
+    // the estimated local position error of one sub-step (m, the largest component), or nullopt
+    // if either trial blew up
+    std::optional<double> estimate(const std::shared_ptr<const Model> &model, const State &state);
+
+private:
+    void prepare(const std::shared_ptr<const Model> &model);
+    void copyInto(const State &from, State &to) const;
+
+    std::shared_ptr<const Model> m_source;  // the model m_single and m_double were made from
+    Model m_single;                          // one step of h
+    Model m_double;                          // two steps of h/2
+    State m_one;
+    State m_two;
+};
+
+}  // namespace core
