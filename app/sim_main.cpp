@@ -10,6 +10,7 @@
 #include "core/io/scene_file.h"
 #include "core/model.h"
 #include "core/state.h"
+#include "core/stability.h"
 #include "core/step.h"
 
 #include <QCoreApplication>
@@ -42,17 +43,6 @@ QString energyRow(const char *label, const core::Energies &e)
 {
     return QString::asprintf("    %-9s %-14.6g %-14.6g %-14.6g %.6g\n", label, e.kinetic, e.gravitational, e.spring,
                              e.total());
-}
-
-// what stopped the run, where and when, and what to try
-QString blowupMessage(const core::Blowup &blowup)
-{
-    const char *quantity = blowup.quantity == core::Blowup::Quantity::Velocity ? "velocity" : "position";
-    return QString::asprintf("the simulation blew up in step %llu (t = %.9g s): the %s of particle %d reached %g "
-                             "(the limit is %g)\n  hint: try a smaller time step (--time-step) or more substeps "
-                             "(--substeps)",
-                             static_cast<unsigned long long>(blowup.step), blowup.time, quantity, blowup.particle,
-                             blowup.value, core::kBlowupBound);
 }
 
 }  // namespace
@@ -104,6 +94,7 @@ int main(int argc, char *argv[])
 
     // the run, in chunks between trace rows (every K steps, not the last step unless K divides it);
     // only stepping is timed
+    const core::State initial = state;  // to explain a blow-up, should one happen
     QElapsedTimer timer;
     qint64 nanoseconds = 0;
     bool blewUp = false;
@@ -160,7 +151,9 @@ int main(int argc, char *argv[])
 
     // what went wrong, if it did
     if (blewUp)
-        QTextStream(stderr) << "springlab-sim: " << blowupMessage(*state.blowup)
+        QTextStream(stderr) << "springlab-sim: "
+                            << QString::fromStdString(core::explainBlowup(*model, *state.blowup,
+                                                                          core::stabilityLimit(*model, initial)))
                             << (options.outputPath.isEmpty() ? "" : "\n  (no --output written)") << '\n';
     return blewUp ? kExitBlewUp : kExitOk;
 }

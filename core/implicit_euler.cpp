@@ -9,9 +9,8 @@
 // and conjugate gradients converge. Pinned particles are handled exactly: their rows are the
 // identity with a zero right-hand side, so their Δv is 0.
 #include "passes.h"
+#include "spring_jacobian.h"
 
-#include <algorithm>
-#include <cmath>
 
 namespace core {
 
@@ -19,42 +18,6 @@ namespace {
 
 constexpr double kRelativeResidual = 1e-10;  // CG stops when ‖r‖ ≤ this × ‖b‖
 constexpr int kMaxIterations = 1000;
-
-// one spring's linearisation at the current positions
-struct SpringFrame {
-    Eigen::Vector3d u;  // unit direction from b to a
-    double transverse;  // max(0, 1 - l0/l): the stiffness across the spring, per k
-};
-
-SpringFrame springFrame(const Model &model, const State &state, int k)
-{
-    const int a = model.springA[static_cast<std::size_t>(k)];
-    const int b = model.springB[static_cast<std::size_t>(k)];
-    const Eigen::Vector3d d = state.position.col(a) - state.position.col(b);
-    const double length = d.norm();
-    if (length == 0.0)
-        return {Eigen::Vector3d::UnitY(), 0.0};
-    return {d / length, std::max(0.0, 1.0 - model.restLength[k] / length)};
-}
-
-// out = -(∂f/∂x) y over the springs (positive semi-definite with the clamp), scaled by `scale`,
-// plus -(∂f/∂v) y over the dampers scaled by `dampScale`
-void addSpringJacobians(const Model &model, const State &state, const Eigen::Matrix3Xd &y, double scale,
-                        double dampScale, Eigen::Matrix3Xd &out)
-{
-    for (int k = 0; k < model.springCount(); ++k) {
-        const int a = model.springA[static_cast<std::size_t>(k)];
-        const int b = model.springB[static_cast<std::size_t>(k)];
-        const SpringFrame frame = springFrame(model, state, k);
-        const Eigen::Vector3d dy = y.col(a) - y.col(b);
-        const double along = frame.u.dot(dy);
-        const Eigen::Vector3d alongPart = along * frame.u;
-        const Eigen::Vector3d t = (scale * model.stiffness[k]) * (frame.transverse * (dy - alongPart) + alongPart) +
-                                  (dampScale * model.damping[k]) * alongPart;
-        out.col(a) += t;
-        out.col(b) -= t;
-    }
-}
 
 // the system matrix times y: M y + h c y + h kc (u uᵀ) y + h² K y, with pinned rows the identity
 void applySystem(const Model &model, const State &state, double h, const Eigen::Matrix3Xd &y, Eigen::Matrix3Xd &out)

@@ -39,6 +39,10 @@ struct ParameterInfo {
     Scale scale;             // how a slider maps onto the range
     double defaultValue;
     std::string_view tooltip;
+    // the part of the range a slider spans: a gravity of ±1e4 m/s² is safe, but a slider over it
+    // could not set 9.81 (the spin box beside it still takes the whole range)
+    double sliderMinimum;
+    double sliderMaximum;
 };
 
 std::span<const ParameterInfo> parameterTable();

@@ -186,8 +186,8 @@ void TestSimCli::exitCodes_data()
     QTest::newRow("blows up") << QStringList{u"@/boom.json"_s, u"--steps"_s, u"100"_s, u"--output"_s,
                                              u"@/boom-out.json"_s}
                               << 3
-                              << QStringList{u"blew up in step"_s, u"particle 1"_s,
-                                             u"try a smaller time step (--time-step) or more substeps (--substeps)"_s};
+                              << QStringList{u"Particle 1's velocity became"_s, u"(step "_s,
+                                             u"the stability limit"_s, u"substeps or the implicit-euler integrator"_s};
 }
 
 void TestSimCli::exitCodes()

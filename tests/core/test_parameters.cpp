@@ -21,6 +21,9 @@ void TestParameters::tableIsCompleteAndOrdered()
         const core::ParameterInfo &info = table[i];
         QCOMPARE(int(info.parameter), int(i));
         QVERIFY(info.minimum < info.maximum);
+        // a slider spans part of the safe range, never beyond it
+        QVERIFY(info.sliderMinimum < info.sliderMaximum);
+        QVERIFY(info.sliderMinimum >= info.minimum && info.sliderMaximum <= info.maximum);
         QVERIFY(!info.key.empty() && !info.label.empty() && !info.tooltip.empty());
         QVERIFY2(!core::checkParameter(info.parameter, info.defaultValue), info.key.data());
         if (info.scale == core::Scale::Log)  // a log slider needs a positive lower end to map from

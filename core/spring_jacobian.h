@@ -1,0 +1,17 @@
+#pragma once
+// Products with the springs' linearisation, without building a matrix: used by the implicit
+// integrator's solve and by the stability analysis.
+
+#include "model.h"
+#include "state.h"
+
+namespace core {
+
+// out += stiffnessScale · (-∂f/∂x) y + dampingScale · (-∂f/∂v) y over every spring. A spring's
+// stiffness Jacobian is -k [(1 - l0/l)(I - u uᵀ) + u uᵀ], its damper's -kc u uᵀ; the transverse
+// factor is clamped at 0 for a compressed spring, which keeps both products positive
+// semi-definite (a compressed spring's sideways instability is buckling, a physical one)
+void addSpringJacobians(const Model &model, const State &state, const Eigen::Matrix3Xd &y, double stiffnessScale,
+                        double dampingScale, Eigen::Matrix3Xd &out);
+
+}  // namespace core

@@ -1,0 +1,141 @@
+#include "stability.h"
+
+#include "spring_jacobian.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace core {
+
+namespace {
+
+constexpr int kIterations = 300;
+constexpr double kSettled = 1e-6;  // relative change of the Rayleigh quotient that counts as settled
+
+// S y = M^-½ K M^-½ y, with pinned particles (inverse mass 0) left out
+void applyScaled(const Model &model, const State &state, const Eigen::VectorXd &rootInvMass,
+                 const Eigen::Matrix3Xd &y, Eigen::Matrix3Xd &scaled, Eigen::Matrix3Xd &out, bool damping)
+{
+    scaled.noalias() = y * rootInvMass.asDiagonal();
+    out.setZero();
+    addSpringJacobians(model, state, scaled, damping ? 0.0 : 1.0, damping ? 1.0 : 0.0, out);
+    if (damping)
+        out += model.viscosity * scaled;
+    out = out * rootInvMass.asDiagonal();
+}
+
+std::string format(double value)
+{
+    std::ostringstream out;
+    out.precision(2);
+    out << value;
+    return out.str();
+}
+
+}  // namespace
+
+double StabilityLimit::maxSubStep(Integrator integrator) const
+{
+    const double infinity = std::numeric_limits<double>::infinity();
+    if (omegaMax <= 0.0)
+        return infinity;
+    switch (integrator) {
+    case Integrator::SymplecticEuler:
+    case Integrator::VelocityVerlet:
+        return (std::sqrt(dampingRate * dampingRate + 4.0 * omegaMax * omegaMax) - dampingRate) /
+               (omegaMax * omegaMax);
+    case Integrator::Rk4: return 2.0 * std::sqrt(2.0) / omegaMax;
+    case Integrator::ExplicitEuler:
+        // stable only while damping outweighs the growth: h < 2γ/ω² (γ ≤ ω)
+        return 2.0 * dampingRate / (omegaMax * omegaMax);
+    case Integrator::ImplicitEuler:
+    case Integrator::AdaptiveRk45: return infinity;
+    }
+    return infinity;
+}
+
+StabilityLimit stabilityLimit(const Model &model, const State &state)
+{
+    StabilityLimit limit;
+    const int n = model.particleCount();
+    if (model.springCount() == 0 || model.freeParticles.empty())
+        return limit;
+    const Eigen::VectorXd rootInvMass = model.invMass.cwiseSqrt();
+
+    // Gershgorin on the 3×3 blocks: λ ≤ max_i Σ_springs k (w_i + √(w_i w_j))
+    Eigen::VectorXd rows = Eigen::VectorXd::Zero(n);
+    for (int k = 0; k < model.springCount(); ++k) {
+        const int a = model.springA[static_cast<std::size_t>(k)];
+        const int b = model.springB[static_cast<std::size_t>(k)];
+        const double cross = rootInvMass[a] * rootInvMass[b];
+        rows[a] += model.stiffness[k] * (model.invMass[a] + cross);
+        rows[b] += model.stiffness[k] * (model.invMass[b] + cross);
+    }
+    limit.gershgorinOmega = std::sqrt(rows.maxCoeff());
+
+    // power iteration from a fixed, mixed start vector (deterministic)
+    Eigen::Matrix3Xd y(3, n), scaled(3, n), next(3, n);
+    std::uint32_t seed = 12345u;
+    for (int i = 0; i < n; ++i)
+        for (int axis = 0; axis < 3; ++axis) {
+            seed = seed * 1664525u + 1013904223u;
+            y(axis, i) = model.invMass[i] > 0.0 ? static_cast<double>(seed >> 8) / double(1u << 24) - 0.5 : 0.0;
+        }
+    y.normalize();
+    double lambda = 0.0;
+    for (int iteration = 0; iteration < kIterations; ++iteration) {
+        applyScaled(model, state, rootInvMass, y, scaled, next, false);
+        const double rayleigh = y.cwiseProduct(next).sum();
+        const double norm = next.norm();
+        if (!(norm > 0.0))
+            break;
+        y = next / norm;
+        if (iteration > 10 && std::abs(rayleigh - lambda) <= kSettled * rayleigh) {
+            lambda = rayleigh;
+            limit.converged = true;
+            break;
+        }
+        lambda = rayleigh;
+    }
+    limit.omegaMax = limit.converged ? std::sqrt(std::max(lambda, 0.0)) : limit.gershgorinOmega;
+
+    // the damping rate of that mode: its Rayleigh quotient of M^-½ C M^-½
+    applyScaled(model, state, rootInvMass, y, scaled, next, true);
+    limit.dampingRate = std::max(0.0, y.cwiseProduct(next).sum());
+    return limit;
+}
+
+std::string explainBlowup(const Model &model, const Blowup &blowup, const StabilityLimit &limit)
+{
+    std::ostringstream out;
+    out << "Particle " << blowup.particle << "'s "
+        << (blowup.quantity == Blowup::Quantity::Velocity ? "velocity" : "position") << " became "
+        << (std::isfinite(blowup.value) ? "too large (" + format(blowup.value) + ")" : std::string("infinite"))
+        << " at t = " << format(blowup.time) << " s (step " << blowup.step << ").";
+
+    // the reason, when the step is past the explicit limit
+    const double h = model.subStep();
+    const double maxStep = limit.maxSubStep(model.integrator);
+    const std::string name(integratorName(model.integrator));
+    if (maxStep < h) {
+        const double stiffest = model.springCount() > 0 ? model.stiffness.maxCoeff() : 0.0;
+        if (maxStep > 0.0) {
+            const int substeps = static_cast<int>(std::ceil(model.timeStep / (0.9 * maxStep)));
+            out << " The time step " << format(h) << " s is " << format(h / maxStep) << "× the stability limit "
+                << format(maxStep) << " s for stiffness " << format(stiffest) << " N/m with " << name
+                << ": use ≥ " << substeps << " substeps or the implicit-euler integrator.";
+        } else {
+            out << " " << name << " is unstable at any step on undamped springs (stiffness up to "
+                << format(stiffest) << " N/m): use symplectic-euler or implicit-euler.";
+        }
+    } else {
+        out << " The time step " << format(h) << " s is within the springs' stability limit; a contact or an "
+            << "applied force may have been too violent: try more substeps, a smaller time step, or "
+            << "the implicit-euler integrator.";
+    }
+    return out.str();
+}
+
+}  // namespace core

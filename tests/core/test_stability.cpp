@@ -1,0 +1,155 @@
+// The stability limit: exact on a single oscillator, matched by experiment on chains, and the
+// blow-up message names what failed, where, why and the fix.
+#include "core/diagnostics.h"
+#include "core/generators.h"
+#include "core/reference.h"
+#include "core/stability.h"
+#include "core/step.h"
+#include "scene_builder.h"
+
+#include <QtTest>
+
+class TestStability : public QObject {
+    Q_OBJECT
+
+private slots:
+    void singleOscillatorIsExact();
+    void dampingNarrowsTheLimit();
+    void measuredLimitMatchesTheory_data();
+    void measuredLimitMatchesTheory();
+    void implicitAndAdaptiveHaveNoLimit();
+    void blowupMessage();
+};
+
+namespace {
+
+// a straight chain of `nodes` particles along x, pinned at the first, at rest length, with small
+// seeded random velocities to excite every mode; no gravity, no contacts
+core::SceneDesc chain(int nodes)
+{
+    core::ChainOptions options;
+    options.links = nodes - 1;
+    core::SceneDesc scene = core::makeChain(options);
+    scene.settings.gravity = Eigen::Vector3d::Zero();
+    scene.settings.planeCollisions = scene.settings.particleCollisions = false;
+    for (auto &spring : scene.springs)
+        spring.damping = 0.0;
+    std::uint32_t seed = 7u;
+    for (std::size_t i = 1; i < scene.particles.size(); ++i)
+        for (int axis = 0; axis < 3; ++axis) {
+            seed = seed * 1664525u + 1013904223u;
+            scene.particles[i].velocity[axis] = 1e-3 * (static_cast<double>(seed >> 8) / double(1u << 24) - 0.5);
+        }
+    return scene;
+}
+
+// stable: the energy stays under 10× its start for `steps` steps
+bool stableAt(core::SceneDesc scene, double h, int steps)
+{
+    scene.settings.timeStep = h;
+    test::Sim sim = test::compile(scene);
+    const double start = core::energies(*sim.model, sim.state).total();
+    for (int i = 0; i < steps; ++i)
+        if (!core::step(*sim.model, sim.state) || core::energies(*sim.model, sim.state).total() > 10.0 * start)
+            return false;
+    return true;
+}
+
+}  // namespace
+
+void TestStability::singleOscillatorIsExact()
+{
+    core::OscillatorOptions options;
+    options.damping = 0.0;
+    options.displacement = 0.0;  // at rest length: the linearisation is the spring itself
+    const core::SceneDesc scene = core::makeOscillator(options);
+    test::Sim sim = test::compile(scene);
+    const core::StabilityLimit limit = core::stabilityLimit(*sim.model, sim.state);
+    QVERIFY(limit.converged);
+    QVERIFY(std::abs(limit.omegaMax - 10.0) < 1e-9);
+    QVERIFY(limit.gershgorinOmega >= limit.omegaMax);
+    QVERIFY(std::abs(limit.maxSubStep(core::Integrator::SymplecticEuler) - 0.2) < 1e-10);
+    QVERIFY(std::abs(limit.maxSubStep(core::Integrator::Rk4) - 0.2 * std::sqrt(2.0)) < 1e-10);
+}
+
+void TestStability::dampingNarrowsTheLimit()
+{
+    core::OscillatorOptions options;
+    options.damping = 4.0;  // γ = kc/m = 4 1/s
+    options.displacement = 0.0;
+    test::Sim sim = test::compile(core::makeOscillator(options));
+    const core::StabilityLimit limit = core::stabilityLimit(*sim.model, sim.state);
+    QVERIFY(std::abs(limit.dampingRate - 4.0) < 1e-9);
+    // (√(γ² + 4ω²) - γ)/ω² = (√(16 + 400) - 4)/100
+    const double expected = (std::sqrt(416.0) - 4.0) / 100.0;
+    QVERIFY(std::abs(limit.maxSubStep(core::Integrator::SymplecticEuler) - expected) < 1e-10);
+    QVERIFY(expected < 0.2);
+    // explicit Euler: stable only while damping wins, h < 2γ/ω² = 0.08 s
+    QVERIFY(std::abs(limit.maxSubStep(core::Integrator::ExplicitEuler) - 0.08) < 1e-10);
+}
+
+void TestStability::measuredLimitMatchesTheory_data()
+{
+    QTest::addColumn<int>("nodes");
+    QTest::newRow("2 nodes") << 2;
+    QTest::newRow("10 nodes") << 10;
+    QTest::newRow("100 nodes") << 100;
+}
+
+void TestStability::measuredLimitMatchesTheory()
+{
+    QFETCH(int, nodes);
+    const core::SceneDesc scene = chain(nodes);
+    test::Sim sim = test::compile(scene);
+    const double theory = core::stabilityLimit(*sim.model, sim.state).maxSubStep(core::Integrator::SymplecticEuler);
+
+    // bisection between a stable and an unstable step
+    double stable = 0.5 * theory, unstable = 2.0 * theory;
+    QVERIFY(stableAt(scene, stable, 4000));
+    QVERIFY(!stableAt(scene, unstable, 4000));
+    for (int i = 0; i < 14; ++i) {
+        const double middle = 0.5 * (stable + unstable);
+        (stableAt(scene, middle, 4000) ? stable : unstable) = middle;
+    }
+    const double ratio = stable / theory;
+    QVERIFY2(ratio >= 0.95 && ratio <= 1.0, qPrintable(QString("measured %1 s, theory %2 s, ratio %3")
+                                                            .arg(stable).arg(theory).arg(ratio)));
+}
+
+void TestStability::implicitAndAdaptiveHaveNoLimit()
+{
+    test::Sim sim = test::compile(chain(5));
+    const core::StabilityLimit limit = core::stabilityLimit(*sim.model, sim.state);
+    QVERIFY(std::isinf(limit.maxSubStep(core::Integrator::ImplicitEuler)));
+    QVERIFY(std::isinf(limit.maxSubStep(core::Integrator::AdaptiveRk45)));
+    QCOMPARE(limit.maxSubStep(core::Integrator::ExplicitEuler), 0.0);  // undamped
+    // and a scene without springs has nothing to limit
+    test::Sim empty = test::compile(test::quietScene());
+    QVERIFY(std::isinf(core::stabilityLimit(*empty.model, empty.state).maxSubStep(core::Integrator::SymplecticEuler)));
+}
+
+void TestStability::blowupMessage()
+{
+    // k = 1e5 N/m, m = 1 kg: ω = 316 rad/s, limit 2/ω = 6.3 ms; h = 0.02 s is 3.2× that
+    core::OscillatorOptions options;
+    options.stiffness = 1e5;
+    options.damping = 0.0;
+    core::SceneDesc scene = core::makeOscillator(options);
+    scene.settings.timeStep = 0.02;
+    test::Sim sim = test::compile(scene);
+    const core::State start = sim.state;
+    while (core::step(*sim.model, sim.state)) {
+    }
+    QVERIFY(sim.state.blowup.has_value());
+    const std::string message =
+        core::explainBlowup(*sim.model, *sim.state.blowup, core::stabilityLimit(*sim.model, start));
+    const QString text = QString::fromStdString(message);
+    QVERIFY2(text.startsWith("Particle 1's velocity became"), message.c_str());
+    QVERIFY2(text.contains(QString("(step %1)").arg(sim.state.blowup->step)), message.c_str());
+    QVERIFY2(text.contains("The time step 0.02 s is 3.2× the stability limit 0.0063 s"), message.c_str());
+    QVERIFY2(text.contains("stiffness 1e+05 N/m with symplectic-euler"), message.c_str());
+    QVERIFY2(text.contains("use ≥ 4 substeps or the implicit-euler integrator"), message.c_str());
+}
+
+QTEST_APPLESS_MAIN(TestStability)
+#include "test_stability.moc"
