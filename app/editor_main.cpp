@@ -1,0 +1,53 @@
+// springlab: the editor. `springlab [SCENE.json]` opens the scene, or the springs example without
+// one; a file that cannot be opened is reported and the editor opens on the example instead.
+
+#include "ui/main_window.h"
+#include "ui/viewport.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QMessageBox>
+#include <QSurfaceFormat>
+#include <cstdio>
+
+int main(int argc, char *argv[])
+{
+    // OpenGL settings must be in place before the application exists
+    QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
+    QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+
+    QApplication app(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("Springlab"));
+    QCoreApplication::setApplicationName(QStringLiteral("Springlab"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(SPRINGLAB_VERSION));
+
+    // the command line: an optional scene file
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Editor for particle and mass-spring physics."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("scene"),
+                                 QStringLiteral("Scene file to open (default: the springs example)."),
+                                 QStringLiteral("[SCENE.json]"));
+    parser.process(app);
+    const QStringList arguments = parser.positionalArguments();
+    if (arguments.size() > 1) {
+        std::fprintf(stderr, "springlab: expected at most one scene file, got %d\n", int(arguments.size()));
+        return 2;
+    }
+
+    ui::MainWindow window;
+    window.show();
+
+    // a scene that cannot be opened is reported; the example stays open
+    if (!arguments.isEmpty()) {
+        QString error;
+        if (!window.openScene(arguments.front(), &error)) {
+            std::fprintf(stderr, "springlab: %s\n", qPrintable(error));
+            QMessageBox::warning(&window, QStringLiteral("Springlab"),
+                                 QStringLiteral("Could not open the scene:\n%1\n\nThe springs example is open instead.")
+                                     .arg(error));
+        }
+    }
+    return app.exec();
+}

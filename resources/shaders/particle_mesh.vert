@@ -1,0 +1,27 @@
+#version 330 core
+// Mesh spheres: one unit sphere, instanced, moved and scaled per particle.
+
+layout(location = 0) in vec3 vertex;  // on the unit sphere, so also its normal
+layout(location = 1) in vec3 centre;  // per particle, world, m
+layout(location = 2) in float radius; // per particle, m
+layout(location = 3) in vec3 colour;
+layout(location = 4) in vec2 marks;   // pinned, selected
+
+uniform mat4 view;
+uniform mat4 projection;
+
+out vec3 vNormal;  // view space
+flat out vec3 vTowardEye;
+flat out vec3 vColour;
+flat out vec2 vMarks;
+
+void main()
+{
+    // the view has no scale, so its rotation turns normals as it turns points
+    vec3 c = (view * vec4(centre, 1.0)).xyz;
+    vNormal = mat3(view) * vertex;
+    vTowardEye = normalize(-c);
+    vColour = colour;
+    vMarks = marks;
+    gl_Position = projection * vec4(c + vNormal * radius, 1.0);
+}

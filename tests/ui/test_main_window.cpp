@@ -1,0 +1,488 @@
+// The editor's main window with real widgets and real key events, under a virtual X server: it
+// opens on the springs example and draws it, F4 plays and pauses, F5 resets, the parameters dock
+// edits the running simulation (and refuses what is out of range), the arrow keys steer the pool's
+// ball, T tilts from a seed, A switches collisions, F2 saves a screenshot, F1 lists the keys, and
+// closing while running ends the worker thread. Waits are on frames, never fixed sleeps.
+
+#include "ui/help_dialog.h"
+#include "ui/main_window.h"
+#include "ui/parameter_row.h"
+#include "ui/parameters_panel.h"
+#include "ui/scene_document.h"
+#include "ui/simulation_controller.h"
+#include "ui/value_spin_box.h"
+#include "ui/viewport.h"
+
+#include <QCheckBox>
+#include <QDockWidget>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QThread>
+#include <QTimer>
+#include <QUndoStack>
+#include <QtTest>
+
+namespace {
+
+// the newest frame once the worker has applied edit `sequence`, or null after 10 s
+std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::SimulationController &controller,
+                                                      std::uint64_t sequence)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < 10000) {
+        const auto frame = controller.frame();
+        if (frame && frame->appliedEdit >= sequence)
+            return frame;
+        QTest::qWait(5);
+    }
+    return nullptr;
+}
+
+// the frame after every edit made so far
+std::shared_ptr<const ui::SimulationFrame> settledFrame(ui::SimulationController &controller)
+{
+    return frameAfter(controller, controller.sync());
+}
+
+// how far apart two colours are, per channel
+int colourDistance(QRgb a, QRgb b)
+{
+    return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)), std::abs(qBlue(a) - qBlue(b))});
+}
+
+}  // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+public:
+    // OpenGL settings before the QApplication exists
+    static void initMain()
+    {
+        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
+        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    }
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void opensOnTheSpringsExampleAndDrawsIt();
+    void f4PlaysAndPauses();
+    void f5RestoresTheInitialState();
+    void statusBarShowsTheRun();
+    void sliderChangesTheStiffnessTheWorkerUses();
+    void outOfRangeValueNeverReachesTheWorker();
+    void undoReachesTheWorkerToo();
+    void blowupPausesAndShowsInTheStatusBar();
+    void arrowKeysSteerThePoolBall();
+    void tiltIsTheSameForTheSameSeed();
+    void aSwitchesCollisions();
+    void f2SavesAScreenshot();
+    void f1ListsEveryShortcut();
+    void saveWritesTheEditedScene();
+    void badFileLeavesTheSceneOpen();
+    void examplesAreAllListed();
+    void closingWhileRunningEndsTheWorker();
+    void geometryIsRemembered();
+
+private:
+    ui::SimulationController &controller() { return *m_window->controller(); }
+    void press(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
+    {
+        QTest::keyClick(m_window, key, modifiers);
+    }
+
+    QTemporaryDir m_settings;
+    QTemporaryDir m_files;
+    ui::MainWindow *m_window = nullptr;
+};
+
+void TestMainWindow::initTestCase()
+{
+    // settings go to a throwaway folder, never the user's
+    QVERIFY(m_settings.isValid() && m_files.isValid());
+    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("test_main_window"));
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+}
+
+void TestMainWindow::init()
+{
+    // shortcuts need an active window; with no window manager, ask for it
+    m_window = new ui::MainWindow;
+    m_window->show();
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window));
+    QVERIFY(settledFrame(controller()));
+}
+
+void TestMainWindow::cleanup()
+{
+    delete m_window;
+    m_window = nullptr;
+}
+
+void TestMainWindow::opensOnTheSpringsExampleAndDrawsIt()
+{
+    QVERIFY(m_window->windowTitle().startsWith(QStringLiteral("springs")));
+    QVERIFY(!m_window->isWindowModified());
+    const auto frame = settledFrame(controller());
+    QCOMPARE(frame->snapshot->particleCount(), int(m_window->document()->scene().particles.size()));
+    QVERIFY(frame->snapshot->particleCount() > 0);
+
+    // the viewport has the frame, and draws something other than background where a free
+    // particle projects
+    ui::Viewport *viewport = m_window->viewport();
+    QTRY_VERIFY(viewport->snapshot() == frame->snapshot);
+    const QImage image = viewport->grabFramebuffer();
+    QVERIFY(!image.isNull());
+    const double scale = double(image.width()) / viewport->width();
+    const core::SceneDesc &scene = m_window->document()->scene();
+    const std::size_t middle = scene.particles.size() / 2;
+    QVERIFY(!scene.particles[middle].pinned);
+    const Eigen::Vector3d at = scene.particles[middle].position;
+    const std::optional<QPointF> pixel = viewport->camera().project(QVector3D(float(at.x()), float(at.y()), float(at.z())));
+    QVERIFY(pixel.has_value());
+    const QPoint centre = (*pixel * scale).toPoint();
+    QVERIFY(image.rect().contains(centre));
+    const QRgb background = image.pixel(2, 2);
+    int differing = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            differing += colourDistance(image.pixel(centre + QPoint(dx, dy)), background) > 24 ? 1 : 0;
+    QVERIFY2(differing >= 5, qPrintable(QStringLiteral("particle at (%1, %2) looks like background")
+                                            .arg(centre.x())
+                                            .arg(centre.y())));
+}
+
+void TestMainWindow::f4PlaysAndPauses()
+{
+    press(Qt::Key_F4);
+    QVERIFY(controller().isRunning());
+    QTRY_VERIFY(controller().frame()->snapshot->time > 0.05);
+
+    // F4 again: the time stays where it stopped across two later ticks
+    press(Qt::Key_F4);
+    QVERIFY(!controller().isRunning());
+    const auto paused = settledFrame(controller());
+    QVERIFY(!paused->running);
+    const auto later = settledFrame(controller());
+    const auto evenLater = settledFrame(controller());
+    QCOMPARE(later->snapshot->time, paused->snapshot->time);
+    QCOMPARE(evenLater->snapshot->time, paused->snapshot->time);
+    QVERIFY(paused->snapshot->time > 0.05);
+}
+
+void TestMainWindow::f5RestoresTheInitialState()
+{
+    press(Qt::Key_F4);
+    QTRY_VERIFY(controller().frame()->snapshot->time > 0.05);
+    press(Qt::Key_F4);
+    press(Qt::Key_F5);
+
+    // every position as the scene file gives it, bit for bit as a float
+    const auto frame = settledFrame(controller());
+    QCOMPARE(frame->snapshot->time, 0.0);
+    QCOMPARE(frame->snapshot->step, 0u);
+    const core::SceneDesc &scene = m_window->document()->scene();
+    for (std::size_t i = 0; i < scene.particles.size(); ++i)
+        for (std::size_t axis = 0; axis < 3; ++axis)
+            QCOMPARE(frame->snapshot->positions[3 * i + axis], float(scene.particles[i].position[Eigen::Index(axis)]));
+}
+
+void TestMainWindow::statusBarShowsTheRun()
+{
+    QCOMPARE(m_window->statusRate(), QStringLiteral("paused"));
+    press(Qt::Key_F4);
+    QTRY_VERIFY(m_window->statusRate().startsWith(QStringLiteral("×")) && m_window->statusRate().size() > 2);
+    QTRY_VERIFY(m_window->statusTime() != QStringLiteral("t = 0.000 s"));
+    QVERIFY(m_window->statusTime().endsWith(QStringLiteral(" s")));
+}
+
+void TestMainWindow::sliderChangesTheStiffnessTheWorkerUses()
+{
+    // while running, a move of the real slider reaches the worker's model
+    press(Qt::Key_F4);
+    QTRY_VERIFY(controller().frame()->snapshot->step > 0);
+    ui::ParameterRow *row = m_window->parametersPanel()->row(QStringLiteral("stiffness"));
+    const ui::SliderScale scale = ui::sliderScale(core::parameterInfo(core::Parameter::Stiffness));
+    row->slider()->setValue(scale.positionOf(500.0));
+    const double expected = scale.valueAt(row->slider()->value());
+    QVERIFY(expected != 4000.0);
+
+    const auto frame = settledFrame(controller());
+    QVERIFY(frame->running);
+    for (Eigen::Index k = 0; k < frame->model->stiffness.size(); ++k)
+        QCOMPARE(frame->model->stiffness[k], expected);
+    QVERIFY(m_window->isWindowModified());
+}
+
+void TestMainWindow::outOfRangeValueNeverReachesTheWorker()
+{
+    ui::ParameterRow *row = m_window->parametersPanel()->row(QStringLiteral("stiffness"));
+    const double before = row->value();
+    row->spinBox()->setFocus();
+    row->spinBox()->selectAll();
+    QTest::keyClicks(row->spinBox(), QStringLiteral("5e9"));
+    QTest::keyClick(row->spinBox(), Qt::Key_Return);
+
+    // refused with a message, in the panel and the status bar; the worker keeps the old value
+    QVERIFY(m_window->parametersPanel()->message().contains(QStringLiteral("at most")));
+    QCOMPARE(m_window->statusWarning(), m_window->parametersPanel()->message());
+    const auto frame = settledFrame(controller());
+    QCOMPARE(frame->model->stiffness[0], before);
+    QCOMPARE(m_window->document()->scene().springs.front().stiffness, before);
+    QVERIFY(!m_window->isWindowModified());
+}
+
+void TestMainWindow::undoReachesTheWorkerToo()
+{
+    ui::ParameterRow *row = m_window->parametersPanel()->row(QStringLiteral("gravity.y"));
+    row->slider()->setValue(0);
+    QCOMPARE(settledFrame(controller())->model->gravity.y(), -20.0);
+    press(Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(settledFrame(controller())->model->gravity.y(), -9.81);
+    QCOMPARE(row->value(), -9.81);
+    QVERIFY(!m_window->isWindowModified());
+}
+
+void TestMainWindow::blowupPausesAndShowsInTheStatusBar()
+{
+    // springs far too stiff for the time step
+    core::SceneDesc scene = m_window->document()->scene();
+    scene.settings.timeStep = 0.1;
+    for (core::SpringDesc &spring : scene.springs)
+        spring.stiffness = 1e9;
+    m_window->document()->replace(scene, QString());
+    QSignalSpy blewUp(&controller(), &ui::SimulationController::blewUp);
+    press(Qt::Key_F4);
+    QVERIFY(blewUp.wait(10000));
+
+    // paused at the last good state, and the status bar says who and when
+    QVERIFY(!controller().isRunning());
+    QVERIFY2(m_window->statusWarning().contains(QStringLiteral("Blew up: particle ")),
+             qPrintable(m_window->statusWarning()));
+    QVERIFY(m_window->statusWarning().contains(QStringLiteral("at step ")));
+    const auto frame = settledFrame(controller());
+    QVERIFY(!frame->running);
+    QCOMPARE(m_window->statusRate(), QStringLiteral("paused"));
+    for (float x : frame->snapshot->positions)
+        QVERIFY(std::isfinite(x));
+}
+
+void TestMainWindow::arrowKeysSteerThePoolBall()
+{
+    QString error;
+    QVERIFY2(m_window->openExample(QStringLiteral("pool"), &error), qPrintable(error));
+    const core::SceneDesc &scene = m_window->document()->scene();
+    QVERIFY2(scene.steerable >= 0, "the pool example names no steerable particle");
+    const auto ball = std::size_t(scene.steerable);
+    const double mass = scene.particles[ball].mass;
+    QVERIFY(settledFrame(controller())->scene == m_window->document()->sharedScene());
+
+    // at rest without a push: two steps (F6) change no horizontal momentum
+    press(Qt::Key_F6);
+    press(Qt::Key_F6);
+    const auto still = settledFrame(controller());
+    QCOMPARE(still->snapshot->step, 2u);
+    QCOMPARE(still->snapshot->momentum.x(), 0.0);
+
+    // three presses of Up push along +x: the ball gains speed in x
+    press(Qt::Key_Up);
+    press(Qt::Key_Up);
+    press(Qt::Key_Up);
+    QCOMPARE(m_window->steering().level, 3);
+    for (int i = 0; i < 5; ++i)
+        press(Qt::Key_F6);
+    const auto pushed = settledFrame(controller());
+    QCOMPARE(pushed->snapshot->step, 7u);
+    const double speedX = pushed->snapshot->momentum.x() / mass;
+    QVERIFY2(speedX > 0.05, qPrintable(QString::number(speedX)));
+    QVERIFY(pushed->snapshot->positions[3 * ball] > still->snapshot->positions[3 * ball]);
+
+    // six presses of Left turn the push a quarter turn, to -z
+    for (int i = 0; i < 6; ++i)
+        press(Qt::Key_Left);
+    QCOMPARE(m_window->steering().angle, 90.0);
+    for (int i = 0; i < 5; ++i)
+        press(Qt::Key_F6);
+    const auto turned = settledFrame(controller());
+    QVERIFY(turned->snapshot->momentum.z() < pushed->snapshot->momentum.z() - 0.05 * mass);
+
+    // Down to zero: no more push
+    for (int i = 0; i < 3; ++i)
+        press(Qt::Key_Down);
+    QCOMPARE(m_window->steering().level, 0);
+}
+
+void TestMainWindow::tiltIsTheSameForTheSameSeed()
+{
+    // T, then one step: the positions show the kick
+    auto tiltAndStep = [this](std::uint64_t seed) {
+        press(Qt::Key_F5);
+        controller().setTiltSeed(seed);
+        press(Qt::Key_T);
+        press(Qt::Key_F6);
+        return settledFrame(controller())->snapshot->positions;
+    };
+    const std::vector<float> first = tiltAndStep(11);
+    const std::vector<float> again = tiltAndStep(11);
+    const std::vector<float> other = tiltAndStep(12);
+    press(Qt::Key_F5);
+    press(Qt::Key_F6);
+    const std::vector<float> untilted = settledFrame(controller())->snapshot->positions;
+    QVERIFY(first == again);
+    QVERIFY(first != other);
+    QVERIFY(first != untilted);
+}
+
+void TestMainWindow::aSwitchesCollisions()
+{
+    QVERIFY(m_window->document()->scene().settings.planeCollisions);
+    press(Qt::Key_A);
+    auto frame = settledFrame(controller());
+    QVERIFY(!frame->scene->settings.planeCollisions);
+    QVERIFY(!frame->scene->settings.particleCollisions);
+    QVERIFY(!frame->model->plan.particleCollisions);
+    QVERIFY(!m_window->parametersPanel()->planeCollisionsBox()->isChecked());
+
+    press(Qt::Key_A);
+    frame = settledFrame(controller());
+    QVERIFY(frame->scene->settings.planeCollisions);
+    QVERIFY(frame->scene->settings.particleCollisions);
+}
+
+void TestMainWindow::f2SavesAScreenshot()
+{
+    const QString folder = m_files.filePath(QStringLiteral("shots"));
+    m_window->setScreenshotDirectory(folder);
+    QTRY_VERIFY(m_window->viewport()->snapshot() != nullptr);
+    press(Qt::Key_F2);
+    const QStringList shots = QDir(folder).entryList({QStringLiteral("*.png")});
+    QCOMPARE(shots.size(), 1);
+    QVERIFY(shots.front().startsWith(QStringLiteral("springlab-springs-")));
+    const QImage image(QDir(folder).filePath(shots.front()));
+    QVERIFY(!image.isNull());
+    QCOMPARE(image.size(), m_window->viewport()->grabFramebuffer().size());
+
+    // a second one in the same second gets its own name
+    press(Qt::Key_F2);
+    QCOMPARE(QDir(folder).entryList({QStringLiteral("*.png")}).size(), 2);
+}
+
+void TestMainWindow::f1ListsEveryShortcut()
+{
+    // the dialog is modal: read it from inside its own event loop, then close it
+    QStringList entries;
+    bool found = false;
+    QTimer::singleShot(0, this, [&] {
+        auto *dialog = qobject_cast<ui::HelpDialog *>(QApplication::activeModalWidget());
+        if (!dialog)
+            return;
+        found = true;
+        entries = dialog->entries();
+        dialog->reject();
+    });
+    press(Qt::Key_F1);
+    QVERIFY(found);
+
+    // every key of the handout, and the mouse
+    const QString all = entries.join(QLatin1Char('\n'));
+    for (const char *key : {"F1\t", "F2\t", "F4\t", "F5\t", "F6\t", "T\t", "A\t", "Left\t", "Right\t", "Up\t", "Down\t",
+                            "F, Home\t", "Ctrl+Z\t"})
+        QVERIFY2(all.contains(QLatin1String(key)) || all.contains(QLatin1Char('\n') + QLatin1String(key)), key);
+    QVERIFY(all.contains(QStringLiteral("Orbit")));
+    QVERIFY(all.contains(QStringLiteral("Pan")));
+    QVERIFY(all.contains(QStringLiteral("Zoom")));
+}
+
+void TestMainWindow::saveWritesTheEditedScene()
+{
+    // an edit marks the window modified; saving clears the mark and the file has the edit
+    m_window->parametersPanel()->row(QStringLiteral("viscosity"))->slider()->setValue(100);
+    QVERIFY(m_window->isWindowModified());
+    const QString path = m_files.filePath(QStringLiteral("saved.json"));
+    QString error;
+    QVERIFY2(m_window->saveTo(path, &error), qPrintable(error));
+    QVERIFY(!m_window->isWindowModified());
+    QCOMPARE(m_window->document()->filePath(), QFileInfo(path).absoluteFilePath());
+
+    // opening it again gives the same scene, bit for bit
+    const core::SceneDesc saved = m_window->document()->scene();
+    QVERIFY(m_window->openScene(path, &error));
+    QVERIFY(m_window->document()->scene() == saved);
+    QVERIFY(m_window->document()->scene().settings.viscosity > 0.0);
+}
+
+void TestMainWindow::badFileLeavesTheSceneOpen()
+{
+    // a file that is not JSON: the message names the file, and springs stays open
+    const QString path = m_files.filePath(QStringLiteral("broken.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("{ \"format\": \"springlab-scene\", ");
+    file.close();
+    QString error;
+    QVERIFY(!m_window->openScene(path, &error));
+    QVERIFY2(error.contains(QStringLiteral("broken.json")), qPrintable(error));
+    QCOMPARE(m_window->document()->displayName(), QStringLiteral("springs"));
+
+    QVERIFY(!m_window->openScene(m_files.filePath(QStringLiteral("missing.json")), &error));
+    QVERIFY2(error.contains(QStringLiteral("missing.json")), qPrintable(error));
+}
+
+void TestMainWindow::examplesAreAllListed()
+{
+    const QStringList names = ui::MainWindow::exampleNames();
+    QCOMPARE(names.mid(0, 5), (QStringList{"particles", "springs", "collisions", "pool", "cloth"}));
+    for (const QString &name : names) {
+        QString error;
+        QVERIFY2(m_window->openExample(name, &error), qPrintable(error));
+        QVERIFY(m_window->windowTitle().startsWith(m_window->document()->displayName()));
+        QCOMPARE(settledFrame(controller())->snapshot->particleCount(),
+                 int(m_window->document()->scene().particles.size()));
+    }
+}
+
+void TestMainWindow::closingWhileRunningEndsTheWorker()
+{
+    press(Qt::Key_F4);
+    QTRY_VERIFY(controller().frame()->snapshot->time > 0.0);
+    QThread *thread = controller().workerThread();
+    QVERIFY(thread->isRunning());
+    QVERIFY(m_window->close());
+    QVERIFY(thread->isFinished());
+    QVERIFY(controller().isShutDown());
+}
+
+void TestMainWindow::geometryIsRemembered()
+{
+    // closing saves the size and the docks; the next window comes back the same
+    m_window->resize(900, 640);
+    QTRY_COMPARE(m_window->size(), QSize(900, 640));
+    auto *dock = m_window->findChild<QDockWidget *>(QStringLiteral("parametersDock"));
+    QVERIFY(dock);
+    dock->hide();
+    QVERIFY(m_window->close());
+    delete m_window;
+
+    m_window = new ui::MainWindow;
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    QCOMPARE(m_window->size(), QSize(900, 640));
+    QVERIFY(m_window->findChild<QDockWidget *>(QStringLiteral("parametersDock"))->isHidden());
+
+    // and nothing was written outside the test's own folder
+    QSettings settings;
+    QVERIFY(settings.fileName().startsWith(m_settings.path()));
+}
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"

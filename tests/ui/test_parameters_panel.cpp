@@ -1,0 +1,249 @@
+// The parameters panel with real widgets: its rows come from the parameter table, a slider move or
+// a typed value edits the document (one undo step per drag), and a value out of range is refused
+// with a message and never reaches the document.
+
+#include "ui/parameter_row.h"
+#include "ui/parameters_panel.h"
+#include "ui/scene_document.h"
+#include "ui/value_spin_box.h"
+
+#include "core/generators.h"
+
+#include <QCheckBox>
+#include <QLabel>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStyle>
+#include <QStyleOptionSlider>
+#include <QUndoStack>
+#include <QtTest>
+
+namespace {
+
+core::SceneDesc netScene()
+{
+    core::NetOptions options;
+    options.rows = 3;
+    options.cols = 3;
+    options.stiffness = 4000.0;
+    options.damping = 2.0;
+    return core::makeNet(options);
+}
+
+// types text into a spin box as a user would, then presses Enter
+void type(QAbstractSpinBox *spinBox, const QString &text)
+{
+    spinBox->setFocus();
+    spinBox->selectAll();
+    QTest::keyClicks(spinBox, text);
+    QTest::keyClick(spinBox, Qt::Key_Return);
+}
+
+// the centre of a slider's handle, where a user grabs it
+QPoint handleCentre(const QSlider *slider)
+{
+    QStyleOptionSlider option;
+    option.initFrom(slider);
+    option.orientation = slider->orientation();
+    option.minimum = slider->minimum();
+    option.maximum = slider->maximum();
+    option.sliderPosition = slider->sliderPosition();
+    option.sliderValue = slider->value();
+    option.subControls = QStyle::SC_SliderHandle;
+    return slider->style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider).center();
+}
+
+QString fromView(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), qsizetype(text.size()));
+}
+
+}  // namespace
+
+class TestParametersPanel : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init();
+    void cleanup();
+
+    void rowsComeFromTheParameterTable();
+    void showsTheDocumentsValues();
+    void sliderMoveSetsEverySpring();
+    void aDragIsOneUndoStep();
+    void typedValueIsApplied();
+    void outOfRangeValueIsRefused_data();
+    void outOfRangeValueIsRefused();
+    void collisionSwitchesEditTheSettings();
+    void springsGroupSaysWhatItAppliesTo();
+
+private:
+    ui::SceneDocument *m_document = nullptr;
+    ui::ParametersPanel *m_panel = nullptr;
+};
+
+void TestParametersPanel::init()
+{
+    m_document = new ui::SceneDocument;
+    m_document->replace(netScene(), QString());
+    m_panel = new ui::ParametersPanel(*m_document);
+    m_panel->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_panel));
+}
+
+void TestParametersPanel::cleanup()
+{
+    delete m_panel;
+    delete m_document;
+}
+
+void TestParametersPanel::rowsComeFromTheParameterTable()
+{
+    // label, unit, tooltip and default all from the table
+    const struct {
+        const char *key;
+        core::Parameter parameter;
+        const char *suffix;
+    } expected[] = {
+        {"timeStep", core::Parameter::TimeStep, ""},   {"substeps", core::Parameter::Substeps, ""},
+        {"gravity.x", core::Parameter::Gravity, " x"}, {"gravity.y", core::Parameter::Gravity, " y"},
+        {"gravity.z", core::Parameter::Gravity, " z"}, {"viscosity", core::Parameter::Viscosity, ""},
+        {"restitution", core::Parameter::Restitution, ""}, {"stiffness", core::Parameter::Stiffness, ""},
+        {"damping", core::Parameter::Damping, ""},
+    };
+    for (const auto &e : expected) {
+        ui::ParameterRow *row = m_panel->row(QString::fromLatin1(e.key));
+        QVERIFY2(row, e.key);
+        const core::ParameterInfo &info = core::parameterInfo(e.parameter);
+        QCOMPARE(row->label()->text(), fromView(info.label) + QString::fromLatin1(e.suffix));
+        QCOMPARE(row->toolTip(), fromView(info.tooltip));
+        QVERIFY(row->findChildren<QLabel *>().size() >= 1);
+        bool unitShown = info.unit.empty();
+        for (const QLabel *label : row->findChildren<QLabel *>())
+            unitShown = unitShown || label->text() == fromView(info.unit);
+        QVERIFY2(unitShown, e.key);
+    }
+    QVERIFY(m_panel->row(QStringLiteral("mass")) == nullptr);
+}
+
+void TestParametersPanel::showsTheDocumentsValues()
+{
+    QCOMPARE(m_panel->row("stiffness")->value(), 4000.0);
+    QCOMPARE(m_panel->row("damping")->value(), 2.0);
+    QCOMPARE(m_panel->row("gravity.y")->value(), -9.81);
+    QCOMPARE(m_panel->row("gravity.y")->spinBox()->text(), QStringLiteral("-9.81"));
+    QCOMPARE(m_panel->row("timeStep")->value(), m_document->scene().settings.timeStep);
+    QVERIFY(m_panel->planeCollisionsBox()->isChecked() == m_document->scene().settings.planeCollisions);
+}
+
+void TestParametersPanel::sliderMoveSetsEverySpring()
+{
+    QSlider *slider = m_panel->row("stiffness")->slider();
+    const ui::SliderScale scale = ui::sliderScale(core::parameterInfo(core::Parameter::Stiffness));
+    slider->setValue(scale.positionOf(250.0));
+    const double expected = scale.valueAt(slider->value());
+    QVERIFY(std::abs(expected - 250.0) < 10.0);
+    for (const core::SpringDesc &spring : m_document->scene().springs)
+        QCOMPARE(spring.stiffness, expected);
+    QCOMPARE(m_panel->row("stiffness")->spinBox()->value(), expected);
+    QVERIFY(m_document->isModified());
+}
+
+void TestParametersPanel::aDragIsOneUndoStep()
+{
+    // the slider dragged with the mouse from its handle to the left end
+    QSlider *slider = m_panel->row("gravity.y")->slider();
+    const QPoint handle = handleCentre(slider);
+    QTest::mousePress(slider, Qt::LeftButton, {}, handle);
+    for (int x = handle.x(); x > 0; x -= 10)
+        QTest::mouseMove(slider, QPoint(x, handle.y()));
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, QPoint(0, handle.y()));
+    QCOMPARE(m_document->scene().settings.gravity.y(), -20.0);
+    QCOMPARE(m_document->undoStack()->count(), 1);
+
+    // undo gives the old value back everywhere
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->scene().settings.gravity.y(), -9.81);
+    QCOMPARE(m_panel->row("gravity.y")->value(), -9.81);
+    QVERIFY(!m_document->isModified());
+}
+
+void TestParametersPanel::typedValueIsApplied()
+{
+    type(m_panel->row("viscosity")->spinBox(), QStringLiteral("0.75"));
+    QCOMPARE(m_document->scene().settings.viscosity, 0.75);
+    type(m_panel->row("damping")->spinBox(), QStringLiteral("1e-3"));
+    for (const core::SpringDesc &spring : m_document->scene().springs)
+        QCOMPARE(spring.damping, 1e-3);
+    QVERIFY(m_panel->message().isEmpty());
+}
+
+void TestParametersPanel::outOfRangeValueIsRefused_data()
+{
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("stiffness too high") << "stiffness" << "5e9" << "must be at most";
+    QTest::newRow("negative damping") << "damping" << "-1" << "must be at least";
+    QTest::newRow("zero time step") << "timeStep" << "0" << "must be greater than";
+    QTest::newRow("restitution above 1") << "restitution" << "1.5" << "must be at most";
+    QTest::newRow("half a substep") << "substeps" << "2.5" << "whole number";
+}
+
+void TestParametersPanel::outOfRangeValueIsRefused()
+{
+    QFETCH(QString, key);
+    QFETCH(QString, typed);
+    QFETCH(QString, reason);
+    const core::SceneDesc before = m_document->scene();
+    ui::ParameterRow *row = m_panel->row(key);
+    const double shown = row->value();
+    QSignalSpy refused(m_panel, &ui::ParametersPanel::valueRefused);
+
+    type(row->spinBox(), typed);
+
+    // a message naming the parameter and the reason; nothing changed, nothing to undo
+    QCOMPARE(refused.count(), 1);
+    QVERIFY2(m_panel->message().contains(reason), qPrintable(m_panel->message()));
+    QVERIFY2(m_panel->message().startsWith(row->label()->text()), qPrintable(m_panel->message()));
+    QVERIFY(m_document->scene() == before);
+    QCOMPARE(m_document->undoStack()->count(), 0);
+    QCOMPARE(row->value(), shown);
+    QCOMPARE(row->spinBox()->value(), shown);
+
+    // the next accepted change clears the message
+    row->slider()->setValue(row->slider()->value() < 500 ? 800 : 100);
+    QVERIFY(m_panel->message().isEmpty());
+}
+
+void TestParametersPanel::collisionSwitchesEditTheSettings()
+{
+    const bool planes = m_document->scene().settings.planeCollisions;
+    QTest::mouseClick(m_panel->planeCollisionsBox(), Qt::LeftButton, {},
+                      QPoint(4, m_panel->planeCollisionsBox()->height() / 2));
+    QCOMPARE(m_document->scene().settings.planeCollisions, !planes);
+    m_panel->particleCollisionsBox()->click();
+    QCOMPARE(m_document->scene().settings.particleCollisions, !netScene().settings.particleCollisions);
+
+    // and they follow the document
+    m_document->undoStack()->undo();
+    QCOMPARE(m_panel->particleCollisionsBox()->isChecked(), m_document->scene().settings.particleCollisions);
+}
+
+void TestParametersPanel::springsGroupSaysWhatItAppliesTo()
+{
+    QVERIFY(m_panel->row("stiffness")->isEnabled());
+    bool saysAll = false;
+    for (const QLabel *label : m_panel->findChildren<QLabel *>())
+        saysAll = saysAll || label->text().contains(QStringLiteral("all springs"));
+    QVERIFY(saysAll);
+
+    // no springs: nothing to tune
+    core::SceneDesc lonely = netScene();
+    lonely.springs.clear();
+    m_document->replace(lonely, QString());
+    QVERIFY(!m_panel->row("stiffness")->isEnabled());
+}
+
+QTEST_MAIN(TestParametersPanel)
+#include "test_parameters_panel.moc"

@@ -1,0 +1,341 @@
+// Packing a snapshot for drawing, without GL: colours by strain and by pin and selection, the
+// sizes of the packed arrays, when the style must be uploaded again, and the decoration geometry.
+
+#include "ui/render_data.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace {
+
+// three particles (the middle one pinned) and two springs, one compressed and one stretched
+core::Snapshot threeParticles()
+{
+    core::Snapshot s;
+    s.positions = {0.0f, 1.0f, 0.0f, 1.0f, 1.0f, 0.0f, 3.0f, 2.0f, -1.0f};
+    s.radii = {0.1f, 0.2f, 0.3f};
+    s.pinned = {0, 1, 0};
+    s.springEnds = {0.0f, 1.0f, 0.0f, 1.0f, 1.0f, 0.0f, 1.0f, 1.0f, 0.0f, 3.0f, 2.0f, -1.0f};
+    s.springStrain = {-0.05f, 0.5f};
+    return s;
+}
+
+bool near(const ui::Rgb &a, const ui::Rgb &b, float tolerance = 1e-6f)
+{
+    return std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance &&
+           std::abs(a[2] - b[2]) <= tolerance;
+}
+
+}  // namespace
+
+class TestRenderData : public QObject {
+    Q_OBJECT
+
+private slots:
+    void strainColours_data();
+    void strainColours();
+    void strainColourGrowsWithStrain();
+    void styleColoursByPinAndSelection();
+    void styleIgnoresSelectionOutOfRange();
+    void styleKeyNoticesWhatChangesTheStyle();
+    void springLines();
+    void springLinesOfAnEmptySnapshot();
+    void boundsHoldEverySphere();
+    void niceSteps_data();
+    void niceSteps();
+    void gridLiesOnItsPlaneAroundTheScene();
+    void planeQuadsLieOnTheirPlanes();
+    void icosphereIsAClosedOutwardUnitSphere_data();
+    void icosphereIsAClosedOutwardUnitSphere();
+};
+
+void TestRenderData::strainColours_data()
+{
+    QTest::addColumn<float>("strain");
+    QTest::addColumn<ui::Rgb>("expected");
+    QTest::newRow("rest") << 0.0f << ui::kRestColour;
+    QTest::newRow("fully compressed") << -ui::kFullStrain << ui::kCompressedColour;
+    QTest::newRow("beyond compressed") << -0.9f << ui::kCompressedColour;
+    QTest::newRow("fully stretched") << ui::kFullStrain << ui::kStretchedColour;
+    QTest::newRow("beyond stretched") << 4.0f << ui::kStretchedColour;
+    QTest::newRow("not a number") << std::numeric_limits<float>::quiet_NaN() << ui::kRestColour;
+    QTest::newRow("infinite") << std::numeric_limits<float>::infinity() << ui::kRestColour;
+}
+
+void TestRenderData::strainColours()
+{
+    QFETCH(float, strain);
+    QFETCH(ui::Rgb, expected);
+    QVERIFY(near(ui::strainColour(strain), expected));
+}
+
+void TestRenderData::strainColourGrowsWithStrain()
+{
+    // compressed springs get bluer, stretched ones redder, the more so the larger the strain
+    float lastBlueExcess = 0.0f;
+    float lastRedExcess = 0.0f;
+    for (int k = 1; k <= 10; ++k) {
+        const float strain = ui::kFullStrain * float(k) / 10.0f;
+        const ui::Rgb compressed = ui::strainColour(-strain);
+        const ui::Rgb stretched = ui::strainColour(strain);
+        QCOMPARE_GT(compressed[2] - compressed[0], lastBlueExcess);
+        QCOMPARE_GT(stretched[0] - stretched[2], lastRedExcess);
+        lastBlueExcess = compressed[2] - compressed[0];
+        lastRedExcess = stretched[0] - stretched[2];
+    }
+
+    // a smaller full scale saturates sooner
+    QVERIFY(near(ui::strainColour(0.01f, 0.01f), ui::kStretchedColour));
+}
+
+void TestRenderData::styleColoursByPinAndSelection()
+{
+    const core::Snapshot s = threeParticles();
+
+    // no selection: free, pinned, free
+    const ui::ParticleStyle plain = ui::packParticleStyle(s, {});
+    QCOMPARE(plain.count(), 3);
+    QCOMPARE(plain.values.size(), std::size_t(3 * ui::kStyleFloats));
+    QVERIFY(near(plain.colour(0), ui::kFreeColour));
+    QVERIFY(near(plain.colour(1), ui::kPinnedColour));
+    QVERIFY(near(plain.colour(2), ui::kFreeColour));
+    QCOMPARE(plain.radius(2), 0.3f);
+    QVERIFY(!plain.pinned(0) && plain.pinned(1) && !plain.pinned(2));
+    QVERIFY(!plain.selected(0) && !plain.selected(1) && !plain.selected(2));
+
+    // the palette tells them apart
+    QVERIFY(!near(ui::kFreeColour, ui::kPinnedColour, 0.1f));
+    QVERIFY(!near(ui::kFreeColour, ui::kSelectedColour, 0.1f));
+    QVERIFY(!near(ui::kPinnedColour, ui::kSelectedColour, 0.1f));
+
+    // selecting the pinned one and the last: the selection colour, the pin mark kept
+    const ui::ParticleStyle selected = ui::packParticleStyle(s, {2, 1});
+    QVERIFY(near(selected.colour(0), ui::kFreeColour));
+    QVERIFY(near(selected.colour(1), ui::kSelectedColour));
+    QVERIFY(near(selected.colour(2), ui::kSelectedColour));
+    QVERIFY(selected.pinned(1) && selected.selected(1));
+    QVERIFY(!selected.pinned(2) && selected.selected(2));
+}
+
+void TestRenderData::styleIgnoresSelectionOutOfRange()
+{
+    const core::Snapshot s = threeParticles();
+    const ui::ParticleStyle style = ui::packParticleStyle(s, {-1, 3, 1000});
+    QCOMPARE(style.count(), 3);
+    for (int i = 0; i < 3; ++i)
+        QVERIFY(!style.selected(i));
+    QCOMPARE(ui::packParticleStyle(core::Snapshot{}, {0}).count(), 0);
+}
+
+void TestRenderData::styleKeyNoticesWhatChangesTheStyle()
+{
+    const core::Snapshot s = threeParticles();
+    ui::StyleKey key;
+    QVERIFY(!key.matches(s));
+    key.remember(s);
+    QVERIFY(key.matches(s));
+
+    // moving particles or straining springs needs no new style
+    core::Snapshot moved = s;
+    moved.positions[0] += 1.0f;
+    moved.springStrain[0] = 0.3f;
+    moved.step = 7;
+    QVERIFY(key.matches(moved));
+
+    // a radius, a pin or the count does
+    core::Snapshot grown = s;
+    grown.radii[1] = 0.25f;
+    QVERIFY(!key.matches(grown));
+    core::Snapshot unpinned = s;
+    unpinned.pinned[1] = 0;
+    QVERIFY(!key.matches(unpinned));
+    core::Snapshot more = s;
+    more.positions.insert(more.positions.end(), {5.0f, 5.0f, 5.0f});
+    more.radii.push_back(0.1f);
+    more.pinned.push_back(0);
+    QVERIFY(!key.matches(more));
+
+    key.clear();
+    QVERIFY(!key.matches(s));
+}
+
+void TestRenderData::springLines()
+{
+    const core::Snapshot s = threeParticles();
+    std::vector<float> lines{1.0f, 2.0f};  // whatever was there is replaced
+    ui::packSpringLines(s, lines);
+    QCOMPARE(lines.size(), std::size_t(2 * 2 * ui::kVertexFloats));
+
+    // each spring's two ends, in the spring's colour, opaque
+    for (int spring = 0; spring < 2; ++spring) {
+        const ui::Rgb expected = ui::strainColour(s.springStrain[spring]);
+        for (int end = 0; end < 2; ++end) {
+            const float *v = lines.data() + (2 * spring + end) * ui::kVertexFloats;
+            for (int k = 0; k < 3; ++k)
+                QCOMPARE(v[k], s.springEnds[6 * spring + 3 * end + k]);
+            QVERIFY(near({v[3], v[4], v[5]}, expected));
+            QCOMPARE(v[6], 1.0f);
+        }
+    }
+
+    // the compressed one is bluish, the stretched one fully red
+    QCOMPARE_GT(lines[5], lines[3]);
+    QVERIFY(near({lines[2 * ui::kVertexFloats + 3], lines[2 * ui::kVertexFloats + 4], lines[2 * ui::kVertexFloats + 5]},
+                 ui::kStretchedColour));
+}
+
+void TestRenderData::springLinesOfAnEmptySnapshot()
+{
+    std::vector<float> lines(10, 1.0f);
+    ui::packSpringLines(core::Snapshot{}, lines);
+    QVERIFY(lines.empty());
+}
+
+void TestRenderData::boundsHoldEverySphere()
+{
+    const core::Snapshot s = threeParticles();
+    const ui::Sphere bounds = ui::particleBounds(s);
+    for (int i = 0; i < 3; ++i) {
+        const QVector3D p(s.positions[3 * i], s.positions[3 * i + 1], s.positions[3 * i + 2]);
+        QCOMPARE_LE((p - bounds.centre).length() + s.radii[i], bounds.radius * (1.0f + 1e-6f));
+    }
+
+    // not much larger than it has to be: within the box's half diagonal plus the largest radius
+    const float halfDiagonal = QVector3D(3.0f, 1.0f, 1.0f).length() / 2.0f;
+    QCOMPARE_LE(bounds.radius, halfDiagonal + 0.3f + 1e-5f);
+    QCOMPARE(ui::particleBounds(core::Snapshot{}).radius, 0.0f);
+
+    // a particle that blew up is left out
+    core::Snapshot blown = s;
+    blown.positions[3] = std::numeric_limits<float>::quiet_NaN();
+    blown.positions[7] = std::numeric_limits<float>::infinity();
+    const ui::Sphere rest = ui::particleBounds(blown);
+    QVERIFY(std::isfinite(rest.centre.x()) && std::isfinite(rest.centre.y()) && std::isfinite(rest.radius));
+    QCOMPARE_LT((rest.centre - QVector3D(0.0f, 1.0f, 0.0f)).length(), 1e-6f);
+    QCOMPARE(rest.radius, 0.1f);
+}
+
+void TestRenderData::niceSteps_data()
+{
+    QTest::addColumn<float>("length");
+    QTest::addColumn<float>("step");
+    QTest::newRow("1") << 1.0f << 1.0f;
+    QTest::newRow("1.9") << 1.9f << 1.0f;
+    QTest::newRow("3") << 3.0f << 2.0f;
+    QTest::newRow("7") << 7.0f << 5.0f;
+    QTest::newRow("0.03") << 0.03f << 0.02f;
+    QTest::newRow("250") << 250.0f << 200.0f;
+    QTest::newRow("zero") << 0.0f << 1.0f;
+}
+
+void TestRenderData::niceSteps()
+{
+    QFETCH(float, length);
+    QFETCH(float, step);
+    QCOMPARE_LT(std::abs(ui::niceStep(length) - step), 1e-5f * step);
+}
+
+void TestRenderData::gridLiesOnItsPlaneAroundTheScene()
+{
+    const ui::Sphere scene{QVector3D(3.0f, 2.0f, -1.0f), 2.0f};
+    const std::vector<float> grid = ui::packGrid(scene, -0.5f);
+    QCOMPARE(grid.size() % (2 * ui::kVertexFloats), std::size_t(0));
+    QCOMPARE_GT(grid.size(), std::size_t(0));
+
+    // every vertex on the plane y = -0.5, and the grid reaches past the scene on every side
+    float minX = 1e9f, maxX = -1e9f, minZ = 1e9f, maxZ = -1e9f;
+    for (std::size_t v = 0; v < grid.size(); v += ui::kVertexFloats) {
+        QCOMPARE(grid[v + 1], -0.5f);
+        minX = std::min(minX, grid[v]);
+        maxX = std::max(maxX, grid[v]);
+        minZ = std::min(minZ, grid[v + 2]);
+        maxZ = std::max(maxZ, grid[v + 2]);
+    }
+    QCOMPARE_LT(minX, scene.centre.x() - scene.radius);
+    QCOMPARE_GT(maxX, scene.centre.x() + scene.radius);
+    QCOMPARE_LT(minZ, scene.centre.z() - scene.radius);
+    QCOMPARE_GT(maxZ, scene.centre.z() + scene.radius);
+}
+
+void TestRenderData::planeQuadsLieOnTheirPlanes()
+{
+    const ui::Sphere scene{QVector3D(1.0f, 4.0f, 2.0f), 3.0f};
+    std::vector<core::PlaneDesc> planes(3);
+    planes[0].normal = {0.0, 1.0, 0.0};
+    planes[0].offset = -1.0;
+    planes[1].normal = Eigen::Vector3d(1.0, 1.0, 0.0).normalized();
+    planes[1].offset = 0.5;
+    planes[2].normal = {0.0, 0.0, -1.0};
+    planes[2].offset = 4.0;
+    const std::vector<float> quads = ui::packPlaneQuads(planes, scene);
+    QCOMPARE(quads.size(), std::size_t(3 * 6 * ui::kVertexFloats));
+
+    for (int p = 0; p < 3; ++p) {
+        const QVector3D n(float(planes[p].normal.x()), float(planes[p].normal.y()), float(planes[p].normal.z()));
+        QVector3D sum;
+        for (int v = 0; v < 6; ++v) {
+            const float *f = quads.data() + (6 * p + v) * ui::kVertexFloats;
+            const QVector3D corner(f[0], f[1], f[2]);
+            QCOMPARE_LT(std::abs(QVector3D::dotProduct(n, corner) - float(planes[p].offset)), 1e-4f);
+            QCOMPARE(f[6], ui::kPlaneAlpha);
+            sum += corner;
+        }
+
+        // centred where the scene's centre drops onto the plane, and wider than the scene
+        const QVector3D foot = scene.centre - (QVector3D::dotProduct(n, scene.centre) - float(planes[p].offset)) * n;
+        const QVector3D first(quads[(6 * p) * ui::kVertexFloats], quads[(6 * p) * ui::kVertexFloats + 1],
+                              quads[(6 * p) * ui::kVertexFloats + 2]);
+        QCOMPARE_LT((sum / 6.0f - foot).length(), 1e-3f + (first - foot).length());
+        QCOMPARE_GT((first - foot).length(), scene.radius);
+    }
+}
+
+void TestRenderData::icosphereIsAClosedOutwardUnitSphere_data()
+{
+    QTest::addColumn<int>("subdivisions");
+    QTest::newRow("icosahedron") << 0;
+    QTest::newRow("once") << 1;
+    QTest::newRow("twice") << 2;
+}
+
+void TestRenderData::icosphereIsAClosedOutwardUnitSphere()
+{
+    QFETCH(int, subdivisions);
+    const ui::SphereMesh mesh = ui::icosphere(subdivisions);
+    const std::size_t triangles = 20u << (2 * subdivisions);
+    QCOMPARE(mesh.indices.size(), 3 * triangles);
+
+    // every vertex on the unit sphere
+    const std::size_t vertices = mesh.vertices.size() / 3;
+    for (std::size_t v = 0; v < vertices; ++v) {
+        const QVector3D p(mesh.vertices[3 * v], mesh.vertices[3 * v + 1], mesh.vertices[3 * v + 2]);
+        QCOMPARE_LT(std::abs(p.length() - 1.0f), 1e-5f);
+    }
+
+    // counter-clockwise from outside, and closed: each edge shared by exactly two triangles, in
+    // opposite directions, so V - E + F = 2
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directedEdges;
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const std::uint32_t *i = mesh.indices.data() + 3 * t;
+        auto point = [&](std::uint32_t k) {
+            return QVector3D(mesh.vertices[3 * k], mesh.vertices[3 * k + 1], mesh.vertices[3 * k + 2]);
+        };
+        const QVector3D a = point(i[0]), b = point(i[1]), c = point(i[2]);
+        QCOMPARE_GT(QVector3D::dotProduct(QVector3D::crossProduct(b - a, c - a), a + b + c), 0.0f);
+        for (int e = 0; e < 3; ++e)
+            ++directedEdges[{i[e], i[(e + 1) % 3]}];
+    }
+    for (const auto &[edge, count] : directedEdges) {
+        QCOMPARE(count, 1);
+        QVERIFY(directedEdges.count({edge.second, edge.first}) == 1);
+    }
+    const std::size_t edges = directedEdges.size() / 2;
+    QCOMPARE(int(vertices) - int(edges) + int(triangles), 2);
+}
+
+QTEST_APPLESS_MAIN(TestRenderData)
+#include "test_render_data.moc"

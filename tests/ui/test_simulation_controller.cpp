@@ -1,0 +1,193 @@
+// SimulationController with its real worker thread: play advances time, pause stops it, reset
+// restores the initial state bit for bit, edits reach the worker between steps, a blow-up pauses
+// and is reported, and shutting down while running ends the thread. Waits are on frames (QTRY_*),
+// never fixed sleeps.
+
+#include "ui/simulation_controller.h"
+
+#include "core/generators.h"
+
+#include <QSignalSpy>
+#include <QThread>
+#include <QtTest>
+
+namespace {
+
+// the handout's springs net, small enough to step fast
+std::shared_ptr<const core::SceneDesc> netScene(double stiffness = 4e3)
+{
+    core::NetOptions options;
+    options.rows = 5;
+    options.cols = 5;
+    options.stiffness = stiffness;
+    return std::make_shared<const core::SceneDesc>(core::makeNet(options));
+}
+
+// a net far too stiff for its time step
+std::shared_ptr<const core::SceneDesc> explodingScene()
+{
+    auto scene = std::make_shared<core::SceneDesc>(*netScene(1e9));
+    scene->settings.timeStep = 0.1;
+    return scene;
+}
+
+// the newest frame once the worker has applied edit `sequence`
+std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::SimulationController &controller,
+                                                      std::uint64_t sequence)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < 10000) {
+        const auto frame = controller.frame();
+        if (frame && frame->appliedEdit >= sequence)
+            return frame;
+        QTest::qWait(5);
+    }
+    return nullptr;
+}
+
+}  // namespace
+
+class TestSimulationController : public QObject {
+    Q_OBJECT
+
+private slots:
+    void publishesTheSceneItIsGiven();
+    void playAdvancesTimeAndPauseStopsIt();
+    void stepOnceTakesOneStep();
+    void resetRestoresTheInitialPositionsBitForBit();
+    void parameterEditReachesTheWorker();
+    void tiltWithTheSameSeedGivesTheSameKick();
+    void blowupPausesAndIsReported();
+    void shutDownWhileRunningEndsTheThread();
+};
+
+void TestSimulationController::publishesTheSceneItIsGiven()
+{
+    ui::SimulationController controller;
+    const auto scene = netScene();
+    const auto frame = frameAfter(controller, controller.setScene(scene, ui::SceneChange::Replace));
+    QVERIFY(frame);
+    QCOMPARE(frame->snapshot->particleCount(), 25);
+    QCOMPARE(frame->snapshot->time, 0.0);
+    QVERIFY(frame->scene == scene);
+    QVERIFY(!frame->running);
+}
+
+void TestSimulationController::playAdvancesTimeAndPauseStopsIt()
+{
+    ui::SimulationController controller;
+    QSignalSpy running(&controller, &ui::SimulationController::runningChanged);
+    controller.setScene(netScene(), ui::SceneChange::Replace);
+    controller.play();
+    QVERIFY(controller.isRunning());
+    QCOMPARE(running.count(), 1);
+    QTRY_VERIFY(controller.frame() && controller.frame()->snapshot->time > 0.05);
+    QTRY_VERIFY(controller.frame()->realTimeFactor > 0.0);
+
+    // paused: two later ticks see the same time
+    const auto paused = frameAfter(controller, controller.pause());
+    QVERIFY(paused);
+    QVERIFY(!paused->running);
+    const auto later = frameAfter(controller, controller.sync());
+    const auto evenLater = frameAfter(controller, controller.sync());
+    QVERIFY(later && evenLater);
+    QCOMPARE(later->snapshot->time, paused->snapshot->time);
+    QCOMPARE(evenLater->snapshot->step, paused->snapshot->step);
+}
+
+void TestSimulationController::stepOnceTakesOneStep()
+{
+    ui::SimulationController controller;
+    controller.setScene(netScene(), ui::SceneChange::Replace);
+    const auto first = frameAfter(controller, controller.stepOnce());
+    QVERIFY(first);
+    QCOMPARE(first->snapshot->step, 1u);
+    const auto second = frameAfter(controller, controller.stepOnce());
+    QCOMPARE(second->snapshot->step, 2u);
+    QCOMPARE(second->snapshot->time, 2 * netScene()->settings.timeStep);
+}
+
+void TestSimulationController::resetRestoresTheInitialPositionsBitForBit()
+{
+    ui::SimulationController controller;
+    const auto scene = netScene();
+    controller.setScene(scene, ui::SceneChange::Replace);
+    controller.play();
+    QTRY_VERIFY(controller.frame() && controller.frame()->snapshot->time > 0.05);
+    controller.pause();
+    const auto reset = frameAfter(controller, controller.reset());
+    QVERIFY(reset);
+    QCOMPARE(reset->snapshot->time, 0.0);
+    QCOMPARE(reset->snapshot->step, 0u);
+    const std::vector<float> &positions = reset->snapshot->positions;
+    for (std::size_t i = 0; i < scene->particles.size(); ++i)
+        for (std::size_t axis = 0; axis < 3; ++axis)
+            QCOMPARE(positions[3 * i + axis], float(scene->particles[i].position[Eigen::Index(axis)]));
+}
+
+void TestSimulationController::parameterEditReachesTheWorker()
+{
+    ui::SimulationController controller;
+    controller.setScene(netScene(4e3), ui::SceneChange::Replace);
+    controller.play();
+    QTRY_VERIFY(controller.frame() && controller.frame()->snapshot->step > 2);
+
+    // while running: the next frame's model has the new stiffness, and time went on
+    const auto frame = frameAfter(controller, controller.setScene(netScene(250.0), ui::SceneChange::Parameters));
+    QVERIFY(frame);
+    QCOMPARE(frame->model->stiffness[0], 250.0);
+    QVERIFY(frame->snapshot->step > 2);
+    QVERIFY(controller.isRunning());
+}
+
+void TestSimulationController::tiltWithTheSameSeedGivesTheSameKick()
+{
+    // tilt, then one step: the positions show the kick
+    auto kicked = [](std::uint64_t seed) {
+        ui::SimulationController controller;
+        controller.setScene(netScene(), ui::SceneChange::Replace);
+        controller.setTiltSeed(seed);
+        controller.tilt();
+        return frameAfter(controller, controller.stepOnce())->snapshot->positions;
+    };
+    auto unkicked = [] {
+        ui::SimulationController controller;
+        controller.setScene(netScene(), ui::SceneChange::Replace);
+        return frameAfter(controller, controller.stepOnce())->snapshot->positions;
+    };
+    QVERIFY(kicked(7) == kicked(7));
+    QVERIFY(kicked(7) != kicked(8));
+    QVERIFY(kicked(7) != unkicked());
+}
+
+void TestSimulationController::blowupPausesAndIsReported()
+{
+    ui::SimulationController controller;
+    QSignalSpy blewUp(&controller, &ui::SimulationController::blewUp);
+    controller.setScene(explodingScene(), ui::SceneChange::Replace);
+    controller.play();
+    QVERIFY(blewUp.wait(10000));
+    QVERIFY(!controller.isRunning());
+    QVERIFY(blewUp.front().front().toString().startsWith("particle "));
+    const auto frame = frameAfter(controller, controller.sync());
+    QVERIFY(!frame->running);
+    QVERIFY(!frame->snapshot->blowup.has_value());  // back at the last good state
+}
+
+void TestSimulationController::shutDownWhileRunningEndsTheThread()
+{
+    ui::SimulationController controller;
+    controller.setScene(netScene(), ui::SceneChange::Replace);
+    controller.play();
+    QTRY_VERIFY(controller.frame() && controller.frame()->snapshot->time > 0.0);
+    QVERIFY(controller.workerThread()->isRunning());
+    controller.shutDown();
+    QVERIFY(controller.workerThread()->isFinished());
+    QVERIFY(controller.isShutDown());
+    QVERIFY(!controller.isRunning());
+    controller.shutDown();  // twice is harmless
+}
+
+QTEST_GUILESS_MAIN(TestSimulationController)
+#include "test_simulation_controller.moc"

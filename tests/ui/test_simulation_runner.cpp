@@ -1,0 +1,273 @@
+// SimulationRunner, the worker's Qt-free half, driven one edit and one advance at a time: whole
+// steps from wall time, edits between steps, reset to the exact initial state, the seeded tilt,
+// the steering force, and the stop at a blow-up.
+
+#include "ui/simulation_runner.h"
+
+#include "core/step.h"
+
+#include <QtTest>
+
+namespace {
+
+// a pinned anchor at the origin and a free 1 kg particle on a spring, released stretched; no
+// gravity, so only the spring (and what a test adds) moves it
+std::shared_ptr<const core::SceneDesc> springScene(double stiffness = 100.0, double timeStep = 0.25)
+{
+    auto scene = std::make_shared<core::SceneDesc>();
+    scene->name = "pair";
+    scene->settings.timeStep = timeStep;
+    scene->settings.gravity.setZero();
+    scene->settings.planeCollisions = false;
+    scene->settings.particleCollisions = false;
+    core::ParticleDesc anchor;
+    anchor.pinned = true;
+    core::ParticleDesc bob;
+    bob.position = {1.0, 0.0, 0.0};
+    bob.velocity = {0.0, 0.5, 0.0};
+    scene->particles = {anchor, bob};
+    scene->springs = {core::SpringDesc{0, 1, stiffness, 0.0, 0.5}};
+    return scene;
+}
+
+ui::SimulationRunner runnerWith(std::shared_ptr<const core::SceneDesc> scene)
+{
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{std::move(scene), ui::SceneChange::Replace});
+    return runner;
+}
+
+constexpr double kNoBudgetLimit = 1e9;  // s
+
+}  // namespace
+
+class TestSimulationRunner : public QObject {
+    Q_OBJECT
+
+private slots:
+    void startsPausedAtTheInitialState();
+    void advancesInWholeStepsAndOwesTheRest();
+    void pausedDoesNotAdvance();
+    void budgetDropsTheBacklog();
+    void stepOnceStepsAndPauses();
+    void resetRestoresTheInitialStateExactly();
+    void parameterChangeKeepsTheState();
+    void structureChangeKeepsTheMotionWhenTheCountMatches();
+    void replaceStartsAfresh();
+    void tiltIsSeeded();
+    void tiltLeavesPinnedParticlesAlone();
+    void steeringPushesTheParticle();
+    void steeringSurvivesResetButNotReplace();
+    void blowupPausesAndRestoresTheLastGoodState();
+};
+
+void TestSimulationRunner::startsPausedAtTheInitialState()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    QVERIFY(runner.hasScene());
+    QVERIFY(!runner.isRunning());
+    QCOMPARE(runner.state().step, 0u);
+    QCOMPARE(runner.state().position(0, 1), 1.0);
+    QCOMPARE(runner.model()->stiffness[0], 100.0);
+}
+
+void TestSimulationRunner::advancesInWholeStepsAndOwesTheRest()
+{
+    // time step 0.25 s: 0.625 s of wall time is 2 steps and 0.125 s owed; 0.125 s more is a third
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::PlayEdit{});
+    QCOMPARE(runner.advance(0.625, kNoBudgetLimit).steps, 2);
+    QCOMPARE(runner.state().time, 0.5);
+    QCOMPARE(runner.advance(0.125, kNoBudgetLimit).steps, 1);
+    QCOMPARE(runner.state().step, 3u);
+    QCOMPARE(runner.advance(0.0625, kNoBudgetLimit).steps, 0);
+}
+
+void TestSimulationRunner::pausedDoesNotAdvance()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    QCOMPARE(runner.advance(1.0, kNoBudgetLimit).steps, 0);
+    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::PauseEdit{});
+    QCOMPARE(runner.advance(1.0, kNoBudgetLimit).steps, 0);
+    QCOMPARE(runner.state().time, 0.0);
+}
+
+void TestSimulationRunner::budgetDropsTheBacklog()
+{
+    // no computing time at all: one step, and the rest is given up rather than owed
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::PlayEdit{});
+    const ui::SimulationRunner::Advance advance = runner.advance(1.0, 0.0);
+    QCOMPARE(advance.steps, 1);
+    QCOMPARE(advance.droppedSeconds, 0.75);
+    QCOMPARE(runner.advance(0.125, kNoBudgetLimit).steps, 0);
+}
+
+void TestSimulationRunner::stepOnceStepsAndPauses()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::StepOnceEdit{});
+    QVERIFY(!runner.isRunning());
+    QCOMPARE(runner.state().step, 1u);
+    QCOMPARE(runner.snapshot()->step, 1u);
+}
+
+void TestSimulationRunner::resetRestoresTheInitialStateExactly()
+{
+    const auto scene = springScene();
+    ui::SimulationRunner runner = runnerWith(scene);
+    runner.apply(ui::PlayEdit{});
+    QVERIFY(runner.advance(2.0, kNoBudgetLimit).steps > 0);
+    QVERIFY(runner.state().position(0, 1) != 1.0);
+
+    runner.apply(ui::ResetEdit{});
+    const core::State &state = runner.state();
+    QCOMPARE(state.time, 0.0);
+    QCOMPARE(state.step, 0u);
+    for (int i = 0; i < 2; ++i) {
+        QVERIFY(state.position.col(i) == scene->particles[std::size_t(i)].position);
+        QVERIFY(state.velocity.col(i) == (i == 0 ? Eigen::Vector3d::Zero() : scene->particles[1].velocity));
+    }
+    QVERIFY(runner.isRunning());  // reset does not pause
+}
+
+void TestSimulationRunner::parameterChangeKeepsTheState()
+{
+    ui::SimulationRunner runner = runnerWith(springScene(100.0));
+    runner.apply(ui::StepOnceEdit{});
+    const core::State before = runner.state();
+
+    runner.apply(ui::SetSceneEdit{springScene(400.0), ui::SceneChange::Parameters});
+    QCOMPARE(runner.model()->stiffness[0], 400.0);
+    QVERIFY(runner.state().position == before.position);
+    QVERIFY(runner.state().velocity == before.velocity);
+    QCOMPARE(runner.state().step, 1u);
+
+    // and the next step uses the new stiffness: the same as a fresh run from that state
+    core::State expected = before;
+    core::step(*core::compileModel(*springScene(400.0)), expected);
+    runner.apply(ui::StepOnceEdit{});
+    QVERIFY(runner.state().position == expected.position);
+}
+
+void TestSimulationRunner::structureChangeKeepsTheMotionWhenTheCountMatches()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::StepOnceEdit{});
+    const core::State before = runner.state();
+
+    // the same particles, one more spring: the motion carries over
+    auto changed = std::make_shared<core::SceneDesc>(*springScene());
+    changed->springs.push_back(core::SpringDesc{1, 0, 10.0, 0.0, 0.5});
+    runner.apply(ui::SetSceneEdit{changed, ui::SceneChange::Structure});
+    QCOMPARE(runner.model()->springCount(), 2);
+    QVERIFY(runner.state().position == before.position);
+    QVERIFY(runner.state().velocity == before.velocity);
+
+    // a particle more: the new scene's initial conditions
+    changed = std::make_shared<core::SceneDesc>(*changed);
+    changed->particles.push_back(core::ParticleDesc{});
+    runner.apply(ui::SetSceneEdit{changed, ui::SceneChange::Structure});
+    QCOMPARE(runner.state().position.cols(), Eigen::Index(3));
+    QCOMPARE(runner.state().position(0, 1), 1.0);
+    QCOMPARE(runner.state().step, 0u);
+}
+
+void TestSimulationRunner::replaceStartsAfresh()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::PlayEdit{});
+    runner.advance(1.0, kNoBudgetLimit);
+    runner.apply(ui::SetSceneEdit{springScene(50.0), ui::SceneChange::Replace});
+    QVERIFY(!runner.isRunning());
+    QCOMPARE(runner.state().step, 0u);
+    QCOMPARE(runner.state().position(0, 1), 1.0);
+}
+
+void TestSimulationRunner::tiltIsSeeded()
+{
+    // the same seed, the same kick; another seed, another kick
+    ui::SimulationRunner a = runnerWith(springScene());
+    ui::SimulationRunner b = runnerWith(springScene());
+    ui::SimulationRunner c = runnerWith(springScene());
+    a.apply(ui::TiltEdit{42, 2.0});
+    b.apply(ui::TiltEdit{42, 2.0});
+    c.apply(ui::TiltEdit{43, 2.0});
+    QVERIFY(a.state().velocity == b.state().velocity);
+    QVERIFY(a.state().velocity != c.state().velocity);
+
+    // at most `speed` per component
+    const Eigen::Vector3d kick = a.state().velocity.col(1) - springScene()->particles[1].velocity;
+    QVERIFY(kick.cwiseAbs().maxCoeff() <= 2.0);
+    QVERIFY(!kick.isZero());
+}
+
+void TestSimulationRunner::tiltLeavesPinnedParticlesAlone()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::TiltEdit{1, 5.0});
+    QVERIFY(runner.state().velocity.col(0).isZero(0.0));
+}
+
+void TestSimulationRunner::steeringPushesTheParticle()
+{
+    // without the spring's pull (stiffness 0) a 1 kg particle pushed by 2 N gains exactly h·2 m/s
+    ui::SimulationRunner runner = runnerWith(springScene(0.0));
+    const Eigen::Vector3d force(2.0, 0.0, -1.0);
+    runner.apply(ui::SteerEdit{1, force});
+    runner.apply(ui::StepOnceEdit{});
+    const Eigen::Vector3d expected = springScene()->particles[1].velocity + 0.25 * force;
+    QVERIFY(runner.state().velocity.col(1) == expected);
+
+    // a zero force stops pushing
+    runner.apply(ui::SteerEdit{1, Eigen::Vector3d::Zero()});
+    runner.apply(ui::StepOnceEdit{});
+    QVERIFY(runner.state().velocity.col(1) == expected);
+    QCOMPARE(runner.state().appliedCount, 0);
+}
+
+void TestSimulationRunner::steeringSurvivesResetButNotReplace()
+{
+    ui::SimulationRunner runner = runnerWith(springScene(0.0));
+    runner.apply(ui::SteerEdit{1, Eigen::Vector3d(1.0, 0.0, 0.0)});
+    runner.apply(ui::ResetEdit{});
+    QCOMPARE(runner.state().appliedCount, 1);
+    runner.apply(ui::SetSceneEdit{springScene(0.0), ui::SceneChange::Parameters});
+    QCOMPARE(runner.state().appliedCount, 1);
+    runner.apply(ui::SetSceneEdit{springScene(0.0), ui::SceneChange::Replace});
+    QCOMPARE(runner.state().appliedCount, 0);
+}
+
+void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
+{
+    // far too stiff for the time step: the amplitude grows ~h²k/m = 10⁷ times a step
+    ui::SimulationRunner runner = runnerWith(springScene(1e9, 0.1));
+    runner.apply(ui::PlayEdit{});
+    runner.advance(0.1, kNoBudgetLimit);
+    const core::State good = runner.state();
+    runner.advance(0.1, kNoBudgetLimit);
+    runner.advance(0.1, kNoBudgetLimit);
+    runner.advance(0.1, kNoBudgetLimit);
+
+    // paused, reported once, and back at the state before the steps that blew up
+    QVERIFY(!runner.isRunning());
+    const std::optional<core::Blowup> blowup = runner.takeBlowup();
+    QVERIFY(blowup.has_value());
+    QCOMPARE(blowup->particle, 1);
+    QVERIFY(!runner.takeBlowup().has_value());
+    QVERIFY(runner.state().position.allFinite());
+    QVERIFY(!runner.state().blowup.has_value());
+    QVERIFY(runner.state().step < blowup->step);
+    QVERIFY(runner.state().step >= good.step);
+    QVERIFY(QString::fromStdString(ui::describeBlowup(*blowup)).startsWith("particle 1's"));
+
+    // it can go on from there once the scene is fixed
+    runner.apply(ui::SetSceneEdit{springScene(100.0, 0.1), ui::SceneChange::Parameters});
+    runner.apply(ui::StepOnceEdit{});
+    QVERIFY(!runner.takeBlowup().has_value());
+}
+
+QTEST_APPLESS_MAIN(TestSimulationRunner)
+#include "test_simulation_runner.moc"

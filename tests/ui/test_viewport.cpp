@@ -1,0 +1,524 @@
+// The viewport on screen, with real events: what grabFramebuffer() shows at the pixels the camera
+// says a particle, a plane or a spring lands on; orbit, pan and zoom by mouse and wheel; frame all
+// by key; the style uploaded only when it changes; and drawing again after the context is replaced.
+
+#include "ui/viewport.h"
+
+#include "core/model.h"
+#include "core/snapshot.h"
+#include "core/state.h"
+
+#include <QSignalSpy>
+#include <QVBoxLayout>
+#include <QtTest>
+
+#include <cmath>
+
+namespace {
+
+constexpr QSize kViewportSize(480, 360);
+
+// particle 0 free, 1 pinned, 2 free; a stretched spring from 0 to 2
+std::shared_ptr<core::Snapshot> tinySnapshot()
+{
+    auto s = std::make_shared<core::Snapshot>();
+    s->positions = {0.0f, 0.5f, 0.0f, 1.2f, 0.5f, 0.0f, -1.0f, 0.9f, 0.6f};
+    s->radii = {0.25f, 0.25f, 0.2f};
+    s->pinned = {0, 1, 0};
+    s->springEnds = {0.0f, 0.5f, 0.0f, -1.0f, 0.9f, 0.6f};
+    s->springStrain = {0.5f};
+    return s;
+}
+
+QVector3D positionOf(const core::Snapshot &s, int i)
+{
+    return QVector3D(s.positions[3 * i], s.positions[3 * i + 1], s.positions[3 * i + 2]);
+}
+
+QColor toColour(const ui::Rgb &c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
+
+// the colour of the grabbed framebuffer at a logical pixel
+QColor colourAt(const QImage &image, const QWidget &widget, QPointF pixel)
+{
+    const double scale = double(image.width()) / widget.width();
+    return image.pixelColor(QPoint(int(pixel.x() * scale), int(pixel.y() * scale)));
+}
+
+// a lit surface keeps its hue: the hue is close and the colour is clearly not grey
+bool sameHue(const QColor &seen, const ui::Rgb &expected, QString *why)
+{
+    const QColor want = toColour(expected);
+    double difference = std::abs(seen.hueF() - want.hueF());
+    difference = std::min(difference, 1.0 - difference);
+    *why = QStringLiteral("seen %1 (hue %2, saturation %3), expected hue %4")
+               .arg(seen.name())
+               .arg(seen.hueF() * 360.0)
+               .arg(seen.saturationF())
+               .arg(want.hueF() * 360.0);
+    return seen.saturationF() > 0.3 && difference < 12.0 / 360.0;
+}
+
+bool nearColour(const QColor &seen, const QColor &expected, int tolerance, QString *why)
+{
+    *why = QStringLiteral("seen %1, expected %2").arg(seen.name(), expected.name());
+    return std::abs(seen.red() - expected.red()) <= tolerance &&
+           std::abs(seen.green() - expected.green()) <= tolerance &&
+           std::abs(seen.blue() - expected.blue()) <= tolerance;
+}
+
+bool isBackground(const QColor &seen, QString *why)
+{
+    return nearColour(seen, toColour(ui::kBackgroundColour), 2, why);
+}
+
+}  // namespace
+
+class TestViewport : public QObject {
+    Q_OBJECT
+
+public:
+    // GL has to be set up before the QApplication exists
+    static void initMain()
+    {
+        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
+    }
+
+private slots:
+    void init();
+    void cleanup();
+
+    void showsParticlesOverTheBackground_data();
+    void showsParticlesOverTheBackground();
+    void pinnedParticlesCarryADarkRing();
+    void selectionIsHighlighted();
+    void styleIsUploadedOnlyWhenItChanges();
+    void springsAreColouredByStrain();
+    void planesAreTranslucent();
+    void drawsASnapshotOfTheCore();
+    void leftDragOnEmptySpaceOrbits();
+    void leftPressOnAParticleDoesNotOrbit();
+    void middleAndShiftDragPan_data();
+    void middleAndShiftDragPan();
+    void wheelZoomsAtTheCursor();
+    void frameAllKeysBringEveryParticleIntoView_data();
+    void frameAllKeysBringEveryParticleIntoView();
+    void initialViewFramesTheSceneAtItsFinalSize();
+    void reportsFrameTimes();
+    void drawsAgainInANewContext();
+
+private:
+    QPointF projected(int particle) const;
+    QImage grab();
+
+    std::unique_ptr<ui::Viewport> m_viewport;
+    std::shared_ptr<core::Snapshot> m_snapshot;
+};
+
+void TestViewport::init()
+{
+    m_viewport = std::make_unique<ui::Viewport>();
+    m_viewport->resize(kViewportSize);
+    m_viewport->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_viewport.get()));
+    m_snapshot = tinySnapshot();
+    m_viewport->setSnapshot(m_snapshot);
+}
+
+void TestViewport::cleanup()
+{
+    m_viewport.reset();
+    m_snapshot.reset();
+}
+
+QPointF TestViewport::projected(int particle) const
+{
+    const auto pixel = m_viewport->camera().project(positionOf(*m_snapshot, particle));
+    return pixel.value_or(QPointF(-1.0, -1.0));
+}
+
+QImage TestViewport::grab()
+{
+    QImage image = m_viewport->grabFramebuffer();
+    if (image.isNull())
+        qWarning("grabFramebuffer() gave no image");
+    return image;
+}
+
+void TestViewport::showsParticlesOverTheBackground_data()
+{
+    QTest::addColumn<ui::ParticleDrawing>("drawing");
+    QTest::newRow("impostor") << ui::ParticleDrawing::Impostor;
+    QTest::newRow("mesh") << ui::ParticleDrawing::Mesh;
+}
+
+void TestViewport::showsParticlesOverTheBackground()
+{
+    QFETCH(ui::ParticleDrawing, drawing);
+    m_viewport->setParticleDrawing(drawing);
+    const QImage image = grab();
+    QCOMPARE(image.size(), kViewportSize * m_viewport->devicePixelRatio());
+    QString why;
+
+    // the free particles in the free colour, the pinned one in the pinned colour
+    for (int particle : {0, 2}) {
+        const QPointF pixel = projected(particle);
+        QVERIFY(QRectF(QPointF(0, 0), QSizeF(kViewportSize)).contains(pixel));
+        QVERIFY2(sameHue(colourAt(image, *m_viewport, pixel), ui::kFreeColour, &why), qPrintable(why));
+    }
+    QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(1)), ui::kPinnedColour, &why), qPrintable(why));
+
+    // the background far from everything
+    QVERIFY2(isBackground(colourAt(image, *m_viewport, QPointF(2, 2)), &why), qPrintable(why));
+    QCOMPARE(m_viewport->particleAt(QPointF(2, 2)), -1);
+    QCOMPARE(m_viewport->particleAt(projected(2)), 2);
+}
+
+void TestViewport::pinnedParticlesCarryADarkRing()
+{
+    // 61 % of the way to the outline the pinned particle is much darker than at its middle; the
+    // free one is not
+    const QImage image = grab();
+    const ui::Camera &camera = m_viewport->camera();
+    auto ringOverMiddle = [&](int particle) {
+        const QVector3D centre = positionOf(*m_snapshot, particle);
+        const QVector3D towardEye = (camera.eye() - centre).normalized();
+        const QVector3D side = QVector3D::crossProduct(towardEye, camera.up()).normalized();
+        const QPointF ring = camera.project(centre + side * 0.61f * m_snapshot->radii[particle]).value();
+        return colourAt(image, *m_viewport, ring).valueF() / colourAt(image, *m_viewport, projected(particle)).valueF();
+    };
+    const double pinned = ringOverMiddle(1);
+    const double free = ringOverMiddle(0);
+    QCOMPARE_LT(pinned, 0.5);
+    QCOMPARE_GT(free, 0.7);
+}
+
+void TestViewport::selectionIsHighlighted()
+{
+    QString why;
+    m_viewport->setSelection({0});
+    QImage image = grab();
+    QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(0)), ui::kSelectedColour, &why), qPrintable(why));
+    QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(2)), ui::kFreeColour, &why), qPrintable(why));
+
+    // and back
+    m_viewport->setSelection({});
+    image = grab();
+    QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(0)), ui::kFreeColour, &why), qPrintable(why));
+}
+
+void TestViewport::styleIsUploadedOnlyWhenItChanges()
+{
+    grab();
+    const int uploads = m_viewport->styleUploads();
+    QCOMPARE_GE(uploads, 1);
+
+    // new positions every frame: no new style
+    for (int frame = 0; frame < 3; ++frame) {
+        auto moved = std::make_shared<core::Snapshot>(*m_snapshot);
+        moved->positions[0] += 0.05f * float(frame + 1);
+        moved->step = std::uint64_t(frame + 1);
+        m_viewport->setSnapshot(moved);
+        grab();
+    }
+    QCOMPARE(m_viewport->styleUploads(), uploads);
+
+    // the moved particle is drawn where it now is
+    m_snapshot = std::make_shared<core::Snapshot>(*m_viewport->snapshot());
+    QString why;
+    QVERIFY2(sameHue(colourAt(grab(), *m_viewport, projected(0)), ui::kFreeColour, &why), qPrintable(why));
+
+    // a pin does need one, and shows
+    auto pinned = std::make_shared<core::Snapshot>(*m_snapshot);
+    pinned->pinned[2] = 1;
+    m_snapshot = pinned;
+    m_viewport->setSnapshot(pinned);
+    const QImage image = grab();
+    QCOMPARE(m_viewport->styleUploads(), uploads + 1);
+    QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(2)), ui::kPinnedColour, &why), qPrintable(why));
+}
+
+void TestViewport::springsAreColouredByStrain()
+{
+    // the middle of the stretched spring, away from both spheres, is red (a 1-pixel line: look at
+    // the pixels around it for the reddest)
+    const QImage image = grab();
+    const QVector3D middle = 0.5f * (positionOf(*m_snapshot, 0) + positionOf(*m_snapshot, 2));
+    const QPointF pixel = m_viewport->camera().project(middle).value();
+    QCOMPARE(m_viewport->particleAt(pixel), -1);
+    int reddest = -255;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const QColor c = colourAt(image, *m_viewport, pixel + QPointF(dx, dy));
+            reddest = std::max(reddest, c.red() - c.blue());
+        }
+    QCOMPARE_GT(reddest, 60);
+
+    // compressed, it turns blue
+    auto compressed = std::make_shared<core::Snapshot>(*m_snapshot);
+    compressed->springStrain[0] = -0.5f;
+    m_viewport->setSnapshot(compressed);
+    const QImage blue = grab();
+    int bluest = -255;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const QColor c = colourAt(blue, *m_viewport, pixel + QPointF(dx, dy));
+            bluest = std::max(bluest, c.blue() - c.red());
+        }
+    QCOMPARE_GT(bluest, 60);
+}
+
+void TestViewport::planesAreTranslucent()
+{
+    // a wall behind the particles, facing the eye: a point on it, in no particle, shows the
+    // background blended with the plane colour
+    const ui::Camera &camera = m_viewport->camera();
+    core::PlaneDesc wall;
+    const QVector3D facing = -camera.forward();
+    wall.normal = Eigen::Vector3d(facing.x(), facing.y(), facing.z());
+    const QVector3D behind = camera.target() + camera.forward() * 0.8f;
+    wall.offset = QVector3D::dotProduct(facing, behind);
+    m_viewport->setPlanes({wall});
+
+    const QVector3D onWall = behind + camera.up() * 0.9f + camera.right() * 0.3f;
+    const QPointF pixel = camera.project(onWall).value();
+    QCOMPARE(m_viewport->particleAt(pixel), -1);
+    const QImage image = grab();
+    const float a = ui::kPlaneAlpha;
+    const QColor expected = QColor::fromRgbF(ui::kBackgroundColour[0] * (1 - a) + ui::kPlaneColour[0] * a,
+                                             ui::kBackgroundColour[1] * (1 - a) + ui::kPlaneColour[1] * a,
+                                             ui::kBackgroundColour[2] * (1 - a) + ui::kPlaneColour[2] * a);
+    QString why;
+    QVERIFY2(nearColour(colourAt(image, *m_viewport, pixel), expected, 3, &why), qPrintable(why));
+
+    // the corner is outside the wall's square and stays background
+    QVERIFY2(isBackground(colourAt(image, *m_viewport, QPointF(2, 2)), &why), qPrintable(why));
+}
+
+void TestViewport::drawsASnapshotOfTheCore()
+{
+    // the core's own snapshot of a small scene: a pinned particle and a free one on a spring
+    core::SceneDesc scene;
+    scene.name = "viewport test";
+    core::ParticleDesc anchor;
+    anchor.position = {0.0, 1.0, 0.0};
+    anchor.radius = 0.2;
+    anchor.pinned = true;
+    core::ParticleDesc bob;
+    bob.position = {0.8, 0.4, 0.0};
+    bob.radius = 0.3;
+    scene.particles = {anchor, bob};
+    core::SpringDesc spring;
+    spring.a = 0;
+    spring.b = 1;
+    spring.stiffness = 50.0;
+    spring.restLength = 0.5;
+    scene.springs = {spring};
+    const auto model = core::compileModel(scene);
+    const core::State state = core::makeState(*model, scene);
+    const auto snapshot = core::makeSnapshot(*model, state);
+    QCOMPARE(snapshot->particleCount(), 2);
+
+    m_snapshot = std::make_shared<core::Snapshot>(*snapshot);
+    m_viewport->setSnapshot(snapshot);
+    m_viewport->frameAll();
+    const QImage image = grab();
+    QString why;
+    QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(0)), ui::kPinnedColour, &why), qPrintable(why));
+    QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(1)), ui::kFreeColour, &why), qPrintable(why));
+    QVERIFY2(isBackground(colourAt(image, *m_viewport, QPointF(2, 2)), &why), qPrintable(why));
+}
+
+void TestViewport::leftDragOnEmptySpaceOrbits()
+{
+    const QPoint start(30, 30);
+    QCOMPARE(m_viewport->particleAt(start), -1);
+    const QPointF before = projected(2);
+    const float yaw = m_viewport->camera().yaw();
+
+    // a real drag: press, a few moves, release
+    QTest::mousePress(m_viewport.get(), Qt::LeftButton, Qt::NoModifier, start);
+    for (int step = 1; step <= 4; ++step)
+        QTest::mouseMove(m_viewport.get(), start + QPoint(20 * step, 5 * step));
+    QTest::mouseRelease(m_viewport.get(), Qt::LeftButton, Qt::NoModifier, start + QPoint(80, 20));
+
+    QCOMPARE_LT(std::abs(m_viewport->camera().yaw() - (yaw - 80.0f * ui::Camera::kOrbitDegreesPerPixel)), 1e-3f);
+    const QPointF after = projected(2);
+    QCOMPARE_GT(QLineF(before, after).length(), 10.0);
+
+    // and the picture agrees with the camera
+    QString why;
+    QVERIFY2(sameHue(colourAt(grab(), *m_viewport, after), ui::kFreeColour, &why), qPrintable(why));
+}
+
+void TestViewport::leftPressOnAParticleDoesNotOrbit()
+{
+    QSignalSpy pressed(m_viewport.get(), &ui::Viewport::particlePressed);
+    const QPoint onParticle = projected(1).toPoint();
+    const float yaw = m_viewport->camera().yaw();
+    QTest::mousePress(m_viewport.get(), Qt::LeftButton, Qt::ControlModifier, onParticle);
+    QTest::mouseMove(m_viewport.get(), onParticle + QPoint(60, 0));
+    QTest::mouseRelease(m_viewport.get(), Qt::LeftButton, Qt::NoModifier, onParticle + QPoint(60, 0));
+
+    QCOMPARE(pressed.count(), 1);
+    QCOMPARE(pressed.at(0).at(0).toInt(), 1);
+    QCOMPARE(pressed.at(0).at(1).value<Qt::KeyboardModifiers>(), Qt::KeyboardModifiers(Qt::ControlModifier));
+    QCOMPARE(m_viewport->camera().yaw(), yaw);
+}
+
+void TestViewport::middleAndShiftDragPan_data()
+{
+    QTest::addColumn<Qt::MouseButton>("button");
+    QTest::addColumn<Qt::KeyboardModifiers>("modifiers");
+    QTest::newRow("middle") << Qt::MiddleButton << Qt::KeyboardModifiers();
+    QTest::newRow("shift+left") << Qt::LeftButton << Qt::KeyboardModifiers(Qt::ShiftModifier);
+}
+
+void TestViewport::middleAndShiftDragPan()
+{
+    // the scene follows the mouse; the view direction stays
+    QFETCH(Qt::MouseButton, button);
+    QFETCH(Qt::KeyboardModifiers, modifiers);
+    const QPoint start(40, 300);
+    const QVector3D onTargetPlane = m_viewport->camera().target();
+    const QPointF before = m_viewport->camera().project(onTargetPlane).value();
+    const QPointF particleBefore = projected(0);
+    const QVector3D forward = m_viewport->camera().forward();
+    QTest::mousePress(m_viewport.get(), button, modifiers, start);
+    QTest::mouseMove(m_viewport.get(), start + QPoint(30, -10));
+    QTest::mouseMove(m_viewport.get(), start + QPoint(60, -20));
+    QTest::mouseRelease(m_viewport.get(), button, modifiers, start + QPoint(60, -20));
+
+    // the target's plane moves pixel for pixel, a particle in front of it a little more or less
+    const QPointF after = m_viewport->camera().project(onTargetPlane).value();
+    QCOMPARE_LT(std::abs(after.x() - before.x() - 60.0), 0.5);
+    QCOMPARE_LT(std::abs(after.y() - before.y() + 20.0), 0.5);
+    const QPointF particleAfter = projected(0);
+    QCOMPARE_GT(particleAfter.x() - particleBefore.x(), 40.0);
+    QCOMPARE_LT(particleAfter.y() - particleBefore.y(), -10.0);
+    QCOMPARE_GT(QVector3D::dotProduct(m_viewport->camera().forward(), forward), 0.99999f);
+}
+
+void TestViewport::wheelZoomsAtTheCursor()
+{
+    // the wheel over particle 2: it stays under the cursor and grows on screen
+    const QPointF cursor = projected(2);
+    const float distance = m_viewport->camera().distance();
+    auto screenRadius = [&] {
+        const ui::Camera &camera = m_viewport->camera();
+        return QLineF(projected(2), camera.project(positionOf(*m_snapshot, 2) + camera.up() * 0.2f).value()).length();
+    };
+    const double radiusBefore = screenRadius();
+
+    QWheelEvent wheel(cursor, m_viewport->mapToGlobal(cursor), QPoint(), QPoint(0, 2 * 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(m_viewport.get(), &wheel);
+
+    QCOMPARE_LT(m_viewport->camera().distance(), 0.8f * distance);
+    QCOMPARE_GT(screenRadius(), 1.2 * radiusBefore);
+    QCOMPARE_LT(QLineF(projected(2), cursor).length(), 0.5 * screenRadius());
+    QString why;
+    QVERIFY2(sameHue(colourAt(grab(), *m_viewport, cursor), ui::kFreeColour, &why), qPrintable(why));
+
+    // and back out
+    QWheelEvent back(cursor, m_viewport->mapToGlobal(cursor), QPoint(), QPoint(0, -2 * 120), Qt::NoButton,
+                     Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(m_viewport.get(), &back);
+    QCOMPARE_LT(std::abs(m_viewport->camera().distance() - distance), 1e-3f * distance);
+}
+
+void TestViewport::frameAllKeysBringEveryParticleIntoView_data()
+{
+    QTest::addColumn<int>("key");
+    QTest::newRow("F") << int(Qt::Key_F);
+    QTest::newRow("Home") << int(Qt::Key_Home);
+}
+
+void TestViewport::frameAllKeysBringEveryParticleIntoView()
+{
+    QFETCH(int, key);
+
+    // lose the scene: look at a point far away, from close by, from another side
+    ui::Camera &camera = m_viewport->camera();
+    camera.setTarget(QVector3D(40.0f, 30.0f, -20.0f));
+    camera.setDistance(0.5f);
+    camera.orbit(300.0f, 50.0f);
+    auto inView = [&](int particle) {
+        const auto pixel = camera.project(positionOf(*m_snapshot, particle));
+        return pixel && QRectF(QPointF(0, 0), QSizeF(kViewportSize)).contains(*pixel);
+    };
+    QVERIFY(!inView(0) && !inView(1) && !inView(2));
+
+    QTest::keyClick(m_viewport.get(), Qt::Key(key));
+    for (int particle = 0; particle < 3; ++particle) {
+        QVERIFY2(inView(particle), qPrintable(QString::number(particle)));
+        // the whole sphere, not only its centre
+        const QVector3D centre = positionOf(*m_snapshot, particle);
+        const float r = m_snapshot->radii[particle];
+        for (const QVector3D &edge : {camera.right(), -camera.right(), camera.up(), -camera.up()}) {
+            const QPointF pixel = camera.project(centre + edge * r).value();
+            QVERIFY(QRectF(QPointF(0, 0), QSizeF(kViewportSize)).contains(pixel));
+        }
+    }
+    QString why;
+    QVERIFY2(sameHue(colourAt(grab(), *m_viewport, projected(1)), ui::kPinnedColour, &why), qPrintable(why));
+}
+
+void TestViewport::initialViewFramesTheSceneAtItsFinalSize()
+{
+    // a snapshot given before the widget is shown, wide, then shown tall: every particle in view
+    ui::Viewport viewport;
+    viewport.resize(600, 200);
+    viewport.setSnapshot(m_snapshot);
+    const QSize tall(200, 600);
+    viewport.resize(tall);
+    viewport.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&viewport));
+    const QImage image = viewport.grabFramebuffer();
+    QCOMPARE(viewport.camera().viewportSize(), tall);
+    QString why;
+    for (int particle = 0; particle < 3; ++particle) {
+        const QVector3D centre = positionOf(*m_snapshot, particle);
+        for (const QVector3D &edge : {viewport.camera().right(), -viewport.camera().right()}) {
+            const QPointF pixel = viewport.camera().project(centre + edge * m_snapshot->radii[particle]).value();
+            QVERIFY(QRectF(QPointF(0, 0), QSizeF(tall)).contains(pixel));
+        }
+        const ui::Rgb &colour = particle == 1 ? ui::kPinnedColour : ui::kFreeColour;
+        const QPointF pixel = viewport.camera().project(centre).value();
+        QVERIFY2(sameHue(colourAt(image, viewport, pixel), colour, &why), qPrintable(why));
+    }
+}
+
+void TestViewport::reportsFrameTimes()
+{
+    QSignalSpy frames(m_viewport.get(), &ui::Viewport::frameTimeMeasured);
+    m_viewport->update();
+    QVERIFY(frames.wait(10000));
+    const double seconds = frames.last().at(0).toDouble();
+    QCOMPARE_GT(seconds, 0.0);
+    QCOMPARE_LT(seconds, 10.0);
+}
+
+void TestViewport::drawsAgainInANewContext()
+{
+    // moving the viewport into another window replaces its context: it frees and rebuilds
+    QWidget window;
+    auto *layout = new QVBoxLayout(&window);
+    layout->setContentsMargins(0, 0, 0, 0);
+    ui::Viewport *viewport = m_viewport.get();
+    layout->addWidget(viewport);
+    window.resize(kViewportSize);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTRY_COMPARE(viewport->size(), kViewportSize);
+
+    QString why;
+    QVERIFY2(sameHue(colourAt(grab(), *viewport, projected(1)), ui::kPinnedColour, &why), qPrintable(why));
+    QVERIFY2(sameHue(colourAt(grab(), *viewport, projected(0)), ui::kFreeColour, &why), qPrintable(why));
+
+    // hand it back before the window goes
+    viewport->setParent(nullptr);
+}
+
+QTEST_MAIN(TestViewport)
+#include "test_viewport.moc"

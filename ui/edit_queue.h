@@ -1,0 +1,68 @@
+#pragma once
+// Edits: every change the UI makes to the running simulation, as a message that the worker
+// applies between two steps. The UI thread pushes, the worker drains at the start of each tick,
+// so the worker's State is never read or written from the UI thread (MuJoCo's `simulate` applies
+// its pending actions the same way). Qt-free, so the unit tests can drive it directly.
+
+#include "core/scene.h"
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <variant>
+#include <vector>
+
+namespace ui {
+
+// how a new SceneDesc differs from the one the worker has
+enum class SceneChange {
+    Replace,     // another scene (opened, example, new): start from its initial conditions
+    Structure,   // particles, springs or planes changed: rebuild, keep the motion if the count matches
+    Parameters,  // settings or per-spring values only: recompile the model, keep the state
+};
+
+struct SetSceneEdit {
+    std::shared_ptr<const core::SceneDesc> scene;
+    SceneChange change = SceneChange::Replace;
+};
+struct PlayEdit {};
+struct PauseEdit {};
+struct StepOnceEdit {};   // one step, then paused
+struct ResetEdit {};      // back to the scene's initial conditions
+struct TiltEdit {
+    std::uint64_t seed = 0;  // the same seed gives the same kick
+    double speed = 0.0;      // m/s, the largest change of one velocity component
+};
+struct SyncEdit {};       // changes nothing; its frame shows that every earlier edit was applied
+struct SteerEdit {
+    int particle = -1;                                // -1: none
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();  // N, constant until the next SteerEdit
+};
+
+using Edit =
+    std::variant<SetSceneEdit, PlayEdit, PauseEdit, StepOnceEdit, ResetEdit, TiltEdit, SteerEdit, SyncEdit>;
+
+// a thread-safe first-in first-out queue of edits, numbered in the order they were pushed
+class EditQueue {
+public:
+    struct Batch {
+        std::vector<Edit> edits;        // oldest first
+        std::uint64_t lastSequence = 0;  // the number of the newest edit ever drained
+    };
+
+    // returns the edit's sequence number: 1 for the first, then 2, 3, ...
+    std::uint64_t push(Edit edit);
+
+    // takes every pending edit
+    Batch drain();
+
+    bool empty() const;
+
+private:
+    mutable std::mutex m_mutex;
+    std::vector<Edit> m_pending;
+    std::uint64_t m_pushed = 0;
+};
+
+}  // namespace ui

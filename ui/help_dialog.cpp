@@ -1,0 +1,101 @@
+#include "help_dialog.h"
+
+#include <QAction>
+#include <QDialogButtonBox>
+#include <QHeaderView>
+#include <QMenu>
+#include <QMenuBar>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace ui {
+
+HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent), m_table(new QTableWidget(0, 2, this))
+{
+    setWindowTitle(tr("Keyboard and mouse"));
+    m_table->setHorizontalHeaderLabels({tr("Keys"), tr("What they do")});
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionMode(QAbstractItemView::NoSelection);
+    m_table->setShowGrid(false);
+    m_table->setWordWrap(true);
+    m_table->setTextElideMode(Qt::ElideNone);
+
+    // the keys: every action of the menus that has a shortcut, in menu order
+    addSection(tr("Keyboard"));
+    for (const QAction *action : menus.actions())
+        if (const QMenu *menu = action->menu())
+            addMenu(*menu, menu->title().remove(QLatin1Char('&')));
+
+    // the mouse, in the 3D view
+    addSection(tr("Mouse, in the 3D view"));
+    addEntry(tr("Left drag on empty space"), tr("Orbit the camera around its target"));
+    addEntry(tr("Middle drag, or Shift + left drag"), tr("Pan"));
+    addEntry(tr("Wheel"), tr("Zoom towards the point under the cursor"));
+
+    // keys as wide as they need, descriptions wrapped to what is left
+    m_table->resizeColumnToContents(0);
+    connect(m_table->horizontalHeader(), &QHeaderView::sectionResized, m_table, &QTableWidget::resizeRowsToContents);
+
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_table);
+    layout->addWidget(buttons);
+    resize(640, 640);
+}
+
+void HelpDialog::addMenu(const QMenu &menu, const QString &path)
+{
+    for (const QAction *action : menu.actions()) {
+        if (const QMenu *submenu = action->menu()) {
+            addMenu(*submenu, path + QStringLiteral(" › ") + submenu->title().remove(QLatin1Char('&')));
+            continue;
+        }
+        const QList<QKeySequence> shortcuts = action->shortcuts();
+        if (shortcuts.isEmpty())
+            continue;
+        QStringList keys;
+        for (const QKeySequence &shortcut : shortcuts)
+            keys << shortcut.toString(QKeySequence::NativeText);
+        QString description = action->text().remove(QLatin1Char('&')).remove(QStringLiteral("..."));
+        description = path + QStringLiteral(" › ") + description.remove(QChar(0x2026));
+        if (!action->statusTip().isEmpty())
+            description += QStringLiteral(": ") + action->statusTip();
+        addEntry(keys.join(QStringLiteral(", ")), description);
+    }
+}
+
+void HelpDialog::addSection(const QString &title)
+{
+    const int row = m_table->rowCount();
+    m_table->insertRow(row);
+    auto *item = new QTableWidgetItem(title);
+    QFont bold = item->font();
+    bold.setBold(true);
+    item->setFont(bold);
+    m_table->setItem(row, 0, item);
+    m_table->setSpan(row, 0, 1, 2);
+}
+
+void HelpDialog::addEntry(const QString &keys, const QString &description)
+{
+    const int row = m_table->rowCount();
+    m_table->insertRow(row);
+    m_table->setItem(row, 0, new QTableWidgetItem(keys));
+    m_table->setItem(row, 1, new QTableWidgetItem(description));
+}
+
+QStringList HelpDialog::entries() const
+{
+    QStringList rows;
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const QTableWidgetItem *description = m_table->item(row, 1);
+        if (description)
+            rows << m_table->item(row, 0)->text() + QLatin1Char('\t') + description->text();
+    }
+    return rows;
+}
+
+}  // namespace ui

@@ -1,0 +1,584 @@
+#include "main_window.h"
+
+#include "help_dialog.h"
+#include "parameters_panel.h"
+#include "scene_commands.h"
+#include "scene_document.h"
+#include "simulation_controller.h"
+#include "status_text.h"
+#include "viewport.h"
+
+#include "core/io/scene_file.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDateTime>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QImage>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QRegularExpression>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSignalBlocker>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
+#include <QUndoStack>
+
+namespace ui {
+
+namespace {
+
+// the examples in the handout's order; any others found in the resources follow
+constexpr const char *kExampleOrder[] = {"particles", "springs", "collisions", "pool", "cloth"};
+
+QString examplePath(const QString &name)
+{
+    return QStringLiteral(":/scenes/%1.json").arg(name);
+}
+
+QString defaultScreenshotDirectory()
+{
+    const QString pictures = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+    return pictures.isEmpty() ? QDir::homePath() : pictures;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent), m_document(new SceneDocument(this)), m_controller(new SimulationController(this)),
+      m_viewport(new Viewport(this)), m_screenshotDirectory(defaultScreenshotDirectory())
+{
+    // the 3D view in the middle; it takes the keyboard focus when clicked
+    setObjectName(QStringLiteral("mainWindow"));
+    m_viewport->setObjectName(QStringLiteral("viewport"));
+    m_viewport->setFocusPolicy(Qt::StrongFocus);
+    m_viewport->setMinimumSize(320, 240);
+    setCentralWidget(m_viewport);
+
+    createActions();
+    createMenus();
+    createDocks();
+    createStatusBar();
+
+    // the document feeds the worker and the title; the worker feeds the views
+    connect(m_document, &SceneDocument::sceneChanged, this, &MainWindow::sceneChanged);
+    connect(m_document, &SceneDocument::modifiedChanged, this, &QWidget::setWindowModified);
+    connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_controller, &SimulationController::frameChanged, this, &MainWindow::frameChanged);
+    connect(m_controller, &SimulationController::runningChanged, this, &MainWindow::runningChanged);
+    connect(m_controller, &SimulationController::blewUp, this, [this](const QString &message) {
+        showWarning(tr("Blew up: %1. Paused at the last good state; a smaller time step or softer springs may "
+                       "help.")
+                        .arg(message));
+    });
+    connect(m_parameters, &ParametersPanel::valueRefused, this, &MainWindow::showWarning);
+
+    readSettings();
+    QString error;
+    if (!openExample(QString::fromLatin1(kDefaultExample), &error))
+        showWarning(error);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createActions()
+{
+    QStyle *style = this->style();
+
+    // simulation
+    m_playAction = new QAction(style->standardIcon(QStyle::SP_MediaPlay), tr("&Play"), this);
+    m_playAction->setObjectName(QStringLiteral("actionPlay"));
+    m_playAction->setShortcut(Qt::Key_F4);
+    m_playAction->setStatusTip(tr("Start or pause the simulation"));
+    connect(m_playAction, &QAction::triggered, m_controller, &SimulationController::togglePlay);
+
+    m_stepAction = new QAction(style->standardIcon(QStyle::SP_MediaSkipForward), tr("&Step"), this);
+    m_stepAction->setObjectName(QStringLiteral("actionStep"));
+    m_stepAction->setShortcut(Qt::Key_F6);
+    m_stepAction->setStatusTip(tr("Advance one time step, then pause"));
+    connect(m_stepAction, &QAction::triggered, m_controller, &SimulationController::stepOnce);
+
+    m_resetAction = new QAction(style->standardIcon(QStyle::SP_MediaSkipBackward), tr("&Reset"), this);
+    m_resetAction->setObjectName(QStringLiteral("actionReset"));
+    m_resetAction->setShortcut(Qt::Key_F5);
+    m_resetAction->setStatusTip(tr("Back to the scene's initial state"));
+    connect(m_resetAction, &QAction::triggered, m_controller, &SimulationController::reset);
+
+    m_tiltAction = new QAction(tr("&Tilt"), this);
+    m_tiltAction->setObjectName(QStringLiteral("actionTilt"));
+    m_tiltAction->setShortcut(Qt::Key_T);
+    m_tiltAction->setStatusTip(tr("Kick every free particle with a random velocity"));
+    connect(m_tiltAction, &QAction::triggered, m_controller, &SimulationController::tilt);
+
+    m_collisionsAction = new QAction(tr("&Collisions"), this);
+    m_collisionsAction->setObjectName(QStringLiteral("actionCollisions"));
+    m_collisionsAction->setCheckable(true);
+    m_collisionsAction->setShortcut(Qt::Key_A);
+    m_collisionsAction->setStatusTip(tr("Switch plane and particle collisions on or off"));
+    connect(m_collisionsAction, &QAction::triggered, this, &MainWindow::toggleCollisions);
+
+    // steering, for scenes with a steerable particle
+    struct SteerKey {
+        const char *name;
+        const char *text;
+        const char *tip;
+        Qt::Key key;
+        int turn;
+        int change;
+    };
+    const SteerKey steerKeys[] = {
+        {"actionSteerLeft", QT_TR_NOOP("Steer &Left"),
+         QT_TR_NOOP("Turn the push on the steerable particle 15° to the left, seen from above"), Qt::Key_Left, 1, 0},
+        {"actionSteerRight", QT_TR_NOOP("Steer R&ight"),
+         QT_TR_NOOP("Turn the push on the steerable particle 15° to the right, seen from above"), Qt::Key_Right, -1, 0},
+        {"actionSteerStronger", QT_TR_NOOP("Push &Harder"),
+         QT_TR_NOOP("Push the steerable particle harder (the pool's cue ball)"), Qt::Key_Up, 0, 1},
+        {"actionSteerWeaker", QT_TR_NOOP("Push &Softer"),
+         QT_TR_NOOP("Push the steerable particle more softly, down to not at all"), Qt::Key_Down, 0, -1},
+    };
+    for (const SteerKey &key : steerKeys) {
+        auto *action = new QAction(tr(key.text), this);
+        action->setObjectName(QString::fromLatin1(key.name));
+        action->setShortcut(key.key);
+        action->setStatusTip(tr(key.tip));
+        connect(action, &QAction::triggered, this, [this, key] { steer(key.turn, key.change); });
+        m_steerActions << action;
+    }
+}
+
+void MainWindow::createMenus()
+{
+    // file
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    QAction *open = file->addAction(tr("&Open..."), this, &MainWindow::openFromDialog);
+    open->setShortcut(QKeySequence::Open);
+    QMenu *examples = file->addMenu(tr("&Examples"));
+    for (const QString &name : exampleNames()) {
+        examples->addAction(name, this, [this, name] {
+            QString error;
+            if (maybeSave() && !openExample(name, &error))
+                QMessageBox::warning(this, tr("Open example"), error);
+        });
+    }
+    file->addSeparator();
+    QAction *saveAction = file->addAction(tr("&Save"), this, &MainWindow::save);
+    saveAction->setShortcut(QKeySequence::Save);
+    QAction *saveAsAction = file->addAction(tr("Save &As..."), this, &MainWindow::saveAs);
+    saveAsAction->setShortcut(QKeySequence::SaveAs);
+    file->addSeparator();
+    QAction *screenshot = file->addAction(tr("Save Screensho&t"), this, [this] {
+        QString error;
+        if (saveScreenshot(&error).isEmpty())
+            showWarning(error);
+    });
+    screenshot->setObjectName(QStringLiteral("actionScreenshot"));
+    screenshot->setShortcut(Qt::Key_F2);
+    screenshot->setStatusTip(tr("Save the 3D view as a PNG in the screenshot folder"));
+    file->addAction(tr("Screenshot &Folder..."), this, &MainWindow::chooseScreenshotDirectory);
+    file->addSeparator();
+    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    // edit: undo and redo of every scene change
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    // simulation
+    QMenu *simulation = menuBar()->addMenu(tr("&Simulation"));
+    simulation->addAction(m_playAction);
+    simulation->addAction(m_stepAction);
+    simulation->addAction(m_resetAction);
+    simulation->addSeparator();
+    simulation->addAction(m_tiltAction);
+    simulation->addAction(m_collisionsAction);
+    simulation->addSeparator();
+    simulation->addActions(m_steerActions);
+
+    // view: the camera, then the docks and the toolbar (added with them)
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    QAction *frameAll = m_viewMenu->addAction(tr("&Frame All"), m_viewport, &Viewport::frameAll);
+    frameAll->setObjectName(QStringLiteral("actionFrameAll"));
+    frameAll->setShortcuts({QKeySequence(Qt::Key_F), QKeySequence(Qt::Key_Home)});
+    frameAll->setStatusTip(tr("Point the camera at the whole scene"));
+    m_viewMenu->addSeparator();
+
+    // help
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *keys = help->addAction(tr("&Keyboard and Mouse"), this, &MainWindow::showHelp);
+    keys->setObjectName(QStringLiteral("actionHelp"));
+    keys->setShortcut(Qt::Key_F1);
+    keys->setStatusTip(tr("List every shortcut and mouse gesture"));
+    help->addAction(tr("&About Springlab"), this, &MainWindow::showAbout);
+
+    // toolbar
+    QToolBar *toolbar = addToolBar(tr("Simulation"));
+    toolbar->setObjectName(QStringLiteral("simulationToolBar"));
+    toolbar->addAction(m_playAction);
+    toolbar->addAction(m_stepAction);
+    toolbar->addAction(m_resetAction);
+    m_viewMenu->addAction(toolbar->toggleViewAction());
+}
+
+void MainWindow::createDocks()
+{
+    // parameters, scrollable when the window is short
+    m_parameters = new ParametersPanel(*m_document);
+    auto *scroll = new QScrollArea;
+    scroll->setWidget(m_parameters);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_parametersDock = new QDockWidget(tr("Parameters"), this);
+    m_parametersDock->setObjectName(QStringLiteral("parametersDock"));
+    m_parametersDock->setWidget(scroll);
+    addDockWidget(Qt::RightDockWidgetArea, m_parametersDock);
+    m_viewMenu->addAction(m_parametersDock->toggleViewAction());
+}
+
+void MainWindow::createStatusBar()
+{
+    // the latest warning on the left, the figures of the run on the right
+    auto label = [this](const char *name, int minimumWidth) {
+        auto *field = new QLabel(this);
+        field->setObjectName(QString::fromLatin1(name));
+        field->setMinimumWidth(minimumWidth);
+        return field;
+    };
+    m_warningLabel = label("statusWarning", 0);
+    m_steerLabel = label("statusSteer", 0);
+    m_timeLabel = label("statusTime", 100);
+    m_rateLabel = label("statusRate", 80);
+    m_stepsLabel = label("statusSteps", 90);
+    m_energyLabel = label("statusEnergy", 110);
+    m_timeLabel->setToolTip(tr("Simulated time"));
+    m_rateLabel->setToolTip(tr("Simulated seconds per second of wall-clock time"));
+    m_stepsLabel->setToolTip(tr("Time steps computed per second of wall-clock time"));
+    m_energyLabel->setToolTip(tr("Total energy: kinetic + gravitational + spring"));
+    statusBar()->addWidget(m_warningLabel, 1);
+    statusBar()->addPermanentWidget(m_steerLabel);
+    statusBar()->addPermanentWidget(m_timeLabel);
+    statusBar()->addPermanentWidget(m_rateLabel);
+    statusBar()->addPermanentWidget(m_stepsLabel);
+    statusBar()->addPermanentWidget(m_energyLabel);
+    m_steerLabel->hide();
+}
+
+void MainWindow::readSettings()
+{
+    QSettings settings;
+    settings.beginGroup(QStringLiteral("mainWindow"));
+    if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray()))
+        resize(1200, 800);
+    restoreState(settings.value(QStringLiteral("state")).toByteArray());
+    settings.endGroup();
+    m_screenshotDirectory =
+        settings.value(QStringLiteral("screenshots/directory"), defaultScreenshotDirectory()).toString();
+}
+
+void MainWindow::writeSettings() const
+{
+    QSettings settings;
+    settings.beginGroup(QStringLiteral("mainWindow"));
+    settings.setValue(QStringLiteral("geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("state"), saveState());
+    settings.endGroup();
+    settings.setValue(QStringLiteral("screenshots/directory"), m_screenshotDirectory);
+}
+
+QStringList MainWindow::exampleNames()
+{
+    QStringList found = QDir(QStringLiteral(":/scenes")).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+    for (QString &name : found)
+        name.chop(5);  // ".json"
+    QStringList ordered;
+    for (const char *name : kExampleOrder)
+        if (found.removeOne(QString::fromLatin1(name)))
+            ordered << QString::fromLatin1(name);
+    return ordered + found;
+}
+
+bool MainWindow::openScene(const QString &path, QString *error)
+{
+    io::LoadResult loaded = io::loadScene(path);
+    if (!loaded.ok()) {
+        if (error)
+            *error = loaded.error;
+        return false;
+    }
+    m_document->replace(std::move(*loaded.scene), QFileInfo(path).absoluteFilePath());
+    if (!loaded.warnings.isEmpty())
+        showWarning(loaded.warnings.join(QStringLiteral("; ")));
+    return true;
+}
+
+bool MainWindow::openExample(const QString &name, QString *error)
+{
+    io::LoadResult loaded = io::loadScene(examplePath(name));
+    if (!loaded.ok()) {
+        if (error)
+            *error = loaded.error.isEmpty() ? tr("no example named \"%1\"").arg(name) : loaded.error;
+        return false;
+    }
+    // an example is not a file of the user's: saving asks where
+    m_document->replace(std::move(*loaded.scene), QString());
+    return true;
+}
+
+bool MainWindow::save()
+{
+    if (m_document->filePath().isEmpty())
+        return saveAs();
+    QString error;
+    if (!saveTo(m_document->filePath(), &error)) {
+        QMessageBox::warning(this, tr("Save scene"), error);
+        return false;
+    }
+    return true;
+}
+
+bool MainWindow::saveAs()
+{
+    const QString suggested = m_document->filePath().isEmpty()
+                                  ? QDir::home().filePath(m_document->displayName() + QStringLiteral(".json"))
+                                  : m_document->filePath();
+    QString path = QFileDialog::getSaveFileName(this, tr("Save scene"), suggested, tr("Springlab scenes (*.json)"));
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".json");
+    QString error;
+    if (!saveTo(path, &error)) {
+        QMessageBox::warning(this, tr("Save scene"), error);
+        return false;
+    }
+    return true;
+}
+
+bool MainWindow::saveTo(const QString &path, QString *error)
+{
+    const io::SaveResult saved = io::saveScene(path, m_document->scene());
+    if (!saved.ok()) {
+        if (error)
+            *error = saved.error;
+        return false;
+    }
+    m_document->markSaved(QFileInfo(path).absoluteFilePath());
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 5000);
+    return true;
+}
+
+QString MainWindow::saveScreenshot(QString *error)
+{
+    auto fail = [error](const QString &reason) {
+        if (error)
+            *error = reason;
+        return QString();
+    };
+    const QImage image = m_viewport->grabFramebuffer();
+    if (image.isNull())
+        return fail(tr("Screenshot: the 3D view has no image yet"));
+    const QDir directory(m_screenshotDirectory);
+    if (!directory.mkpath(QStringLiteral(".")))
+        return fail(tr("Screenshot: cannot create the folder %1").arg(QDir::toNativeSeparators(m_screenshotDirectory)));
+
+    // springlab-<scene>-<date>.png, numbered when several land in one second
+    QString scene = m_document->displayName();
+    scene.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_-]+")), QStringLiteral("-"));
+    const QString stem = QStringLiteral("springlab-%1-%2")
+                             .arg(scene, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
+    QString path = directory.filePath(stem + QStringLiteral(".png"));
+    for (int n = 2; QFileInfo::exists(path); ++n)
+        path = directory.filePath(QStringLiteral("%1-%2.png").arg(stem).arg(n));
+    if (!image.save(path, "PNG"))
+        return fail(tr("Screenshot: cannot write %1").arg(QDir::toNativeSeparators(path)));
+    statusBar()->showMessage(tr("Screenshot saved to %1").arg(QDir::toNativeSeparators(path)), 5000);
+    return path;
+}
+
+void MainWindow::setScreenshotDirectory(const QString &directory)
+{
+    m_screenshotDirectory = directory;
+}
+
+QString MainWindow::statusTime() const
+{
+    return m_timeLabel->text();
+}
+
+QString MainWindow::statusRate() const
+{
+    return m_rateLabel->text();
+}
+
+QString MainWindow::statusWarning() const
+{
+    return m_warningLabel->text();
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    writeSettings();
+    // stop the worker before the window goes: nothing may step once the views are gone
+    m_controller->shutDown();
+    event->accept();
+}
+
+void MainWindow::sceneChanged(SceneChange change)
+{
+    const core::SceneDesc &scene = m_document->scene();
+    const std::uint64_t sequence = m_controller->setScene(m_document->sharedScene(), change);
+    if (change != SceneChange::Parameters)
+        m_viewport->setPlanes(scene.planes);
+    if (change == SceneChange::Replace) {
+        // a new scene: fresh steering, no old warning, and a view of all of it once it arrives
+        m_steering = Steering{};
+        m_warningLabel->clear();
+        m_frameAllAfter = sequence;
+    }
+    {
+        const QSignalBlocker block(m_collisionsAction);
+        m_collisionsAction->setChecked(scene.settings.planeCollisions || scene.settings.particleCollisions);
+    }
+    updateSteerActions();
+    updateTitle();
+}
+
+void MainWindow::frameChanged()
+{
+    const std::shared_ptr<const SimulationFrame> frame = m_controller->frame();
+    if (!frame || !frame->snapshot)
+        return;
+    m_viewport->setSnapshot(frame->snapshot);
+    if (m_frameAllAfter != 0 && frame->appliedEdit >= m_frameAllAfter) {
+        m_frameAllAfter = 0;
+        m_viewport->frameAll();
+    }
+
+    // the figures of the run
+    const core::Snapshot &snapshot = *frame->snapshot;
+    m_timeLabel->setText(timeText(snapshot.time));
+    m_rateLabel->setText(rateText(frame->running, frame->realTimeFactor));
+    m_stepsLabel->setText(stepsText(frame->running, frame->stepsPerSecond));
+    m_energyLabel->setText(energyText(snapshot.energies.total()));
+}
+
+void MainWindow::runningChanged(bool running)
+{
+    m_playAction->setText(running ? tr("&Pause") : tr("&Play"));
+    m_playAction->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+}
+
+void MainWindow::showWarning(const QString &message)
+{
+    m_warningLabel->setText(message);
+    m_warningLabel->setToolTip(message);
+}
+
+void MainWindow::updateTitle()
+{
+    setWindowTitle(tr("%1[*] — Springlab").arg(m_document->displayName()));
+    setWindowModified(m_document->isModified());
+}
+
+void MainWindow::updateSteerActions()
+{
+    const core::SceneDesc &scene = m_document->scene();
+    const bool steerable = scene.steerable >= 0 && scene.steerable < static_cast<int>(scene.particles.size());
+    for (QAction *action : m_steerActions)
+        action->setEnabled(steerable);
+    m_steerLabel->setVisible(steerable);
+    if (steerable) {
+        const double mass = scene.particles[static_cast<std::size_t>(scene.steerable)].mass;
+        m_steerLabel->setText(tr("push %1 N towards %2°")
+                                  .arg(m_steering.strength(mass), 0, 'g', 4)
+                                  .arg(m_steering.angle, 0, 'f', 0));
+    }
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_document->isModified())
+        return true;
+    const QMessageBox::StandardButton answer = QMessageBox::warning(
+        this, tr("Unsaved changes"), tr("The scene \"%1\" has changes that are not saved.").arg(m_document->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::openFromDialog()
+{
+    if (!maybeSave())
+        return;
+    const QString directory = m_document->filePath().isEmpty() ? QDir::homePath()
+                                                               : QFileInfo(m_document->filePath()).absolutePath();
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), directory, tr("Springlab scenes (*.json)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!openScene(path, &error))
+        QMessageBox::warning(this, tr("Open scene"), error);
+}
+
+void MainWindow::chooseScreenshotDirectory()
+{
+    const QString directory =
+        QFileDialog::getExistingDirectory(this, tr("Folder for screenshots"), m_screenshotDirectory);
+    if (!directory.isEmpty())
+        m_screenshotDirectory = directory;
+}
+
+void MainWindow::showHelp()
+{
+    HelpDialog dialog(*menuBar(), this);
+    dialog.exec();
+}
+
+void MainWindow::showAbout()
+{
+    QMessageBox::about(this, tr("About Springlab"),
+                       tr("<p><b>Springlab %1</b></p><p>An editor for particle and mass-spring physics: "
+                          "gravity, drag, damped springs and collisions, simulated live.</p>")
+                           .arg(QApplication::applicationVersion()));
+}
+
+void MainWindow::toggleCollisions(bool on)
+{
+    core::Settings settings = m_document->scene().settings;
+    settings.planeCollisions = on;
+    settings.particleCollisions = on;
+    m_document->undoStack()->push(new SettingsCommand(*m_document, on ? tr("Collisions on") : tr("Collisions off"),
+                                                      QStringLiteral("collisions"), settings));
+    statusBar()->showMessage(on ? tr("Collisions on") : tr("Collisions off"), 3000);
+}
+
+void MainWindow::steer(int turn, int change)
+{
+    const core::SceneDesc &scene = m_document->scene();
+    if (scene.steerable < 0 || scene.steerable >= static_cast<int>(scene.particles.size()))
+        return;
+    m_steering.turn(turn);
+    m_steering.change(change);
+    const double mass = scene.particles[static_cast<std::size_t>(scene.steerable)].mass;
+    m_controller->steer(scene.steerable, m_steering.force(mass));
+    updateSteerActions();
+}
+
+}  // namespace ui

@@ -1,0 +1,54 @@
+#pragma once
+// ParametersPanel: the dock that tunes the scene's parameters live. Its rows are generated from
+// the parameter table (core/parameters.h), one ParameterRow per binding below, never written out
+// widget by widget. An accepted change becomes an undo command on the document, which the main
+// window forwards to the worker; a refused one is reported here and goes nowhere.
+
+#include <QString>
+#include <QWidget>
+#include <vector>
+
+class QCheckBox;
+class QGroupBox;
+class QLabel;
+
+namespace ui {
+
+class ParameterRow;
+class SceneDocument;
+enum class SceneChange;
+
+class ParametersPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit ParametersPanel(SceneDocument &document, QWidget *parent = nullptr);
+
+    // the row of a binding key: "timeStep", "substeps", "gravity.x", "stiffness", ...
+    ParameterRow *row(const QString &key) const;
+    QCheckBox *planeCollisionsBox() const { return m_planeCollisions; }
+    QCheckBox *particleCollisionsBox() const { return m_particleCollisions; }
+
+    // the latest refusal, empty when the latest change was accepted
+    QString message() const;
+
+signals:
+    // a typed value was refused: the message names the parameter, the reason and the value
+    void valueRefused(const QString &message);
+
+private:
+    void refresh();
+    void showRefusal(const QString &message);
+    void edit(std::size_t binding, double value);
+    void setCollisions(bool planes, bool particles);
+
+    SceneDocument &m_document;
+    std::vector<ParameterRow *> m_rows;  // one per binding, in the bindings' order
+    QGroupBox *m_springsGroup = nullptr;
+    QLabel *m_springsNote = nullptr;
+    QCheckBox *m_planeCollisions = nullptr;
+    QCheckBox *m_particleCollisions = nullptr;
+    QLabel *m_message = nullptr;
+};
+
+}  // namespace ui

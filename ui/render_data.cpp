@@ -1,0 +1,281 @@
+#include "render_data.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <utility>
+
+namespace ui {
+
+namespace {
+
+// appends one vertex of position and colour
+void pushVertex(std::vector<float> &out, const QVector3D &p, const Rgb &c, float alpha = 1.0f)
+{
+    const std::size_t at = out.size();
+    out.resize(at + kVertexFloats);
+    float *v = out.data() + at;
+    v[0] = p.x();
+    v[1] = p.y();
+    v[2] = p.z();
+    v[3] = c[0];
+    v[4] = c[1];
+    v[5] = c[2];
+    v[6] = alpha;
+}
+
+Rgb mix(const Rgb &a, const Rgb &b, float t)
+{
+    return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
+}
+
+QVector3D toVector(const Eigen::Vector3d &v) { return QVector3D(float(v.x()), float(v.y()), float(v.z())); }
+
+}  // namespace
+
+Rgb strainColour(float strain, float fullStrain)
+{
+    // linear in the strain up to the full scale, then saturated; not-a-number shows as rest
+    if (!(fullStrain > 0.0f) || !std::isfinite(strain))
+        return kRestColour;
+    const float t = std::clamp(strain / fullStrain, -1.0f, 1.0f);
+    return t < 0.0f ? mix(kRestColour, kCompressedColour, -t) : mix(kRestColour, kStretchedColour, t);
+}
+
+Rgb ParticleStyle::colour(int i) const
+{
+    const float *v = values.data() + std::size_t(i) * kStyleFloats;
+    return {v[1], v[2], v[3]};
+}
+
+ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vector<int> &selection)
+{
+    const int n = snapshot.particleCount();
+    std::vector<std::uint8_t> selected(std::size_t(n), 0);
+    for (int i : selection)
+        if (i >= 0 && i < n)
+            selected[std::size_t(i)] = 1;
+
+    // selection wins over pinned for the colour, pinned over free; the marks keep both
+    ParticleStyle style;
+    style.values.resize(std::size_t(n) * kStyleFloats);
+    for (int i = 0; i < n; ++i) {
+        const bool pinned = i < int(snapshot.pinned.size()) && snapshot.pinned[std::size_t(i)] != 0;
+        const bool isSelected = selected[std::size_t(i)] != 0;
+        const Rgb &c = isSelected ? kSelectedColour : pinned ? kPinnedColour : kFreeColour;
+        float *v = style.values.data() + std::size_t(i) * kStyleFloats;
+        v[0] = snapshot.radii[std::size_t(i)];
+        v[1] = c[0];
+        v[2] = c[1];
+        v[3] = c[2];
+        v[4] = pinned ? 1.0f : 0.0f;
+        v[5] = isSelected ? 1.0f : 0.0f;
+    }
+    return style;
+}
+
+bool StyleKey::matches(const core::Snapshot &snapshot) const
+{
+    // bitwise, so that a radius that became NaN still counts as a change
+    return m_valid && m_radii.size() == snapshot.radii.size() && m_pinned == snapshot.pinned &&
+           std::memcmp(m_radii.data(), snapshot.radii.data(), m_radii.size() * sizeof(float)) == 0;
+}
+
+void StyleKey::remember(const core::Snapshot &snapshot)
+{
+    m_radii = snapshot.radii;
+    m_pinned = snapshot.pinned;
+    m_valid = true;
+}
+
+void StyleKey::clear()
+{
+    m_valid = false;
+    m_radii.clear();
+    m_pinned.clear();
+}
+
+void packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertices, float fullStrain)
+{
+    // end a then end b of each spring, both in the spring's colour
+    const int springs = snapshot.springCount();
+    vertices.clear();
+    if (snapshot.springEnds.size() < std::size_t(springs) * 6)
+        return;
+    vertices.reserve(std::size_t(springs) * 2 * kVertexFloats);
+    for (int s = 0; s < springs; ++s) {
+        const float *e = snapshot.springEnds.data() + std::size_t(s) * 6;
+        const Rgb c = strainColour(snapshot.springStrain[s], fullStrain);
+        pushVertex(vertices, QVector3D(e[0], e[1], e[2]), c);
+        pushVertex(vertices, QVector3D(e[3], e[4], e[5]), c);
+    }
+}
+
+Sphere particleBounds(const core::Snapshot &snapshot)
+{
+    // particles whose position or radius is not finite (a blown-up run) are left out
+    const int n = std::min<int>(snapshot.particleCount(), int(snapshot.positions.size() / 3));
+    auto position = [&](int i) {
+        const float *p = snapshot.positions.data() + 3 * i;
+        return QVector3D(p[0], p[1], p[2]);
+    };
+    auto usable = [&](int i) {
+        const QVector3D p = position(i);
+        return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()) && std::isfinite(snapshot.radii[i]);
+    };
+
+    // the centre of the bounding box
+    bool any = false;
+    QVector3D lo, hi;
+    for (int i = 0; i < n; ++i) {
+        if (!usable(i))
+            continue;
+        const QVector3D p = position(i);
+        lo = any ? QVector3D(std::min(lo.x(), p.x()), std::min(lo.y(), p.y()), std::min(lo.z(), p.z())) : p;
+        hi = any ? QVector3D(std::max(hi.x(), p.x()), std::max(hi.y(), p.y()), std::max(hi.z(), p.z())) : p;
+        any = true;
+    }
+    if (!any)
+        return {};
+
+    // then the farthest surface from it
+    Sphere sphere{(lo + hi) * 0.5f, 0.0f};
+    for (int i = 0; i < n; ++i)
+        if (usable(i))
+            sphere.radius =
+                std::max(sphere.radius, (position(i) - sphere.centre).length() + std::max(snapshot.radii[i], 0.0f));
+    return sphere;
+}
+
+float niceStep(float length)
+{
+    // 1, 2 or 5 times the power of ten at or below the length
+    if (!(length > 0.0f) || !std::isfinite(length))
+        return 1.0f;
+    const float power = std::pow(10.0f, std::floor(std::log10(length)));
+    const float mantissa = length / power;
+    return power * (mantissa < 2.0f ? 1.0f : mantissa < 5.0f ? 2.0f : 5.0f);
+}
+
+std::vector<float> packGrid(const Sphere &scene, float height)
+{
+    // about ten cells across the scene, snapped to whole steps so the grid does not crawl
+    constexpr int kMaxHalfCells = 100;
+    const float radius = std::max(scene.radius, 0.5f);
+    const float step = niceStep(radius / 4.0f);
+    const int halfCells = std::min(kMaxHalfCells, int(std::ceil(2.5f * radius / step)));
+    const float cx = std::round(scene.centre.x() / step) * step;
+    const float cz = std::round(scene.centre.z() / step) * step;
+    const float half = halfCells * step;
+
+    std::vector<float> vertices;
+    vertices.reserve(std::size_t(2 * halfCells + 1) * 4 * kVertexFloats);
+    for (int i = -halfCells; i <= halfCells; ++i) {
+        const float offset = i * step;
+        pushVertex(vertices, QVector3D(cx + offset, height, cz - half), kGridColour);
+        pushVertex(vertices, QVector3D(cx + offset, height, cz + half), kGridColour);
+        pushVertex(vertices, QVector3D(cx - half, height, cz + offset), kGridColour);
+        pushVertex(vertices, QVector3D(cx + half, height, cz + offset), kGridColour);
+    }
+    return vertices;
+}
+
+SphereMesh icosphere(int subdivisions)
+{
+    // the icosahedron: three golden rectangles, in the planes x = 0, y = 0 and z = 0
+    const float phi = (1.0f + std::sqrt(5.0f)) * 0.5f;
+    std::vector<QVector3D> points = {
+        {-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0}, {0, -1, phi}, {0, 1, phi},
+        {0, -1, -phi}, {0, 1, -phi}, {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1},
+    };
+    std::vector<std::array<std::uint32_t, 3>> faces = {
+        {0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+        {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+        {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1},
+    };
+    for (QVector3D &p : points)
+        p.normalize();
+
+    // each split adds one vertex per edge, shared by the edge's two faces
+    for (int level = 0; level < subdivisions; ++level) {
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
+        auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+            const std::pair<std::uint32_t, std::uint32_t> key = std::minmax(a, b);
+            const auto found = midpoints.find(key);
+            if (found != midpoints.end())
+                return found->second;
+            points.push_back((points[a] + points[b]).normalized());
+            const auto index = std::uint32_t(points.size() - 1);
+            midpoints.emplace(key, index);
+            return index;
+        };
+        std::vector<std::array<std::uint32_t, 3>> finer;
+        finer.reserve(faces.size() * 4);
+        for (const auto &[a, b, c] : faces) {
+            const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+            finer.push_back({a, ab, ca});
+            finer.push_back({b, bc, ab});
+            finer.push_back({c, ca, bc});
+            finer.push_back({ab, bc, ca});
+        }
+        faces = std::move(finer);
+    }
+
+    // flat arrays, every triangle turned to face outwards
+    SphereMesh mesh;
+    mesh.vertices.reserve(points.size() * 3);
+    for (const QVector3D &p : points) {
+        mesh.vertices.push_back(p.x());
+        mesh.vertices.push_back(p.y());
+        mesh.vertices.push_back(p.z());
+    }
+    for (auto [a, b, c] : faces) {
+        const QVector3D normal = QVector3D::crossProduct(points[b] - points[a], points[c] - points[a]);
+        if (QVector3D::dotProduct(normal, points[a] + points[b] + points[c]) < 0.0f)
+            std::swap(b, c);
+        mesh.indices.push_back(a);
+        mesh.indices.push_back(b);
+        mesh.indices.push_back(c);
+    }
+    return mesh;
+}
+
+std::vector<float> packAxes(float length)
+{
+    std::vector<float> vertices;
+    const QVector3D origin(0.0f, 0.0f, 0.0f);
+    pushVertex(vertices, origin, {0.90f, 0.25f, 0.25f});
+    pushVertex(vertices, QVector3D(length, 0.0f, 0.0f), {0.90f, 0.25f, 0.25f});
+    pushVertex(vertices, origin, {0.30f, 0.85f, 0.30f});
+    pushVertex(vertices, QVector3D(0.0f, length, 0.0f), {0.30f, 0.85f, 0.30f});
+    pushVertex(vertices, origin, {0.30f, 0.45f, 0.95f});
+    pushVertex(vertices, QVector3D(0.0f, 0.0f, length), {0.30f, 0.45f, 0.95f});
+    return vertices;
+}
+
+std::vector<float> packPlaneQuads(const std::vector<core::PlaneDesc> &planes, const Sphere &scene)
+{
+    const float half = 1.5f * std::max(scene.radius, 0.5f);
+    std::vector<float> vertices;
+    vertices.reserve(planes.size() * 6 * kVertexFloats);
+    for (const core::PlaneDesc &plane : planes) {
+        const QVector3D n = toVector(plane.normal).normalized();
+        if (n.isNull())
+            continue;
+
+        // the point of the plane nearest the scene's centre, and two directions along the plane
+        const QVector3D foot = scene.centre - (QVector3D::dotProduct(n, scene.centre) - float(plane.offset)) * n;
+        const QVector3D helper = std::abs(n.y()) < 0.9f ? QVector3D(0.0f, 1.0f, 0.0f) : QVector3D(1.0f, 0.0f, 0.0f);
+        const QVector3D u = QVector3D::crossProduct(n, helper).normalized() * half;
+        const QVector3D v = QVector3D::crossProduct(n, u).normalized() * half;
+
+        // two triangles
+        const QVector3D a = foot - u - v, b = foot + u - v, c = foot + u + v, d = foot - u + v;
+        for (const QVector3D &corner : {a, b, c, a, c, d})
+            pushVertex(vertices, corner, kPlaneColour, kPlaneAlpha);
+    }
+    return vertices;
+}
+
+}  // namespace ui

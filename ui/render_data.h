@@ -1,0 +1,101 @@
+#pragma once
+// Render data: a core::Snapshot turned into the flat float arrays the viewport uploads, with no GL,
+// so that the packing can be unit-tested. Positions need no packing (the snapshot's xyz floats are
+// streamed as they are); the particle style (radius, colour, marks) changes rarely and is packed
+// only when its inputs change; spring lines and the scene's decorations (grid, axes, planes) are
+// packed as line or triangle vertices of position and colour.
+
+#include "core/scene.h"
+#include "core/snapshot.h"
+
+#include <QVector3D>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace ui {
+
+using Rgb = std::array<float, 3>;
+
+// the palette, linear 0..1
+inline constexpr Rgb kBackgroundColour{0.16f, 0.17f, 0.20f};
+inline constexpr Rgb kFreeColour{0.93f, 0.60f, 0.22f};      // amber
+inline constexpr Rgb kPinnedColour{0.56f, 0.38f, 0.88f};    // violet, with a dark ring
+inline constexpr Rgb kSelectedColour{0.25f, 0.88f, 1.00f};  // cyan, with a bright rim
+inline constexpr Rgb kRestColour{0.62f, 0.62f, 0.62f};      // a spring at its rest length
+inline constexpr Rgb kCompressedColour{0.20f, 0.42f, 1.00f};
+inline constexpr Rgb kStretchedColour{1.00f, 0.20f, 0.16f};
+inline constexpr Rgb kGridColour{0.32f, 0.33f, 0.37f};
+inline constexpr Rgb kPlaneColour{0.55f, 0.70f, 0.85f};
+inline constexpr float kPlaneAlpha = 0.22f;
+
+// a strain (l - l0) / l0 of this size or more shows the full compressed or stretched colour
+inline constexpr float kFullStrain = 0.10f;
+
+// rest grey blending to blue when compressed and to red when stretched
+Rgb strainColour(float strain, float fullStrain = kFullStrain);
+
+// per particle, interleaved as the viewport's buffer takes it: radius (m), colour (rgb), pinned
+// (0 or 1), selected (0 or 1)
+inline constexpr int kStyleFloats = 6;
+struct ParticleStyle {
+    std::vector<float> values;
+    int count() const { return static_cast<int>(values.size() / kStyleFloats); }
+    float radius(int i) const { return values[std::size_t(i) * kStyleFloats]; }
+    Rgb colour(int i) const;
+    bool pinned(int i) const { return values[std::size_t(i) * kStyleFloats + 4] != 0.0f; }
+    bool selected(int i) const { return values[std::size_t(i) * kStyleFloats + 5] != 0.0f; }
+};
+
+// selection: indices of selected particles, in any order; those out of range are ignored
+ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vector<int> &selection);
+
+// what a ParticleStyle was packed from, to tell whether a new snapshot needs a new one
+class StyleKey {
+public:
+    bool matches(const core::Snapshot &snapshot) const;
+    void remember(const core::Snapshot &snapshot);
+    void clear();
+
+private:
+    bool m_valid = false;
+    std::vector<float> m_radii;
+    std::vector<std::uint8_t> m_pinned;
+};
+
+// line and triangle vertices: xyz then rgba
+inline constexpr int kVertexFloats = 7;
+
+// two vertices per spring, coloured by its strain
+void packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertices, float fullStrain = kFullStrain);
+
+// the bounding sphere of the particles (their radii included), leaving out any that are not
+// finite; radius 0 when none is left
+struct Sphere {
+    QVector3D centre;
+    float radius = 0.0f;
+};
+Sphere particleBounds(const core::Snapshot &snapshot);
+
+// a round number (1, 2 or 5 times a power of ten) near the given length
+float niceStep(float length);
+
+// a square grid of lines on the plane y = height, centred under the scene and covering it
+std::vector<float> packGrid(const Sphere &scene, float height);
+
+// a unit sphere made by splitting each face of an icosahedron into four, `subdivisions` times:
+// 20·4^s triangles, counter-clockwise seen from outside; each vertex is also its normal
+struct SphereMesh {
+    std::vector<float> vertices;        // xyz
+    std::vector<std::uint32_t> indices;  // three per triangle
+};
+SphereMesh icosphere(int subdivisions);
+
+// the x, y and z axes from the origin in red, green and blue
+std::vector<float> packAxes(float length);
+
+// two triangles per plane: a square of the plane around the scene's centre, translucent
+std::vector<float> packPlaneQuads(const std::vector<core::PlaneDesc> &planes, const Sphere &scene);
+
+}  // namespace ui

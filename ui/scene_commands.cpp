@@ -1,0 +1,90 @@
+#include "scene_commands.h"
+
+#include "scene_document.h"
+
+namespace ui {
+
+namespace {
+
+// ids that let QUndoStack merge commands of one kind
+constexpr int kSettingsCommandId = 1001;
+constexpr int kSpringValueCommandId = 1002;
+
+}  // namespace
+
+SettingsCommand::SettingsCommand(SceneDocument &document, const QString &text, const QString &mergeKey,
+                                 const core::Settings &after)
+    : QUndoCommand(text), m_document(document), m_mergeKey(mergeKey), m_before(document.scene().settings),
+      m_after(after)
+{
+}
+
+void SettingsCommand::redo()
+{
+    m_document.modify([this](core::SceneDesc &scene) { scene.settings = m_after; }, SceneChange::Parameters);
+}
+
+void SettingsCommand::undo()
+{
+    m_document.modify([this](core::SceneDesc &scene) { scene.settings = m_before; }, SceneChange::Parameters);
+}
+
+int SettingsCommand::id() const
+{
+    return kSettingsCommandId;
+}
+
+bool SettingsCommand::mergeWith(const QUndoCommand *other)
+{
+    const auto *next = static_cast<const SettingsCommand *>(other);
+    if (next->m_mergeKey != m_mergeKey)
+        return false;
+    m_after = next->m_after;
+    setObsolete(m_after == m_before);
+    return true;
+}
+
+SpringValueCommand::SpringValueCommand(SceneDocument &document, const QString &text, double core::SpringDesc::*field,
+                                       double value)
+    : QUndoCommand(text), m_document(document), m_field(field), m_after(value)
+{
+    m_before.reserve(document.scene().springs.size());
+    for (const core::SpringDesc &spring : document.scene().springs)
+        m_before.push_back(spring.*field);
+}
+
+void SpringValueCommand::redo()
+{
+    m_document.modify(
+        [this](core::SceneDesc &scene) {
+            for (core::SpringDesc &spring : scene.springs)
+                spring.*m_field = m_after;
+        },
+        SceneChange::Parameters);
+}
+
+void SpringValueCommand::undo()
+{
+    m_document.modify(
+        [this](core::SceneDesc &scene) {
+            for (std::size_t k = 0; k < scene.springs.size() && k < m_before.size(); ++k)
+                scene.springs[k].*m_field = m_before[k];
+        },
+        SceneChange::Parameters);
+}
+
+int SpringValueCommand::id() const
+{
+    return kSpringValueCommandId;
+}
+
+bool SpringValueCommand::mergeWith(const QUndoCommand *other)
+{
+    const auto *next = static_cast<const SpringValueCommand *>(other);
+    if (next->m_field != m_field)
+        return false;
+    m_after = next->m_after;
+    return true;
+}
+
+}  // namespace ui

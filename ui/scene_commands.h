@@ -1,0 +1,48 @@
+#pragma once
+// Undo commands for the scene's parameters. Consecutive changes of the same parameter merge into
+// one command, so a slider drag is one step of undo.
+
+#include "core/scene.h"
+
+#include <QUndoCommand>
+#include <vector>
+
+namespace ui {
+
+class SceneDocument;
+
+// replaces the scene's settings; mergeKey names the parameter that changed (e.g. "gravity.y")
+class SettingsCommand : public QUndoCommand {
+public:
+    SettingsCommand(SceneDocument &document, const QString &text, const QString &mergeKey, const core::Settings &after);
+
+    void redo() override;
+    void undo() override;
+    int id() const override;
+    bool mergeWith(const QUndoCommand *other) override;
+
+private:
+    SceneDocument &m_document;
+    QString m_mergeKey;
+    core::Settings m_before;
+    core::Settings m_after;
+};
+
+// sets one value (stiffness or damping) of every spring; undo gives each spring its own value back
+class SpringValueCommand : public QUndoCommand {
+public:
+    SpringValueCommand(SceneDocument &document, const QString &text, double core::SpringDesc::*field, double value);
+
+    void redo() override;
+    void undo() override;
+    int id() const override;
+    bool mergeWith(const QUndoCommand *other) override;
+
+private:
+    SceneDocument &m_document;
+    double core::SpringDesc::*m_field;
+    std::vector<double> m_before;  // per spring
+    double m_after;
+};
+
+}  // namespace ui

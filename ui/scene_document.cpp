@@ -1,0 +1,56 @@
+#include "scene_document.h"
+
+#include <QFileInfo>
+#include <QUndoStack>
+
+namespace ui {
+
+SceneDocument::SceneDocument(QObject *parent)
+    : QObject(parent), m_scene(std::make_shared<const core::SceneDesc>()), m_undoStack(new QUndoStack(this))
+{
+    connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+}
+
+QString SceneDocument::displayName() const
+{
+    if (!m_scene->name.empty())
+        return QString::fromStdString(m_scene->name);
+    if (!m_filePath.isEmpty())
+        return QFileInfo(m_filePath).completeBaseName();
+    return tr("untitled");
+}
+
+bool SceneDocument::isModified() const
+{
+    return !m_undoStack->isClean();
+}
+
+void SceneDocument::replace(core::SceneDesc scene, const QString &filePath)
+{
+    m_scene = std::make_shared<const core::SceneDesc>(std::move(scene));
+    m_undoStack->clear();
+    if (m_filePath != filePath) {
+        m_filePath = filePath;
+        emit filePathChanged(m_filePath);
+    }
+    emit sceneChanged(SceneChange::Replace);
+}
+
+void SceneDocument::markSaved(const QString &filePath)
+{
+    if (m_filePath != filePath) {
+        m_filePath = filePath;
+        emit filePathChanged(m_filePath);
+    }
+    m_undoStack->setClean();
+}
+
+void SceneDocument::modify(const std::function<void(core::SceneDesc &)> &edit, SceneChange change)
+{
+    auto edited = std::make_shared<core::SceneDesc>(*m_scene);
+    edit(*edited);
+    m_scene = std::move(edited);
+    emit sceneChanged(change);
+}
+
+}  // namespace ui

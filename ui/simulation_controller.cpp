@@ -1,0 +1,140 @@
+#include "simulation_controller.h"
+
+#include "simulation_worker.h"
+
+#include <QThread>
+
+namespace ui {
+
+namespace {
+
+// mixes the seed and the tilt's number into a well spread seed (splitmix64)
+std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t count)
+{
+    std::uint64_t z = seed + 0x9e3779b97f4a7c15ull * (count + 1);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+}  // namespace
+
+SimulationController::SimulationController(QObject *parent)
+    : QObject(parent), m_thread(new QThread(this)), m_worker(new SimulationWorker(m_edits, m_mailbox))
+{
+    // the worker lives on its own thread and is deleted there when the thread finishes
+    m_thread->setObjectName(QStringLiteral("simulation"));
+    m_worker->moveToThread(m_thread);
+    connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+
+    // frames and blow-ups come back queued, onto this (the UI) thread
+    connect(m_worker, &SimulationWorker::frameReady, this, &SimulationController::takeFrame, Qt::QueuedConnection);
+    connect(m_worker, &SimulationWorker::blewUp, this, [this](const QString &message) {
+        setRunning(false);
+        emit blewUp(message);
+    }, Qt::QueuedConnection);
+    m_thread->start();
+}
+
+SimulationController::~SimulationController()
+{
+    shutDown();
+}
+
+void SimulationController::shutDown()
+{
+    if (m_shutDown)
+        return;
+    m_shutDown = true;
+    // the worker's event loop ends, its timer stops with it, and the worker is deleted on its thread
+    m_thread->quit();
+    m_thread->wait();
+    m_worker = nullptr;
+    setRunning(false);
+}
+
+std::uint64_t SimulationController::post(Edit edit)
+{
+    const std::uint64_t sequence = m_edits.push(std::move(edit));
+    // one wake for a burst of edits; the worker applies them all at once
+    if (m_worker && !m_worker->wakePending().exchange(true)) {
+        SimulationWorker *worker = m_worker;
+        QMetaObject::invokeMethod(worker, [worker] { worker->wake(); }, Qt::QueuedConnection);
+    }
+    return sequence;
+}
+
+std::uint64_t SimulationController::setScene(std::shared_ptr<const core::SceneDesc> scene, SceneChange change)
+{
+    if (change == SceneChange::Replace)
+        setRunning(false);
+    return post(SetSceneEdit{std::move(scene), change});
+}
+
+std::uint64_t SimulationController::play()
+{
+    setRunning(true);
+    return post(PlayEdit{});
+}
+
+std::uint64_t SimulationController::pause()
+{
+    setRunning(false);
+    return post(PauseEdit{});
+}
+
+std::uint64_t SimulationController::togglePlay()
+{
+    return m_running ? pause() : play();
+}
+
+std::uint64_t SimulationController::stepOnce()
+{
+    setRunning(false);
+    return post(StepOnceEdit{});
+}
+
+std::uint64_t SimulationController::reset()
+{
+    return post(ResetEdit{});
+}
+
+std::uint64_t SimulationController::tilt()
+{
+    return post(TiltEdit{mixSeed(m_tiltSeed, m_tiltCount++), kTiltSpeed});
+}
+
+std::uint64_t SimulationController::steer(int particle, const Eigen::Vector3d &force)
+{
+    return post(SteerEdit{particle, force});
+}
+
+std::uint64_t SimulationController::sync()
+{
+    return post(SyncEdit{});
+}
+
+void SimulationController::setTiltSeed(std::uint64_t seed)
+{
+    m_tiltSeed = seed;
+    m_tiltCount = 0;
+}
+
+void SimulationController::setRunning(bool running)
+{
+    if (m_running == running)
+        return;
+    m_running = running;
+    emit runningChanged(running);
+}
+
+void SimulationController::takeFrame()
+{
+    std::shared_ptr<const SimulationFrame> frame = m_mailbox.take();
+    if (!frame)
+        return;
+    m_frame = std::move(frame);
+    emit frameChanged();
+}
+
+}  // namespace ui

@@ -1,0 +1,81 @@
+#pragma once
+// SimulationController: the UI thread's handle on the simulation. It owns the worker thread, the
+// edit queue and the frame mailbox. Every request (scene, play, pause, step, reset, tilt, steer)
+// becomes an edit that the worker applies between two steps, so none of them ever blocks the UI;
+// frames come back through the latest-wins mailbox and a queued signal.
+
+#include "edit_queue.h"
+#include "latest_mailbox.h"
+#include "simulation_frame.h"
+
+#include <QObject>
+#include <QString>
+#include <cstdint>
+#include <memory>
+
+class QThread;
+
+namespace ui {
+
+class SimulationWorker;
+
+class SimulationController : public QObject {
+    Q_OBJECT
+
+public:
+    // m/s: the largest change a tilt makes to one velocity component
+    static constexpr double kTiltSpeed = 2.0;
+
+    explicit SimulationController(QObject *parent = nullptr);
+    ~SimulationController() override;
+
+    // each returns the edit's sequence number; frame()->appliedEdit reaches it once applied
+    std::uint64_t setScene(std::shared_ptr<const core::SceneDesc> scene, SceneChange change);
+    std::uint64_t play();
+    std::uint64_t pause();
+    std::uint64_t togglePlay();
+    std::uint64_t stepOnce();
+    std::uint64_t reset();
+    std::uint64_t tilt();
+    std::uint64_t steer(int particle, const Eigen::Vector3d &force);
+    // changes nothing, but the worker publishes a frame once it has applied every earlier edit
+    std::uint64_t sync();
+
+    // tilts are drawn from this seed: the n-th tilt after setTiltSeed(s) is the same every time
+    void setTiltSeed(std::uint64_t seed);
+
+    // what the UI last asked for (a blow-up also pauses)
+    bool isRunning() const { return m_running; }
+
+    // the newest frame received on the UI thread; null before the first
+    std::shared_ptr<const SimulationFrame> frame() const { return m_frame; }
+
+    // stops the worker thread and waits for it; called by the destructor, safe to call twice
+    void shutDown();
+    bool isShutDown() const { return m_shutDown; }
+    QThread *workerThread() const { return m_thread; }
+
+signals:
+    // a new frame() arrived
+    void frameChanged();
+    void runningChanged(bool running);
+    // the run blew up and paused; the message names the particle, the quantity, the step and time
+    void blewUp(const QString &message);
+
+private:
+    std::uint64_t post(Edit edit);
+    void setRunning(bool running);
+    void takeFrame();
+
+    EditQueue m_edits;
+    LatestMailbox<SimulationFrame> m_mailbox;
+    QThread *m_thread = nullptr;
+    SimulationWorker *m_worker = nullptr;
+    std::shared_ptr<const SimulationFrame> m_frame;
+    bool m_running = false;
+    bool m_shutDown = false;
+    std::uint64_t m_tiltSeed = 0;
+    std::uint64_t m_tiltCount = 0;
+};
+
+}  // namespace ui

@@ -1,0 +1,192 @@
+#include "simulation_runner.h"
+
+#include "core/step.h"
+
+#include <chrono>
+#include <cstdio>
+#include <random>
+
+namespace ui {
+
+namespace {
+
+// a uniform number in [-1, 1) from the generator's bits, the same on every standard library
+double symmetricUnit(std::mt19937_64 &random)
+{
+    const double unit = static_cast<double>(random() >> 11) * 0x1.0p-53;  // [0, 1)
+    return 2.0 * unit - 1.0;
+}
+
+// the visitor that dispatches each kind of edit
+template <typename... Handlers>
+struct Overloaded : Handlers... {
+    using Handlers::operator()...;
+};
+template <typename... Handlers>
+Overloaded(Handlers...) -> Overloaded<Handlers...>;
+
+}  // namespace
+
+void SimulationRunner::apply(const Edit &edit)
+{
+    std::visit(Overloaded{
+                   [this](const SetSceneEdit &e) { setScene(e); },
+                   [this](const PlayEdit &) { m_running = hasScene(); },
+                   [this](const PauseEdit &) { m_running = false; },
+                   [this](const StepOnceEdit &) {
+                       m_running = false;
+                       if (hasScene()) {
+                           m_lastGood = m_state;
+                           stepOnce();
+                       }
+                   },
+                   [this](const ResetEdit &) { reset(); },
+                   [this](const TiltEdit &e) { tilt(e); },
+                   [this](const SteerEdit &e) { steer(e); },
+                   [](const SyncEdit &) {},
+               },
+               edit);
+}
+
+void SimulationRunner::setScene(const SetSceneEdit &edit)
+{
+    const bool sameCount = m_scene && edit.scene->particles.size() == m_scene->particles.size();
+    m_scene = edit.scene;
+    m_model = core::compileModel(*m_scene);
+    switch (edit.change) {
+    case SceneChange::Parameters:
+        // same particles: the state stays valid as it is
+        if (sameCount)
+            break;
+        [[fallthrough]];
+    case SceneChange::Structure:
+        if (sameCount) {
+            // rebuild, then carry the motion over
+            core::State rebuilt = core::makeState(*m_model, *m_scene);
+            rebuilt.position = m_state.position;
+            for (int i = 0; i < m_model->particleCount(); ++i)
+                rebuilt.velocity.col(i) = m_model->isPinned(i) ? Eigen::Vector3d::Zero()
+                                                                : Eigen::Vector3d(m_state.velocity.col(i));
+            rebuilt.time = m_state.time;
+            rebuilt.step = m_state.step;
+            m_state = std::move(rebuilt);
+            break;
+        }
+        [[fallthrough]];
+    case SceneChange::Replace:
+        m_state = core::makeState(*m_model, *m_scene);
+        m_owed = 0.0;
+        break;
+    }
+    if (edit.change == SceneChange::Replace) {
+        // another scene: nothing of the old one's steering survives
+        m_running = false;
+        m_steerParticle = -1;
+        m_steerForce.setZero();
+    }
+    applySteering();
+}
+
+void SimulationRunner::reset()
+{
+    if (!hasScene())
+        return;
+    m_state = core::makeState(*m_model, *m_scene);
+    m_owed = 0.0;
+    applySteering();
+}
+
+void SimulationRunner::tilt(const TiltEdit &edit)
+{
+    if (!hasScene())
+        return;
+    // every free particle gets a kick of up to `speed` per component, from one seeded generator
+    std::mt19937_64 random(edit.seed);
+    for (int i : m_model->freeParticles)
+        for (int axis = 0; axis < 3; ++axis)
+            m_state.velocity(axis, i) += edit.speed * symmetricUnit(random);
+}
+
+void SimulationRunner::steer(const SteerEdit &edit)
+{
+    // clear the old particle's force before moving it to another one
+    if (hasScene() && m_steerParticle >= 0 && m_steerParticle < m_model->particleCount())
+        core::setAppliedForce(m_state, m_steerParticle, Eigen::Vector3d::Zero());
+    m_steerParticle = edit.particle;
+    m_steerForce = edit.force;
+    applySteering();
+}
+
+void SimulationRunner::applySteering()
+{
+    if (hasScene() && m_steerParticle >= 0 && m_steerParticle < m_model->particleCount())
+        core::setAppliedForce(m_state, m_steerParticle, m_steerForce);
+}
+
+bool SimulationRunner::stepOnce()
+{
+    if (core::step(*m_model, m_state))
+        return true;
+    // blown up: stop, keep the report, and go back to the last good state
+    m_blowup = m_state.blowup;
+    m_running = false;
+    m_owed = 0.0;
+    core::Profile profile = m_state.profile;
+    m_state = m_lastGood;
+    m_state.profile = profile;
+    m_state.blowup.reset();
+    return false;
+}
+
+SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double budgetSeconds)
+{
+    using Clock = std::chrono::steady_clock;
+    Advance result;
+    if (!m_running || !hasScene())
+        return result;
+
+    m_owed += wallSeconds;
+    const double h = m_model->timeStep;
+    if (m_owed < h)
+        return result;
+    m_lastGood = m_state;
+    const auto start = Clock::now();
+    while (m_owed >= h) {
+        if (!stepOnce())
+            return result;
+        m_owed -= h;
+        ++result.steps;
+        // out of time for this tick: give up what is still owed
+        if (std::chrono::duration<double>(Clock::now() - start).count() > budgetSeconds) {
+            result.droppedSeconds = m_owed;
+            m_owed = 0.0;
+            break;
+        }
+    }
+    return result;
+}
+
+std::shared_ptr<const core::Snapshot> SimulationRunner::snapshot() const
+{
+    if (!hasScene())
+        return nullptr;
+    return core::makeSnapshot(*m_model, m_state);
+}
+
+std::optional<core::Blowup> SimulationRunner::takeBlowup()
+{
+    std::optional<core::Blowup> blowup;
+    blowup.swap(m_blowup);
+    return blowup;
+}
+
+std::string describeBlowup(const core::Blowup &blowup)
+{
+    const char *quantity = blowup.quantity == core::Blowup::Quantity::Position ? "position" : "velocity";
+    char text[160];
+    std::snprintf(text, sizeof text, "particle %d's %s reached %.3g at step %llu (t = %.4g s)", blowup.particle,
+                  quantity, blowup.value, static_cast<unsigned long long>(blowup.step), blowup.time);
+    return text;
+}
+
+}  // namespace ui

@@ -1,0 +1,104 @@
+#include "simulation_worker.h"
+
+#include <QTimer>
+#include <algorithm>
+
+namespace ui {
+
+namespace {
+
+// how long rates are averaged before they are shown, s
+constexpr double kRateWindowSeconds = 0.5;
+
+}  // namespace
+
+SimulationWorker::SimulationWorker(EditQueue &edits, LatestMailbox<SimulationFrame> &mailbox)
+    : m_edits(edits), m_mailbox(mailbox), m_timer(new QTimer(this))
+{
+    // the timer is a child, so it moves to the worker thread with this object
+    m_timer->setTimerType(Qt::PreciseTimer);
+    m_timer->setInterval(kTickIntervalMs);
+    connect(m_timer, &QTimer::timeout, this, &SimulationWorker::tick);
+}
+
+void SimulationWorker::wake()
+{
+    m_wakePending = false;
+    tick();
+}
+
+void SimulationWorker::tick()
+{
+    const bool wasRunning = m_runner.isRunning();
+
+    // edits first: they land between two steps
+    EditQueue::Batch batch = m_edits.drain();
+    for (const Edit &edit : batch.edits)
+        m_runner.apply(edit);
+    bool changed = !batch.edits.empty();
+    m_appliedEdit = batch.lastSequence;
+
+    // then the steps that the wall time elapsed since the last tick asks for
+    if (m_runner.isRunning()) {
+        if (!wasRunning) {
+            // just started: time starts counting now, and so do the rates
+            m_clock.start();
+            m_window.start();
+            m_windowCredited = 0.0;
+            m_windowSteps = 0;
+        } else {
+            const double elapsed = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
+            m_clock.start();
+            const double capped = std::min(elapsed, kMaxTickSeconds);
+            const SimulationRunner::Advance advance = m_runner.advance(capped, kStepBudgetSeconds);
+            changed = changed || advance.steps > 0;
+            m_windowCredited += capped - advance.droppedSeconds;
+            m_windowSteps += static_cast<std::uint64_t>(advance.steps);
+        }
+
+        // rates over the window, then a fresh window
+        const double window = static_cast<double>(m_window.nsecsElapsed()) * 1e-9;
+        if (window >= kRateWindowSeconds) {
+            m_realTimeFactor = m_windowCredited / window;
+            m_stepsPerSecond = static_cast<double>(m_windowSteps) / window;
+            m_window.start();
+            m_windowCredited = 0.0;
+            m_windowSteps = 0;
+        }
+    }
+    if (!m_runner.isRunning()) {
+        m_realTimeFactor = 0.0;
+        m_stepsPerSecond = 0.0;
+    }
+
+    // a blow-up paused the run: say so
+    if (const std::optional<core::Blowup> blowup = m_runner.takeBlowup()) {
+        changed = true;
+        emit blewUp(QString::fromStdString(describeBlowup(*blowup)));
+    }
+
+    // the timer runs only while the simulation does
+    if (m_runner.isRunning() && !m_timer->isActive())
+        m_timer->start();
+    else if (!m_runner.isRunning() && m_timer->isActive())
+        m_timer->stop();
+
+    if (changed || m_runner.isRunning() != wasRunning)
+        publish();
+}
+
+void SimulationWorker::publish()
+{
+    auto frame = std::make_shared<SimulationFrame>();
+    frame->snapshot = m_runner.snapshot();
+    frame->model = m_runner.model();
+    frame->scene = m_runner.scene();
+    frame->appliedEdit = m_appliedEdit;
+    frame->running = m_runner.isRunning();
+    frame->realTimeFactor = m_realTimeFactor;
+    frame->stepsPerSecond = m_stepsPerSecond;
+    if (m_mailbox.publish(std::move(frame)))
+        emit frameReady();
+}
+
+}  // namespace ui

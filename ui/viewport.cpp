@@ -1,0 +1,546 @@
+#include "viewport.h"
+
+#include <QFile>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLBuffer>
+#include <QOpenGLContext>
+#include <QOpenGLShaderProgram>
+#include <QOpenGLVertexArrayObject>
+#include <QRegularExpression>
+#include <QWheelEvent>
+#include <QtDebug>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ui {
+
+namespace {
+
+constexpr float kWheelZoomPerNotch = 0.85f;  // distance factor for one wheel notch towards the scene
+constexpr int kPositionLocation = 1;        // the per-particle attributes, as the shaders declare them
+constexpr int kRadiusLocation = 2;
+constexpr int kColourLocation = 3;
+constexpr int kMarksLocation = 4;
+
+// a shader from the resources, with its #include "file" lines replaced by that file
+QByteArray shaderSource(const QString &name)
+{
+    QFile file(QStringLiteral(":/shaders/") + name);
+    if (!file.open(QIODevice::ReadOnly)) {
+        qWarning("viewport: cannot read shader %s", qPrintable(file.fileName()));
+        return {};
+    }
+    QString text = QString::fromUtf8(file.readAll());
+    static const QRegularExpression include(QStringLiteral("^#include \"([^\"]+)\"$"),
+                                            QRegularExpression::MultilineOption);
+    for (QRegularExpressionMatch match = include.match(text); match.hasMatch(); match = include.match(text))
+        text.replace(match.capturedStart(), match.capturedLength(), QString::fromUtf8(shaderSource(match.captured(1))));
+    return text.toUtf8();
+}
+
+bool buildProgram(QOpenGLShaderProgram &program, const QString &vertex, const QString &fragment)
+{
+    const bool ok = program.addShaderFromSourceCode(QOpenGLShader::Vertex, shaderSource(vertex)) &&
+                    program.addShaderFromSourceCode(QOpenGLShader::Fragment, shaderSource(fragment)) && program.link();
+    if (!ok)
+        qWarning("viewport: shaders %s + %s: %s", qPrintable(vertex), qPrintable(fragment), qPrintable(program.log()));
+    return ok;
+}
+
+QVector3D toVector(const Eigen::Vector3d &v) { return QVector3D(float(v.x()), float(v.y()), float(v.z())); }
+
+}  // namespace
+
+// everything that lives in the GL context; destroyed with the context current
+struct Viewport::Gpu {
+    QOpenGLShaderProgram impostorProgram;
+    QOpenGLShaderProgram meshProgram;
+    QOpenGLShaderProgram flatProgram;
+
+    // per-vertex geometry of one particle
+    QOpenGLBuffer quad{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer sphere{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer sphereIndices{QOpenGLBuffer::IndexBuffer};
+    int sphereIndexCount = 0;
+
+    // per-particle data: positions streamed, style uploaded when it changes
+    QOpenGLBuffer positions{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer styles{QOpenGLBuffer::VertexBuffer};
+    int particleCount = 0;  // streamed positions
+    int styleCount = 0;     // uploaded styles
+
+    // lines and triangles for the flat program
+    QOpenGLBuffer springs{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer decorations{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer planes{QOpenGLBuffer::VertexBuffer};
+    int springVertices = 0;
+    int decorationVertices = 0;
+    int planeVertices = 0;
+
+    QOpenGLVertexArrayObject impostorVao;
+    QOpenGLVertexArrayObject meshVao;
+    QOpenGLVertexArrayObject springsVao;
+    QOpenGLVertexArrayObject decorationsVao;
+    QOpenGLVertexArrayObject planesVao;
+};
+
+Viewport::Viewport(QWidget *parent) : QOpenGLWidget(parent)
+{
+    setFormat(requestedFormat());
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(160, 120);
+    m_camera.setViewportSize(size());
+
+    // the frame time runs from the start of paintGL to the frame reaching the screen
+    connect(this, &QOpenGLWidget::frameSwapped, this, [this] {
+        if (m_frameTiming) {
+            m_frameTiming = false;
+            emit frameTimeMeasured(double(m_frameClock.nsecsElapsed()) * 1.0e-9);
+        }
+    });
+}
+
+Viewport::~Viewport() { cleanupGL(); }
+
+QSurfaceFormat Viewport::requestedFormat()
+{
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setSamples(4);
+    return format;
+}
+
+void Viewport::setSnapshot(std::shared_ptr<const core::Snapshot> snapshot)
+{
+    m_snapshot = std::move(snapshot);
+    m_positionsStale = true;
+    if (!m_framed && m_snapshot && m_snapshot->particleCount() > 0) {
+        frameAll();
+        m_autoFramed = true;
+    }
+    update();
+}
+
+void Viewport::setPlanes(const std::vector<core::PlaneDesc> &planes)
+{
+    m_planes = planes;
+    m_decorationsChanged = true;
+    update();
+}
+
+void Viewport::setSelection(const std::vector<int> &particles)
+{
+    m_selection = particles;
+    m_selectionChanged = true;
+    update();
+}
+
+void Viewport::setParticleDrawing(ParticleDrawing drawing)
+{
+    m_drawing = drawing;
+    update();
+}
+
+void Viewport::frameAll()
+{
+    // the particles' bounding sphere, or a unit sphere at the origin for an empty scene
+    Sphere bounds{QVector3D(0.0f, 0.0f, 0.0f), 1.0f};
+    if (m_snapshot && m_snapshot->particleCount() > 0)
+        bounds = particleBounds(*m_snapshot);
+    if (!(bounds.radius > 0.0f))
+        bounds.radius = 1.0f;
+
+    updateSceneBounds(bounds);
+    m_camera.setViewportSize(size());
+    m_camera.frameSphere(bounds.centre, bounds.radius);
+    m_framed = true;
+    m_autoFramed = false;
+    update();
+}
+
+void Viewport::updateSceneBounds(const Sphere &bounds)
+{
+    m_sceneBounds = bounds;
+    m_camera.setSceneBounds(bounds.centre, bounds.radius);
+    m_decorationsChanged = true;
+}
+
+int Viewport::particleAt(const QPointF &pixel) const
+{
+    if (!m_snapshot)
+        return -1;
+    const core::Snapshot &s = *m_snapshot;
+    const int n = std::min<int>(s.particleCount(), int(s.positions.size() / 3));
+    const Ray ray = m_camera.unproject(pixel);
+
+    // the nearest sphere in front of the eye that the ray passes through
+    int nearest = -1;
+    float nearestDistance = std::numeric_limits<float>::infinity();
+    for (int i = 0; i < n; ++i) {
+        const QVector3D centre(s.positions[3 * i], s.positions[3 * i + 1], s.positions[3 * i + 2]);
+        const QVector3D toCentre = centre - ray.origin;
+        const float along = QVector3D::dotProduct(toCentre, ray.direction);
+        const float missSquared = (toCentre - along * ray.direction).lengthSquared();
+        const float r = s.radii[i];
+        if (missSquared > r * r)
+            continue;
+        const float distance = along - std::sqrt(r * r - missSquared);
+        if (distance > 0.0f && distance < nearestDistance) {
+            nearest = i;
+            nearestDistance = distance;
+        }
+    }
+    return nearest;
+}
+
+void Viewport::initializeGL()
+{
+    if (!initializeOpenGLFunctions()) {
+        qWarning("viewport: OpenGL 3.3 core is not available; nothing will be drawn");
+        return;
+    }
+
+    // the context can go away before the widget does (e.g. when it moves to another window)
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanupGL);
+
+    // what the driver really gave us, once per run
+    static bool logged = false;
+    if (!logged) {
+        logged = true;
+        qInfo("viewport: OpenGL %s, %s", reinterpret_cast<const char *>(glGetString(GL_VERSION)),
+              reinterpret_cast<const char *>(glGetString(GL_RENDERER)));
+    }
+
+    // the three programs: impostor spheres, mesh spheres, flat lines and triangles
+    auto gpu = std::make_unique<Gpu>();
+    const bool built =
+        buildProgram(gpu->impostorProgram, QStringLiteral("particle_impostor.vert"),
+                     QStringLiteral("particle_impostor.frag")) &&
+        buildProgram(gpu->meshProgram, QStringLiteral("particle_mesh.vert"), QStringLiteral("particle_mesh.frag")) &&
+        buildProgram(gpu->flatProgram, QStringLiteral("flat.vert"), QStringLiteral("flat.frag"));
+    if (!built)
+        return;
+
+    // static geometry: the impostor's quad and the mesh sphere
+    const float corners[] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
+    gpu->quad.create();
+    gpu->quad.bind();
+    gpu->quad.allocate(corners, int(sizeof(corners)));
+    const SphereMesh sphere = icosphere(kSphereMeshSubdivisions);
+    gpu->sphere.create();
+    gpu->sphere.bind();
+    gpu->sphere.allocate(sphere.vertices.data(), int(sphere.vertices.size() * sizeof(float)));
+    gpu->sphereIndexCount = int(sphere.indices.size());
+
+    // dynamic buffers, empty for now
+    for (QOpenGLBuffer *buffer : {&gpu->positions, &gpu->springs}) {
+        buffer->setUsagePattern(QOpenGLBuffer::StreamDraw);
+        buffer->create();
+    }
+    for (QOpenGLBuffer *buffer : {&gpu->styles, &gpu->decorations, &gpu->planes}) {
+        buffer->setUsagePattern(QOpenGLBuffer::StaticDraw);
+        buffer->create();
+    }
+
+    // the per-particle attributes, shared by both particle drawings
+    auto bindParticleAttributes = [this, &gpu] {
+        gpu->positions.bind();
+        glEnableVertexAttribArray(kPositionLocation);
+        glVertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+        glVertexAttribDivisor(kPositionLocation, 1);
+        gpu->styles.bind();
+        const struct {
+            int location, size, offset;
+        } styleAttributes[] = {{kRadiusLocation, 1, 0}, {kColourLocation, 3, 1}, {kMarksLocation, 2, 4}};
+        for (const auto &a : styleAttributes) {
+            glEnableVertexAttribArray(a.location);
+            glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, kStyleFloats * sizeof(float),
+                                  reinterpret_cast<const void *>(std::uintptr_t(a.offset * sizeof(float))));
+            glVertexAttribDivisor(a.location, 1);
+        }
+    };
+
+    // impostors: a 2D corner per vertex
+    gpu->impostorVao.create();
+    gpu->impostorVao.bind();
+    gpu->quad.bind();
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    bindParticleAttributes();
+
+    // meshes: a point of the unit sphere per vertex, and the index buffer
+    gpu->meshVao.create();
+    gpu->meshVao.bind();
+    gpu->sphere.bind();
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    gpu->sphereIndices.create();
+    gpu->sphereIndices.bind();
+    gpu->sphereIndices.allocate(sphere.indices.data(), int(sphere.indices.size() * sizeof(std::uint32_t)));
+    bindParticleAttributes();
+
+    // flat lines and triangles: position and colour per vertex
+    const std::pair<QOpenGLVertexArrayObject *, QOpenGLBuffer *> flatArrays[] = {
+        {&gpu->springsVao, &gpu->springs}, {&gpu->decorationsVao, &gpu->decorations}, {&gpu->planesVao, &gpu->planes}};
+    for (auto [vao, buffer] : flatArrays) {
+        vao->create();
+        vao->bind();
+        buffer->bind();
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kVertexFloats * sizeof(float), nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, kVertexFloats * sizeof(float),
+                              reinterpret_cast<const void *>(3 * sizeof(float)));
+    }
+    gpu->planesVao.release();
+
+    // everything is to be uploaded again into the new buffers
+    m_gpu = std::move(gpu);
+    m_positionsStale = true;
+    m_styleKey.clear();
+    m_decorationsChanged = true;
+    m_samples = -1;
+}
+
+void Viewport::cleanupGL()
+{
+    // hellogl2's way: make the context current, free, release
+    if (!m_gpu)
+        return;
+    makeCurrent();
+    m_gpu.reset();
+    doneCurrent();
+}
+
+void Viewport::resizeGL(int, int)
+{
+    // the first framing was made for whatever size the widget had before it was laid out
+    m_camera.setViewportSize(size());
+    if (m_autoFramed) {
+        frameAll();
+        m_autoFramed = true;
+    }
+}
+
+void Viewport::uploadSnapshot()
+{
+    Gpu &gpu = *m_gpu;
+    if (!m_snapshot) {
+        gpu.particleCount = 0;
+        gpu.styleCount = 0;
+        gpu.springVertices = 0;
+        return;
+    }
+    const core::Snapshot &s = *m_snapshot;
+
+    // the style, only when the radii, the pins or the selection changed
+    if (m_selectionChanged || !m_styleKey.matches(s)) {
+        const ParticleStyle style = packParticleStyle(s, m_selection);
+        gpu.styles.bind();
+        gpu.styles.allocate(style.values.data(), int(style.values.size() * sizeof(float)));
+        gpu.styleCount = style.count();
+        m_styleKey.remember(s);
+        m_selectionChanged = false;
+        ++m_styleUploads;
+    }
+
+    // positions and spring lines, once per new snapshot
+    if (m_positionsStale) {
+        gpu.positions.bind();
+        gpu.positions.allocate(s.positions.data(), int(s.positions.size() * sizeof(float)));
+        packSpringLines(s, m_springVertices);
+        gpu.springs.bind();
+        gpu.springs.allocate(m_springVertices.data(), int(m_springVertices.size() * sizeof(float)));
+        gpu.springVertices = int(m_springVertices.size() / kVertexFloats);
+        gpu.particleCount = std::min<int>(s.particleCount(), int(s.positions.size() / 3));
+        m_positionsStale = false;
+    }
+}
+
+void Viewport::uploadDecorations()
+{
+    if (!m_decorationsChanged)
+        return;
+    Gpu &gpu = *m_gpu;
+
+    // the grid lies on the floor plane if the scene has one, else at y = 0 or under the particles
+    float floor = std::min(0.0f, m_sceneBounds.centre.y() - m_sceneBounds.radius);
+    for (const core::PlaneDesc &plane : m_planes) {
+        const QVector3D n = toVector(plane.normal).normalized();
+        if (n.y() > 0.999f) {
+            floor = float(plane.offset) / n.y();
+            break;
+        }
+    }
+
+    // a hair above the floor, so that the floor plane's square does not hide it
+    std::vector<float> lines = packGrid(m_sceneBounds, floor + 1.0e-4f * m_sceneBounds.radius);
+    const std::vector<float> axes = packAxes(2.0f * niceStep(m_sceneBounds.radius / 4.0f));
+    lines.insert(lines.end(), axes.begin(), axes.end());
+    gpu.decorations.bind();
+    gpu.decorations.allocate(lines.data(), int(lines.size() * sizeof(float)));
+    gpu.decorationVertices = int(lines.size() / kVertexFloats);
+
+    const std::vector<float> quads = packPlaneQuads(m_planes, m_sceneBounds);
+    gpu.planes.bind();
+    gpu.planes.allocate(quads.data(), int(quads.size() * sizeof(float)));
+    gpu.planeVertices = int(quads.size() / kVertexFloats);
+    m_decorationsChanged = false;
+}
+
+void Viewport::paintGL()
+{
+    m_frameClock.start();
+    m_frameTiming = true;
+
+    glClearColor(kBackgroundColour[0], kBackgroundColour[1], kBackgroundColour[2], 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!m_gpu)
+        return;
+    Gpu &gpu = *m_gpu;
+    if (m_samples < 0)
+        glGetIntegerv(GL_SAMPLES, &m_samples);
+
+    uploadSnapshot();
+    uploadDecorations();
+
+    const QMatrix4x4 view = m_camera.viewMatrix();
+    const QMatrix4x4 projection = m_camera.projectionMatrix();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+
+    // lines: grid and axes, then springs
+    gpu.flatProgram.bind();
+    gpu.flatProgram.setUniformValue("viewProjection", projection * view);
+    if (gpu.decorationVertices > 0) {
+        gpu.decorationsVao.bind();
+        glDrawArrays(GL_LINES, 0, gpu.decorationVertices);
+    }
+    if (gpu.springVertices > 0) {
+        gpu.springsVao.bind();
+        glDrawArrays(GL_LINES, 0, gpu.springVertices);
+    }
+
+    // particles, one instance each
+    const int particles = std::min(gpu.particleCount, gpu.styleCount);
+    if (particles > 0 && m_drawing == ParticleDrawing::Impostor) {
+        // outlines smoothed by alpha to coverage, with the stored alpha kept at one
+        const bool smooth = m_samples > 0;
+        if (smooth) {
+            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+        }
+        gpu.impostorProgram.bind();
+        gpu.impostorProgram.setUniformValue("view", view);
+        gpu.impostorProgram.setUniformValue("projection", projection);
+        gpu.impostorProgram.setUniformValue("smoothEdges", smooth);
+        gpu.impostorVao.bind();
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, particles);
+        glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+        glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+    } else if (particles > 0) {
+        glEnable(GL_CULL_FACE);
+        gpu.meshProgram.bind();
+        gpu.meshProgram.setUniformValue("view", view);
+        gpu.meshProgram.setUniformValue("projection", projection);
+        gpu.meshVao.bind();
+        glDrawElementsInstanced(GL_TRIANGLES, gpu.sphereIndexCount, GL_UNSIGNED_INT, nullptr, particles);
+        glDisable(GL_CULL_FACE);
+    }
+
+    // translucent planes last, over everything, leaving depth and the stored alpha alone
+    if (gpu.planeVertices > 0) {
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        glDepthMask(GL_FALSE);
+        gpu.flatProgram.bind();
+        gpu.planesVao.bind();
+        glDrawArrays(GL_TRIANGLES, 0, gpu.planeVertices);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+void Viewport::mousePressEvent(QMouseEvent *event)
+{
+    // middle or shift+left pans; left orbits unless it lands on a particle
+    m_lastMouse = event->position();
+    const bool left = event->button() == Qt::LeftButton;
+    if (event->button() == Qt::MiddleButton || (left && event->modifiers().testFlag(Qt::ShiftModifier))) {
+        m_drag = Drag::Pan;
+    } else if (left) {
+        const int particle = particleAt(event->position());
+        m_drag = particle < 0 ? Drag::Orbit : Drag::None;
+        if (particle >= 0)
+            emit particlePressed(particle, event->modifiers());
+    } else {
+        QOpenGLWidget::mousePressEvent(event);
+        return;
+    }
+    if (m_drag != Drag::None) {
+        m_autoFramed = false;
+        setCursor(m_drag == Drag::Pan ? Qt::SizeAllCursor : Qt::ClosedHandCursor);
+    }
+    event->accept();
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent *event)
+{
+    if (m_drag == Drag::None) {
+        QOpenGLWidget::mouseMoveEvent(event);
+        return;
+    }
+    const QPointF delta = event->position() - m_lastMouse;
+    m_lastMouse = event->position();
+    if (m_drag == Drag::Orbit)
+        m_camera.orbit(float(delta.x()), float(delta.y()));
+    else
+        m_camera.pan(float(delta.x()), float(delta.y()));
+    event->accept();
+    update();
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent *event)
+{
+    if (m_drag == Drag::None) {
+        QOpenGLWidget::mouseReleaseEvent(event);
+        return;
+    }
+    m_drag = Drag::None;
+    unsetCursor();
+    event->accept();
+}
+
+void Viewport::wheelEvent(QWheelEvent *event)
+{
+    // one notch (120 eighths of a degree) scales the distance by a fixed factor, about the cursor
+    const double notches = event->angleDelta().y() / 120.0;
+    if (notches == 0.0) {
+        QOpenGLWidget::wheelEvent(event);
+        return;
+    }
+    m_camera.zoomAt(event->position(), float(std::pow(double(kWheelZoomPerNotch), notches)));
+    m_autoFramed = false;
+    event->accept();
+    update();
+}
+
+void Viewport::keyPressEvent(QKeyEvent *event)
+{
+    if (event->key() == Qt::Key_F || event->key() == Qt::Key_Home) {
+        frameAll();
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+}  // namespace ui

@@ -1,0 +1,128 @@
+#pragma once
+// Viewport: the 3D view of the simulation (OpenGL 3.3 core). It draws the latest Snapshot it was
+// given and never waits for a step: particles as instanced spheres (ray-cast impostor quads by
+// default, a mesh as the alternative — bench/viewport_fps.cpp compares them), springs as lines
+// coloured by strain, planes as translucent squares around the scene, a ground grid and the axes.
+// Positions are streamed once per new snapshot; radii, colours and marks are uploaded only when the
+// particles' radii or pins, or the selection, change. GL resources are made in initializeGL and
+// freed when the context goes away, as Qt's hellogl2 example does.
+
+#include "camera.h"
+#include "render_data.h"
+
+#include "core/scene.h"
+#include "core/snapshot.h"
+
+#include <QElapsedTimer>
+#include <QOpenGLFunctions_3_3_Core>
+#include <QOpenGLWidget>
+#include <QPoint>
+
+#include <memory>
+#include <vector>
+
+namespace ui {
+
+// the mesh drawing's sphere: an icosahedron split this many times (80 triangles)
+inline constexpr int kSphereMeshSubdivisions = 1;
+
+enum class ParticleDrawing {
+    Impostor,  // a camera-facing quad per particle, the sphere found per fragment (the default)
+    Mesh,      // an instanced icosphere
+};
+
+class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
+    Q_OBJECT
+
+public:
+    explicit Viewport(QWidget *parent = nullptr);
+    ~Viewport() override;
+
+    // the surface format the viewport asks for: OpenGL 3.3 core, depth, 4× MSAA; main() should
+    // make it the default before the QApplication exists (with Qt::AA_ShareOpenGLContexts)
+    static QSurfaceFormat requestedFormat();
+
+    // the frame to draw; the first one with particles also frames the view (and frames it again
+    // when the widget is resized, until the view is moved)
+    void setSnapshot(std::shared_ptr<const core::Snapshot> snapshot);
+    std::shared_ptr<const core::Snapshot> snapshot() const { return m_snapshot; }
+
+    // the scene's planes, drawn as translucent squares around the particles
+    void setPlanes(const std::vector<core::PlaneDesc> &planes);
+
+    // indices of the highlighted particles
+    void setSelection(const std::vector<int> &particles);
+    const std::vector<int> &selection() const { return m_selection; }
+
+    void setParticleDrawing(ParticleDrawing drawing);
+    ParticleDrawing particleDrawing() const { return m_drawing; }
+
+    Camera &camera() { return m_camera; }
+    const Camera &camera() const { return m_camera; }
+
+    // the nearest particle whose sphere the ray through a pixel (logical) meets; -1 for none
+    int particleAt(const QPointF &pixel) const;
+
+    // how many times the particle style was uploaded, and whether the framebuffer is multisampled
+    int styleUploads() const { return m_styleUploads; }
+    int samples() const { return m_samples; }
+
+public slots:
+    // points the camera at the particles from the current direction (keys F and Home)
+    void frameAll();
+
+signals:
+    // seconds from the start of painting a frame to the frame on screen
+    void frameTimeMeasured(double seconds);
+    // a left press on a particle (a left press on empty space orbits instead)
+    void particlePressed(int particle, Qt::KeyboardModifiers modifiers);
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int width, int height) override;
+    void paintGL() override;
+
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+
+private:
+    struct Gpu;  // programs, buffers and vertex arrays; exists only while GL is initialised
+    enum class Drag { None, Orbit, Pan };
+
+    void cleanupGL();
+    void uploadSnapshot();
+    void uploadDecorations();
+    void updateSceneBounds(const Sphere &bounds);
+
+    Camera m_camera;
+    std::shared_ptr<const core::Snapshot> m_snapshot;
+    std::vector<core::PlaneDesc> m_planes;
+    std::vector<int> m_selection;
+    ParticleDrawing m_drawing = ParticleDrawing::Impostor;
+
+    // what is on the GPU
+    std::unique_ptr<Gpu> m_gpu;
+    bool m_positionsStale = true;  // a new snapshot has not been streamed yet
+    StyleKey m_styleKey;
+    bool m_selectionChanged = true;
+    bool m_decorationsChanged = true;
+    int m_styleUploads = 0;
+    int m_samples = 0;
+    std::vector<float> m_springVertices;  // kept to reuse its memory
+
+    // the scene's extent for the grid, the planes and the clip planes
+    Sphere m_sceneBounds{QVector3D(0.0f, 0.0f, 0.0f), 1.0f};
+    bool m_framed = false;
+    bool m_autoFramed = false;  // framed by the first snapshot and not moved since
+
+    // mouse gestures and frame timing
+    Drag m_drag = Drag::None;
+    QPointF m_lastMouse;
+    QElapsedTimer m_frameClock;
+    bool m_frameTiming = false;
+};
+
+}  // namespace ui
