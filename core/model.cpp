@@ -20,6 +20,9 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
     model->gravity = s.gravity;
     model->viscosity = s.viscosity;
     model->restitution = s.restitution;
+    // two sub-steps' worth of speed gained under gravity: what a resting contact picks up between
+    // projections, well below any real impact
+    model->restingSpeed = 2.0 * s.gravity.norm() * (s.timeStep / s.substeps);
 
     // particles, structure of arrays
     const auto n = static_cast<Eigen::Index>(scene.particles.size());

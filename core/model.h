@@ -31,6 +31,9 @@ struct Model {
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // m/s²
     double viscosity = 0.0;                             // kg/s
     double restitution = 1.0;
+    // m/s: contacts approaching slower than this are inelastic, so that a particle resting under
+    // gravity settles instead of hopping (see docs/physics.md); 0 without gravity
+    double restingSpeed = 0.0;
 
     // particles; a pinned particle has inverse mass 0 (infinite mass)
     Eigen::VectorXd mass;     // kg

@@ -1,4 +1,3 @@
-#include "geometry.h"
 #include "passes.h"
 
 #include <cmath>
@@ -6,6 +5,19 @@
 namespace core {
 
 namespace {
+
+// the axis two coincident particles are separated along: a direction on the unit sphere picked
+// from the pair's indices (a Fibonacci spiral of 1024 points), so that a crowd of particles
+// created at one point spreads out in every direction instead of along a single line
+Eigen::Vector3d coincidentAxis(int i, int j)
+{
+    constexpr int kPoints = 1024;
+    const int k = static_cast<int>((static_cast<unsigned>(i) * 7919u + static_cast<unsigned>(j)) % kPoints);
+    const double y = 1.0 - (2.0 * k + 1.0) / kPoints;
+    const double ring = std::sqrt(1.0 - y * y);
+    const double angle = 2.399963229728653 * k;  // the golden angle, rad
+    return Eigen::Vector3d(ring * std::cos(angle), y, ring * std::sin(angle));
+}
 
 // resolves one overlapping pair as the handout does, with inverse masses so that a pinned
 // particle (inverse mass 0) is the immovable side
@@ -20,10 +32,10 @@ void resolvePair(const Model &model, State &state, int i, int j)
     const Eigen::Vector3d d = state.position.col(i) - state.position.col(j);
     const double contact = model.radius[i] + model.radius[j];
     const double squared = d.squaredNorm();
-    if (squared >= contact * contact)
-        return;
+    if (!(squared < contact * contact))
+        return;  // apart (or NaN: a contact never spreads a NaN to a neighbour)
     const double distance = std::sqrt(squared);
-    const Eigen::Vector3d k = directionOr(d, distance);
+    const Eigen::Vector3d k = distance > 0.0 ? Eigen::Vector3d(d / distance) : coincidentAxis(i, j);
 
     // position: each moves by the penetration weighted by the other's mass (m_j/(m_i+m_j) = w_i/w)
     const double penetration = contact - distance;
@@ -34,14 +46,16 @@ void resolvePair(const Model &model, State &state, int i, int j)
     const double approach = k.dot(state.velocity.col(i) - state.velocity.col(j));
     if (approach >= 0.0)
         return;
-    const double a = (1.0 + model.restitution) * approach / w;
+    const double a = (1.0 + contactRestitution(model, approach)) * approach / w;
     state.velocity.col(i) -= (a * wi) * k;
     state.velocity.col(j) += (a * wj) * k;
 }
 
 }  // namespace
 
-// every pair i < j in a fixed order (brute force; the reference any broad phase must match)
+// every pair i < j in a fixed order (brute force; the reference any broad phase must match),
+// then the planes once more: a pair pushed into a plane is put back in front of it, so the
+// floor holds a stack however tall (the pairs may then overlap a little, never the planes)
 void collideParticles(const Model &model, State &state)
 {
     if (!model.plan.particleCollisions)
@@ -50,6 +64,7 @@ void collideParticles(const Model &model, State &state)
     for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j)
             resolvePair(model, state, i, j);
+    collidePlanes(model, state);
 }
 
 }  // namespace core

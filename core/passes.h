@@ -21,6 +21,13 @@ void rk4(const Model &model, State &state, double h);
 void implicitEuler(const Model &model, State &state, double h);
 void adaptiveRk45(const Model &model, State &state, double h);
 
+// the restitution of a contact approaching at normalSpeed (< 0): the scene's, or 0 for a resting
+// contact slower than model.restingSpeed
+inline double contactRestitution(const Model &model, double normalSpeed)
+{
+    return -normalSpeed > model.restingSpeed ? model.restitution : 0.0;
+}
+
 // scratch arrays of the state's size, made on first use (a step allocates nothing after that)
 Eigen::Matrix3Xd &scratch(State &state, int index);
 void collidePlanes(const Model &model, State &state);            // plane_collisions.cpp

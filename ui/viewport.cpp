@@ -103,7 +103,14 @@ Viewport::Viewport(QWidget *parent) : QOpenGLWidget(parent)
     });
 }
 
-Viewport::~Viewport() { cleanupGL(); }
+Viewport::~Viewport()
+{
+    // free now, and stop the context (destroyed by ~QOpenGLWidget) from calling back into a
+    // Viewport that is no longer there
+    cleanupGL();
+    if (QOpenGLContext *glContext = context())
+        disconnect(glContext, &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanupGL);
+}
 
 QSurfaceFormat Viewport::requestedFormat()
 {
