@@ -33,14 +33,29 @@ void StepDoubling::copyInto(const State &from, State &to) const
 
 std::optional<double> StepDoubling::estimate(const std::shared_ptr<const Model> &model, const State &state)
 {
+    const std::optional<LocalError> error = estimateLocalError(model, state);
+    if (!error)
+        return std::nullopt;
+    return error->position;
+}
+
+std::optional<LocalError> StepDoubling::estimateLocalError(const std::shared_ptr<const Model> &model,
+                                                           const State &state)
+{
     prepare(model);
     copyInto(state, m_one);
     copyInto(state, m_two);
     if (!step(m_single, m_one) || !step(m_double, m_two))
         return std::nullopt;
-    const double difference = (m_one.position - m_two.position).cwiseAbs().maxCoeff();
+    // the differences, scaled from "h against h/2" to the error of the h step
     const int order = integratorOrder(model->integrator);
-    return difference / (1.0 - std::pow(2.0, -order));
+    const double share = 1.0 - std::pow(2.0, -order);
+    LocalError error;
+    if (m_one.position.cols() > 0) {
+        error.position = (m_one.position - m_two.position).cwiseAbs().maxCoeff() / share;
+        error.velocity = (m_one.velocity - m_two.velocity).cwiseAbs().maxCoeff() / share;
+    }
+    return error;
 }
 
 }  // namespace core

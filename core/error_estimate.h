@@ -12,11 +12,20 @@
 
 namespace core {
 
+// the local error of one sub-step, the largest component of each
+struct LocalError {
+    double position = 0.0;  // m
+    double velocity = 0.0;  // m/s
+};
+
 class StepDoubling {
 public:
     // the estimated local position error of one sub-step (m, the largest component), or nullopt
     // if either trial blew up
     std::optional<double> estimate(const std::shared_ptr<const Model> &model, const State &state);
+
+    // the same estimate for the positions and the velocities
+    std::optional<LocalError> estimateLocalError(const std::shared_ptr<const Model> &model, const State &state);
 
 private:
     void prepare(const std::shared_ptr<const Model> &model);

@@ -39,9 +39,15 @@ struct SteerEdit {
     int particle = -1;                                // -1: none
     Eigen::Vector3d force = Eigen::Vector3d::Zero();  // N, constant until the next SteerEdit
 };
+// plan the integrator and substeps for a tolerance from the current state (core/accuracy_planner.h);
+// the plan comes back in the frames, tagged with the request's number
+struct PlanAccuracyEdit {
+    double tolerance = 1e-6;    // m, local position error per sub-step
+    std::uint64_t request = 0;  // the controller's number for this request
+};
 
-using Edit =
-    std::variant<SetSceneEdit, PlayEdit, PauseEdit, StepOnceEdit, ResetEdit, TiltEdit, SteerEdit, SyncEdit>;
+using Edit = std::variant<SetSceneEdit, PlayEdit, PauseEdit, StepOnceEdit, ResetEdit, TiltEdit, SteerEdit, SyncEdit,
+                          PlanAccuracyEdit>;
 
 // a thread-safe first-in first-out queue of edits, numbered in the order they were pushed
 class EditQueue {

@@ -34,6 +34,17 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
     addEntry(tr("Middle drag, or Shift + left drag"), tr("Pan"));
     addEntry(tr("Wheel"), tr("Zoom towards the point under the cursor"));
 
+    // accuracy: the integrator, and the figures that say how accurate the run is
+    addSection(tr("Accuracy"));
+    addEntry(tr("Parameters › Integrator"),
+             tr("How each sub-step is integrated: symplectic-euler, explicit-euler, velocity-verlet, rk4, "
+                "implicit-euler or adaptive-rk45 (undoable)"));
+    addEntry(tr("Parameters › Tolerance"), tr("The local error per step adaptive-rk45 keeps under (only for it)"));
+    addEntry(tr("Status bar: local error ≈"),
+             tr("The local position error of one step of the integrator, by step doubling every few steps"));
+    addEntry(tr("Status bar: ΔE"),
+             tr("The change of the total energy since the last reset, in % of it (in J when it is about 0)"));
+
     // keys as wide as they need, descriptions wrapped to what is left
     m_table->resizeColumnToContents(0);
     connect(m_table->horizontalHeader(), &QHeaderView::sectionResized, m_table, &QTableWidget::resizeRowsToContents);

@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "accuracy_dialog.h"
 #include "help_dialog.h"
 #include "parameters_panel.h"
 #include "scene_commands.h"
@@ -8,6 +9,7 @@
 #include "status_text.h"
 #include "viewport.h"
 
+#include "core/accuracy_planner.h"
 #include "core/io/scene_file.h"
 
 #include <QAction>
@@ -38,6 +40,9 @@ namespace {
 
 // the examples in the handout's order; any others found in the resources follow
 constexpr const char *kExampleOrder[] = {"particles", "springs", "collisions", "pool", "cloth"};
+
+// how long the status bar shows what the accuracy planner picked, ms
+constexpr int kPlanMessageMs = 20000;
 
 QString examplePath(const QString &name)
 {
@@ -125,6 +130,13 @@ void MainWindow::createActions()
     m_collisionsAction->setStatusTip(tr("Switch plane and particle collisions on or off"));
     connect(m_collisionsAction, &QAction::triggered, this, &MainWindow::toggleCollisions);
 
+    m_accuracyAction = new QAction(tr("&Accuracy..."), this);
+    m_accuracyAction->setObjectName(QStringLiteral("actionAccuracy"));
+    m_accuracyAction->setShortcut(Qt::Key_F7);
+    m_accuracyAction->setStatusTip(
+        tr("Type a local error per step; the cheapest integrator and substeps that keep under it are applied"));
+    connect(m_accuracyAction, &QAction::triggered, this, &MainWindow::showAccuracy);
+
     // steering, for scenes with a steerable particle
     struct SteerKey {
         const char *name;
@@ -204,6 +216,7 @@ void MainWindow::createMenus()
     simulation->addSeparator();
     simulation->addAction(m_tiltAction);
     simulation->addAction(m_collisionsAction);
+    simulation->addAction(m_accuracyAction);
     simulation->addSeparator();
     simulation->addActions(m_steerActions);
 
@@ -262,16 +275,22 @@ void MainWindow::createStatusBar()
     m_rateLabel = label("statusRate", 80);
     m_stepsLabel = label("statusSteps", 90);
     m_energyLabel = label("statusEnergy", 110);
+    m_errorLabel = label("statusError", 150);
+    m_driftLabel = label("statusDrift", 90);
     m_timeLabel->setToolTip(tr("Simulated time"));
     m_rateLabel->setToolTip(tr("Simulated seconds per second of wall-clock time"));
     m_stepsLabel->setToolTip(tr("Time steps computed per second of wall-clock time"));
     m_energyLabel->setToolTip(tr("Total energy: kinetic + gravitational + spring"));
+    m_driftLabel->setToolTip(tr("Change of the total energy since the last reset or scene load, relative to it "
+                                "(in joules when it is about zero)"));
     statusBar()->addWidget(m_warningLabel, 1);
     statusBar()->addPermanentWidget(m_steerLabel);
     statusBar()->addPermanentWidget(m_timeLabel);
     statusBar()->addPermanentWidget(m_rateLabel);
     statusBar()->addPermanentWidget(m_stepsLabel);
     statusBar()->addPermanentWidget(m_energyLabel);
+    statusBar()->addPermanentWidget(m_driftLabel);
+    statusBar()->addPermanentWidget(m_errorLabel);
     m_steerLabel->hide();
 }
 
@@ -427,6 +446,16 @@ QString MainWindow::statusWarning() const
     return m_warningLabel->text();
 }
 
+QString MainWindow::statusError() const
+{
+    return m_errorLabel->text();
+}
+
+QString MainWindow::statusDrift() const
+{
+    return m_driftLabel->text();
+}
+
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     if (!maybeSave()) {
@@ -450,6 +479,10 @@ void MainWindow::sceneChanged(SceneChange change)
         m_steering = Steering{};
         m_warningLabel->clear();
         m_frameAllAfter = sequence;
+        // a plan still awaited was made for the old scene: drop it
+        if (m_accuracyRequest != 0 && m_accuracy)
+            m_accuracy->showPlan(core::AccuracyPlan{}, tr("Another scene was opened; plan again"));
+        m_accuracyRequest = 0;
     }
     {
         const QSignalBlocker block(m_collisionsAction);
@@ -462,7 +495,15 @@ void MainWindow::sceneChanged(SceneChange change)
 void MainWindow::frameChanged()
 {
     const std::shared_ptr<const SimulationFrame> frame = m_controller->frame();
-    if (!frame || !frame->snapshot)
+    if (!frame)
+        return;
+
+    // the accuracy plan asked for has come back: apply it
+    if (m_accuracyRequest != 0 && frame->accuracyRequest >= m_accuracyRequest && frame->accuracyPlan) {
+        m_accuracyRequest = 0;
+        applyPlan(*frame->accuracyPlan);
+    }
+    if (!frame->snapshot)
         return;
     m_viewport->setSnapshot(frame->snapshot);
     if (m_frameAllAfter != 0 && frame->appliedEdit >= m_frameAllAfter) {
@@ -476,6 +517,12 @@ void MainWindow::frameChanged()
     m_rateLabel->setText(rateText(frame->running, frame->realTimeFactor));
     m_stepsLabel->setText(stepsText(frame->running, frame->stepsPerSecond));
     m_energyLabel->setText(energyText(snapshot.energies.total()));
+    m_driftLabel->setText(driftText(frame->initialEnergies, snapshot.energies.total()));
+    m_errorLabel->setText(localErrorText(frame->localError));
+    m_errorLabel->setToolTip(tr("Local position error of one step of the integrator (one sub-step), estimated by "
+                                "step doubling at step %1; the estimates take %2 % of the computing time")
+                                 .arg(frame->localErrorStep)
+                                 .arg(100.0 * frame->estimateShare, 0, 'f', 2));
 }
 
 void MainWindow::runningChanged(bool running)
@@ -567,6 +614,50 @@ void MainWindow::toggleCollisions(bool on)
     m_document->undoStack()->push(new SettingsCommand(*m_document, on ? tr("Collisions on") : tr("Collisions off"),
                                                       QStringLiteral("collisions"), settings));
     statusBar()->showMessage(on ? tr("Collisions on") : tr("Collisions off"), 3000);
+}
+
+void MainWindow::showAccuracy()
+{
+    if (!m_accuracy) {
+        m_accuracy = new AccuracyDialog(this);
+        connect(m_accuracy, &AccuracyDialog::planRequested, this, &MainWindow::planAccuracy);
+    }
+    m_accuracy->show();
+    m_accuracy->raise();
+    m_accuracy->activateWindow();
+}
+
+void MainWindow::planAccuracy(double tolerance)
+{
+    // the worker plans from its own state; the answer comes back in a frame
+    m_accuracyRequest = m_controller->planAccuracy(tolerance);
+    if (m_accuracy)
+        m_accuracy->setPlanning(true);
+}
+
+void MainWindow::applyPlan(const core::AccuracyPlan &plan)
+{
+    // the pick, integrator and substeps together, is one step of undo
+    QString summary = planText(plan);
+    if (const core::PlanCandidate *pick = plan.pick()) {
+        core::Settings settings = m_document->scene().settings;
+        if (settings.integrator == pick->integrator && settings.substeps == pick->substeps) {
+            summary += tr("; already in use");
+        } else {
+            settings.integrator = pick->integrator;
+            settings.substeps = pick->substeps;
+            const std::string_view name = core::integratorName(pick->integrator);
+            m_document->undoStack()->push(new SettingsCommand(
+                *m_document,
+                tr("Accuracy: %1 with %2 substeps")
+                    .arg(QString::fromLatin1(name.data(), qsizetype(name.size())))
+                    .arg(pick->substeps),
+                QString(), settings));
+        }
+    }
+    statusBar()->showMessage(summary, kPlanMessageMs);
+    if (m_accuracy)
+        m_accuracy->showPlan(plan, summary);
 }
 
 void MainWindow::steer(int turn, int change)

@@ -16,8 +16,13 @@ class QLabel;
 class QMenu;
 class QDockWidget;
 
+namespace core {
+struct AccuracyPlan;
+}
+
 namespace ui {
 
+class AccuracyDialog;
 class ParametersPanel;
 class SceneDocument;
 class SimulationController;
@@ -57,12 +62,16 @@ public:
     SimulationController *controller() const { return m_controller; }
     Viewport *viewport() const { return m_viewport; }
     ParametersPanel *parametersPanel() const { return m_parameters; }
+    // Simulation › Accuracy's dialog; null until first opened
+    AccuracyDialog *accuracyDialog() const { return m_accuracy; }
     const Steering &steering() const { return m_steering; }
 
     // the status bar's fields, for the tests
     QString statusTime() const;
     QString statusRate() const;
     QString statusWarning() const;
+    QString statusError() const;
+    QString statusDrift() const;
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -88,6 +97,9 @@ private:
     void showHelp();
     void showAbout();
     void toggleCollisions(bool on);
+    void showAccuracy();
+    void planAccuracy(double tolerance);
+    void applyPlan(const core::AccuracyPlan &plan);
     void steer(int turn, int change);
 
     SceneDocument *m_document = nullptr;
@@ -95,6 +107,8 @@ private:
     Viewport *m_viewport = nullptr;
     ParametersPanel *m_parameters = nullptr;
     QDockWidget *m_parametersDock = nullptr;
+    AccuracyDialog *m_accuracy = nullptr;
+    std::uint64_t m_accuracyRequest = 0;  // the plan awaited from the worker; 0: none
     QString m_screenshotDirectory;
     Steering m_steering;
     std::uint64_t m_frameAllAfter = 0;  // frame the view once the worker has applied this edit
@@ -105,6 +119,7 @@ private:
     QAction *m_resetAction = nullptr;
     QAction *m_tiltAction = nullptr;
     QAction *m_collisionsAction = nullptr;
+    QAction *m_accuracyAction = nullptr;
     QList<QAction *> m_steerActions;
     QMenu *m_viewMenu = nullptr;
 
@@ -115,6 +130,8 @@ private:
     QLabel *m_rateLabel = nullptr;
     QLabel *m_stepsLabel = nullptr;
     QLabel *m_energyLabel = nullptr;
+    QLabel *m_errorLabel = nullptr;
+    QLabel *m_driftLabel = nullptr;
 };
 
 }  // namespace ui

@@ -5,6 +5,7 @@
 #include "scene_document.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
@@ -46,6 +47,9 @@ const Binding kBindings[] = {
     {"substeps", core::Parameter::Substeps, Group::Time, "",
      [](const core::SceneDesc &s) { return double(s.settings.substeps); },
      [](core::Settings &s, double v) { s.substeps = int(v); }, nullptr},
+    {"tolerance", core::Parameter::Tolerance, Group::Time, "",
+     [](const core::SceneDesc &s) { return s.settings.tolerance; },
+     [](core::Settings &s, double v) { s.tolerance = v; }, nullptr},
     {"gravity.x", core::Parameter::Gravity, Group::World, " x",
      [](const core::SceneDesc &s) { return s.settings.gravity.x(); },
      [](core::Settings &s, double v) { s.gravity.x() = v; }, nullptr},
@@ -72,6 +76,25 @@ QString fromView(std::string_view text)
     return QString::fromUtf8(text.data(), qsizetype(text.size()));
 }
 
+// what each integrator is, for its entry's tooltip
+QString integratorTip(core::Integrator integrator)
+{
+    switch (integrator) {
+    case core::Integrator::SymplecticEuler:
+        return ParametersPanel::tr("First order, one force evaluation per step; the handout's scheme");
+    case core::Integrator::ExplicitEuler:
+        return ParametersPanel::tr("First order, one force evaluation per step; gains energy on springs");
+    case core::Integrator::VelocityVerlet:
+        return ParametersPanel::tr("Second order and symplectic, two force evaluations per step");
+    case core::Integrator::Rk4: return ParametersPanel::tr("Fourth order, four force evaluations per step");
+    case core::Integrator::ImplicitEuler:
+        return ParametersPanel::tr("First order, stable at any step but damps; a linear solve per step");
+    case core::Integrator::AdaptiveRk45:
+        return ParametersPanel::tr("Fifth order, shortens its steps to keep the local error under the tolerance");
+    }
+    return QString();
+}
+
 }  // namespace
 
 ParametersPanel::ParametersPanel(SceneDocument &document, QWidget *parent)
@@ -89,6 +112,17 @@ ParametersPanel::ParametersPanel(SceneDocument &document, QWidget *parent)
         if (Group(g) == Group::Springs)
             m_springsGroup = box;
     }
+
+    // the integrator heads the time group; its tolerance row follows the substeps
+    m_integrator = new QComboBox(this);
+    m_integrator->setObjectName(QStringLiteral("parameter-integrator"));
+    m_integrator->setToolTip(tr("How each sub-step advances the particles"));
+    for (core::Integrator integrator : core::kIntegrators) {
+        m_integrator->addItem(fromView(core::integratorName(integrator)));
+        m_integrator->setItemData(m_integrator->count() - 1, integratorTip(integrator), Qt::ToolTipRole);
+    }
+    forms[std::size_t(Group::Time)]->addRow(tr("Integrator"), m_integrator);
+    connect(m_integrator, &QComboBox::activated, this, &ParametersPanel::setIntegrator);
 
     // the springs group says what its values apply to
     m_springsNote = new QLabel(m_springsGroup);
@@ -153,6 +187,11 @@ void ParametersPanel::refresh()
     const core::SceneDesc &scene = m_document.scene();
     for (std::size_t b = 0; b < std::size(kBindings); ++b)
         m_rows[b]->setValue(kBindings[b].read(scene));
+    const core::Integrator integrator = scene.settings.integrator;
+    for (std::size_t i = 0; i < std::size(core::kIntegrators); ++i)
+        if (core::kIntegrators[i] == integrator)
+            m_integrator->setCurrentIndex(int(i));
+    row(QStringLiteral("tolerance"))->setEnabled(integrator == core::Integrator::AdaptiveRk45);
     {
         const QSignalBlocker blockPlanes(m_planeCollisions);
         const QSignalBlocker blockParticles(m_particleCollisions);
@@ -196,6 +235,21 @@ void ParametersPanel::edit(std::size_t b, double value)
     } else {
         m_document.undoStack()->push(new SpringValueCommand(m_document, text, binding.springField, value));
     }
+}
+
+void ParametersPanel::setIntegrator(int index)
+{
+    if (index < 0 || index >= int(std::size(core::kIntegrators)))
+        return;
+    const core::Integrator integrator = core::kIntegrators[index];
+    if (integrator == m_document.scene().settings.integrator)
+        return;
+    m_message->hide();
+    core::Settings settings = m_document.scene().settings;
+    settings.integrator = integrator;
+    m_document.undoStack()->push(new SettingsCommand(
+        m_document, tr("Set integrator to %1").arg(fromView(core::integratorName(integrator))),
+        QString(), settings));
 }
 
 void ParametersPanel::setCollisions(bool planes, bool particles)

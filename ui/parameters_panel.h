@@ -1,14 +1,16 @@
 #pragma once
 // ParametersPanel: the dock that tunes the scene's parameters live. Its rows are generated from
 // the parameter table (core/parameters.h), one ParameterRow per binding below, never written out
-// widget by widget. An accepted change becomes an undo command on the document, which the main
-// window forwards to the worker; a refused one is reported here and goes nowhere.
+// widget by widget; the integrator is a combo box of core::kIntegrators. An accepted change
+// becomes an undo command on the document, which the main window forwards to the worker; a
+// refused one is reported here and goes nowhere.
 
 #include <QString>
 #include <QWidget>
 #include <vector>
 
 class QCheckBox;
+class QComboBox;
 class QGroupBox;
 class QLabel;
 
@@ -26,6 +28,8 @@ public:
 
     // the row of a binding key: "timeStep", "substeps", "gravity.x", "stiffness", ...
     ParameterRow *row(const QString &key) const;
+    // the integrators in core::kIntegrators order, named as in scene files
+    QComboBox *integratorBox() const { return m_integrator; }
     QCheckBox *planeCollisionsBox() const { return m_planeCollisions; }
     QCheckBox *particleCollisionsBox() const { return m_particleCollisions; }
 
@@ -41,11 +45,13 @@ private:
     void showRefusal(const QString &message);
     void edit(std::size_t binding, double value);
     void setCollisions(bool planes, bool particles);
+    void setIntegrator(int index);
 
     SceneDocument &m_document;
     std::vector<ParameterRow *> m_rows;  // one per binding, in the bindings' order
     QGroupBox *m_springsGroup = nullptr;
     QLabel *m_springsNote = nullptr;
+    QComboBox *m_integrator = nullptr;
     QCheckBox *m_planeCollisions = nullptr;
     QCheckBox *m_particleCollisions = nullptr;
     QLabel *m_message = nullptr;

@@ -37,7 +37,7 @@ int SettingsCommand::id() const
 bool SettingsCommand::mergeWith(const QUndoCommand *other)
 {
     const auto *next = static_cast<const SettingsCommand *>(other);
-    if (next->m_mergeKey != m_mergeKey)
+    if (m_mergeKey.isEmpty() || next->m_mergeKey != m_mergeKey)
         return false;
     m_after = next->m_after;
     setObsolete(m_after == m_before);

@@ -11,7 +11,8 @@ namespace ui {
 
 class SceneDocument;
 
-// replaces the scene's settings; mergeKey names the parameter that changed (e.g. "gravity.y")
+// replaces the scene's settings; mergeKey names the parameter that changed (e.g. "gravity.y"); an
+// empty key never merges (a choice, such as the integrator, is one undo step each time)
 class SettingsCommand : public QUndoCommand {
 public:
     SettingsCommand(SceneDocument &document, const QString &text, const QString &mergeKey, const core::Settings &after);

@@ -114,6 +114,13 @@ std::uint64_t SimulationController::sync()
     return post(SyncEdit{});
 }
 
+std::uint64_t SimulationController::planAccuracy(double tolerance)
+{
+    const std::uint64_t request = ++m_accuracyRequests;
+    post(PlanAccuracyEdit{tolerance, request});
+    return request;
+}
+
 void SimulationController::setTiltSeed(std::uint64_t seed)
 {
     m_tiltSeed = seed;

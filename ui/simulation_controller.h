@@ -40,6 +40,9 @@ public:
     std::uint64_t steer(int particle, const Eigen::Vector3d &force);
     // changes nothing, but the worker publishes a frame once it has applied every earlier edit
     std::uint64_t sync();
+    // asks the worker to plan the integrator and substeps for a tolerance (m per sub-step) from its
+    // state; returns the request's number, which frame()->accuracyRequest reaches with the plan
+    std::uint64_t planAccuracy(double tolerance);
 
     // tilts are drawn from this seed: the n-th tilt after setTiltSeed(s) is the same every time
     void setTiltSeed(std::uint64_t seed);
@@ -76,6 +79,7 @@ private:
     bool m_shutDown = false;
     std::uint64_t m_tiltSeed = 0;
     std::uint64_t m_tiltCount = 0;
+    std::uint64_t m_accuracyRequests = 0;
 };
 
 }  // namespace ui

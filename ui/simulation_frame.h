@@ -1,13 +1,17 @@
 #pragma once
 // SimulationFrame: what the worker publishes after a tick: the snapshot of the state, the model it
-// was stepped with, and how fast the run keeps up with the wall clock. Immutable once published.
+// was stepped with, how fast the run keeps up with the wall clock, how accurate it is, and the
+// latest accuracy plan asked for. Immutable once published.
 
+#include "core/accuracy_planner.h"
+#include "core/diagnostics.h"
 #include "core/model.h"
 #include "core/scene.h"
 #include "core/snapshot.h"
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 namespace ui {
 
@@ -21,6 +25,18 @@ struct SimulationFrame {
     // measured over the last second or so of running; 0 while paused or not yet measured
     double realTimeFactor = 0.0;  // simulated seconds per wall-clock second
     double stepsPerSecond = 0.0;  // steps per wall-clock second
+
+    // the live accuracy figures: the local position error of one sub-step by step doubling, made
+    // every few steps (nullopt before the first, or when a trial blew up), and the energies at the
+    // last reset or scene load, from which the snapshot's energies have drifted
+    std::optional<double> localError;  // m
+    std::uint64_t localErrorStep = 0;  // the step whose state it was estimated at
+    core::Energies initialEnergies;
+    double estimateShare = 0.0;  // computing time of the estimates over that of the steps
+
+    // the latest accuracy plan asked for (null before the first) and the request it answers
+    std::shared_ptr<const core::AccuracyPlan> accuracyPlan;
+    std::uint64_t accuracyRequest = 0;
 };
 
 }  // namespace ui

@@ -10,6 +10,13 @@ namespace ui {
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start)
+{
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
 // a uniform number in [-1, 1) from the generator's bits, the same on every standard library
 double symmetricUnit(std::mt19937_64 &random)
 {
@@ -38,12 +45,14 @@ void SimulationRunner::apply(const Edit &edit)
                        if (hasScene()) {
                            m_lastGood = m_state;
                            stepOnce();
+                           m_estimateStale = true;
                        }
                    },
                    [this](const ResetEdit &) { reset(); },
                    [this](const TiltEdit &e) { tilt(e); },
                    [this](const SteerEdit &e) { steer(e); },
                    [](const SyncEdit &) {},
+                   [this](const PlanAccuracyEdit &e) { planAccuracy(e); },
                },
                edit);
 }
@@ -74,26 +83,37 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
         }
         [[fallthrough]];
     case SceneChange::Replace:
-        m_state = core::makeState(*m_model, *m_scene);
-        m_owed = 0.0;
+        restart();
         break;
     }
     if (edit.change == SceneChange::Replace) {
-        // another scene: nothing of the old one's steering survives
+        // another scene: nothing of the old one's steering survives, and its costs start afresh
         m_running = false;
         m_steerParticle = -1;
         m_steerForce.setZero();
+        m_stepSeconds = 0.0;
+        m_estimateSeconds = 0.0;
+        m_lastEstimateSeconds = 0.0;
     }
     applySteering();
+    m_estimateStale = true;
+}
+
+// the scene's initial conditions, and the energy the drift is measured from
+void SimulationRunner::restart()
+{
+    m_state = core::makeState(*m_model, *m_scene);
+    m_owed = 0.0;
+    m_initialEnergies = core::energies(*m_model, m_state);
 }
 
 void SimulationRunner::reset()
 {
     if (!hasScene())
         return;
-    m_state = core::makeState(*m_model, *m_scene);
-    m_owed = 0.0;
+    restart();
     applySteering();
+    m_estimateStale = true;
 }
 
 void SimulationRunner::tilt(const TiltEdit &edit)
@@ -105,6 +125,7 @@ void SimulationRunner::tilt(const TiltEdit &edit)
     for (int i : m_model->freeParticles)
         for (int axis = 0; axis < 3; ++axis)
             m_state.velocity(axis, i) += edit.speed * symmetricUnit(random);
+    m_estimateStale = true;
 }
 
 void SimulationRunner::steer(const SteerEdit &edit)
@@ -115,6 +136,7 @@ void SimulationRunner::steer(const SteerEdit &edit)
     m_steerParticle = edit.particle;
     m_steerForce = edit.force;
     applySteering();
+    m_estimateStale = true;
 }
 
 void SimulationRunner::applySteering()
@@ -135,35 +157,85 @@ bool SimulationRunner::stepOnce()
     m_state = m_lastGood;
     m_state.profile = profile;
     m_state.blowup.reset();
+    m_estimateStale = true;
     return false;
 }
 
 SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double budgetSeconds)
 {
-    using Clock = std::chrono::steady_clock;
     Advance result;
     if (!m_running || !hasScene())
         return result;
 
     m_owed += wallSeconds;
+    m_wallSinceEstimate += wallSeconds;
     const double h = m_model->timeStep;
     if (m_owed < h)
         return result;
     m_lastGood = m_state;
     const auto start = Clock::now();
+    bool blewUp = false;
     while (m_owed >= h) {
-        if (!stepOnce())
-            return result;
+        if (!stepOnce()) {
+            blewUp = true;
+            break;
+        }
         m_owed -= h;
         ++result.steps;
         // out of time for this tick: give up what is still owed
-        if (std::chrono::duration<double>(Clock::now() - start).count() > budgetSeconds) {
+        if (secondsSince(start) > budgetSeconds) {
             result.droppedSeconds = m_owed;
             m_owed = 0.0;
             break;
         }
     }
+    const double seconds = secondsSince(start);
+    m_stepSeconds += seconds;
+    m_stepSecondsSinceEstimate += seconds;
+
+    // the periodic estimate, of the state these steps ended at: rare enough in wall time, and
+    // only once the steps have paid for it many times over
+    if (!blewUp && (m_estimateStale || (m_wallSinceEstimate >= kEstimateInterval &&
+                                        kEstimateShare * m_stepSecondsSinceEstimate >= m_lastEstimateSeconds)))
+        estimate(true);
     return result;
+}
+
+void SimulationRunner::updateEstimate()
+{
+    if (m_estimateStale)
+        estimate(false);
+}
+
+// counted: made between steps of the run, so part of what the run costs
+void SimulationRunner::estimate(bool counted)
+{
+    m_estimateStale = false;
+    if (!hasScene())
+        return;
+    const auto start = Clock::now();
+    m_localError = m_doubling.estimate(m_model, m_state);
+    m_localErrorStep = m_state.step;
+    const double seconds = secondsSince(start);
+    m_lastEstimateSeconds = seconds;
+    if (counted)
+        m_estimateSeconds += seconds;
+    m_wallSinceEstimate = 0.0;
+    m_stepSecondsSinceEstimate = 0.0;
+}
+
+void SimulationRunner::planAccuracy(const PlanAccuracyEdit &edit)
+{
+    // the cost of a force evaluation as measured in this run, else timed now
+    auto plan = std::make_shared<core::AccuracyPlan>();
+    if (hasScene()) {
+        double secondsPerEvaluation = core::profiledSecondsPerEvaluation(m_state);
+        if (!(secondsPerEvaluation > 0.0))
+            secondsPerEvaluation = core::timedSecondsPerEvaluation(*m_model, m_state);
+        *plan = core::planAccuracy(*m_model, m_state, edit.tolerance, secondsPerEvaluation);
+    }
+    m_plan = std::move(plan);
+    m_planRequest = edit.request;
 }
 
 std::shared_ptr<const core::Snapshot> SimulationRunner::snapshot() const

@@ -3,9 +3,18 @@
 // edits between steps, and turns wall time into whole steps of the model's time step. It has no
 // thread and no timer of its own: SimulationWorker calls it from its tick, and the unit tests call
 // it directly, one edit or one advance at a time.
+//
+// It also keeps the live accuracy figures: a step-doubling estimate of the local error, refreshed
+// after an edit and, while running, at most every kEstimateInterval of wall time and only once the
+// steps since the last estimate took 1 / kEstimateShare times as long as it did, so that the
+// estimates never cost more than that share of the run; and the energies at the last reset, from
+// which the drift is measured. The accuracy planner runs here too, on the runner's own state.
 
 #include "edit_queue.h"
 
+#include "core/accuracy_planner.h"
+#include "core/diagnostics.h"
+#include "core/error_estimate.h"
 #include "core/model.h"
 #include "core/snapshot.h"
 #include "core/state.h"
@@ -17,6 +26,11 @@ namespace ui {
 
 class SimulationRunner {
 public:
+    // the live error estimate: at most this often (s of wall time), and at most this share of the
+    // computing time of the steps
+    static constexpr double kEstimateInterval = 0.25;
+    static constexpr double kEstimateShare = 0.05;
+
     struct Advance {
         int steps = 0;                // steps taken
         double droppedSeconds = 0.0;  // s of wall time left unsimulated (the run fell behind)
@@ -43,13 +57,37 @@ public:
     // the blow-up that stopped the run, once: the caller reports it
     std::optional<core::Blowup> takeBlowup();
 
+    // estimates the local error now if an edit or a blow-up changed the model or the state since
+    // the last estimate; the worker calls it once a tick, after the edits and the steps
+    void updateEstimate();
+
+    // the local position error of one sub-step (m) at the state of step localErrorStep(); nullopt
+    // before the first estimate or when a trial blew up
+    std::optional<double> localError() const { return m_localError; }
+    std::uint64_t localErrorStep() const { return m_localErrorStep; }
+    // the energies at the last reset or scene load
+    const core::Energies &initialEnergies() const { return m_initialEnergies; }
+    // computing time (s) since the scene was loaded: of the steps while running, and of the
+    // estimates made between them
+    double stepSeconds() const { return m_stepSeconds; }
+    double estimateSeconds() const { return m_estimateSeconds; }
+    // estimateSeconds() / stepSeconds(), 0 before any step
+    double estimateShare() const { return m_stepSeconds > 0.0 ? m_estimateSeconds / m_stepSeconds : 0.0; }
+
+    // the latest accuracy plan (null before the first request) and the request it answers
+    std::shared_ptr<const core::AccuracyPlan> accuracyPlan() const { return m_plan; }
+    std::uint64_t accuracyRequest() const { return m_planRequest; }
+
 private:
     void setScene(const SetSceneEdit &edit);
+    void restart();
     void reset();
     void tilt(const TiltEdit &edit);
     void steer(const SteerEdit &edit);
     void applySteering();
     bool stepOnce();
+    void estimate(bool counted);
+    void planAccuracy(const PlanAccuracyEdit &edit);
 
     std::shared_ptr<const core::SceneDesc> m_scene;
     std::shared_ptr<const core::Model> m_model;
@@ -58,6 +96,21 @@ private:
     bool m_running = false;
     double m_owed = 0.0;  // s of simulated time not yet covered by a whole step
     std::optional<core::Blowup> m_blowup;
+
+    // the live error estimate and what it has cost
+    core::StepDoubling m_doubling;
+    std::optional<double> m_localError;
+    std::uint64_t m_localErrorStep = 0;
+    bool m_estimateStale = true;              // an edit changed the model or the state since
+    double m_wallSinceEstimate = 0.0;         // s of wall time run since the last estimate
+    double m_stepSecondsSinceEstimate = 0.0;  // s of computing spent on steps since then
+    double m_lastEstimateSeconds = 0.0;       // s the last estimate took
+    double m_stepSeconds = 0.0;
+    double m_estimateSeconds = 0.0;
+    core::Energies m_initialEnergies;
+
+    std::shared_ptr<const core::AccuracyPlan> m_plan;
+    std::uint64_t m_planRequest = 0;
 
     // the steering force, kept across resets and parameter changes
     int m_steerParticle = -1;

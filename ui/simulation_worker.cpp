@@ -71,6 +71,9 @@ void SimulationWorker::tick()
         m_stepsPerSecond = 0.0;
     }
 
+    // an edit or a blow-up changed what the error estimate is of: estimate again
+    m_runner.updateEstimate();
+
     // a blow-up paused the run: say so
     if (const std::optional<core::Blowup> blowup = m_runner.takeBlowup()) {
         changed = true;
@@ -97,6 +100,12 @@ void SimulationWorker::publish()
     frame->running = m_runner.isRunning();
     frame->realTimeFactor = m_realTimeFactor;
     frame->stepsPerSecond = m_stepsPerSecond;
+    frame->localError = m_runner.localError();
+    frame->localErrorStep = m_runner.localErrorStep();
+    frame->initialEnergies = m_runner.initialEnergies();
+    frame->estimateShare = m_runner.estimateShare();
+    frame->accuracyPlan = m_runner.accuracyPlan();
+    frame->accuracyRequest = m_runner.accuracyRequest();
     if (m_mailbox.publish(std::move(frame)))
         emit frameReady();
 }

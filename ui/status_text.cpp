@@ -1,6 +1,11 @@
 #include "status_text.h"
 
+#include "core/parameters.h"
+
 #include <QCoreApplication>
+#include <algorithm>
+#include <cmath>
+#include <iterator>
 
 namespace ui {
 
@@ -37,6 +42,109 @@ QString stepsText(bool running, double stepsPerSecond)
 QString energyText(double joules)
 {
     return tr("E = %1 J").arg(joules, 0, 'g', 6);
+}
+
+QString scientificText(double value, int digits)
+{
+    // Qt writes "3.0e-06": drop the mantissa's trailing zeros, the exponent's plus sign and its
+    // leading zeros
+    QString text = QString::number(value, 'e', std::max(0, digits - 1));
+    const qsizetype e = text.indexOf(QLatin1Char('e'));
+    if (e < 0)
+        return text;
+    QString exponent = text.mid(e + 1);
+    QString mantissa = text.left(e);
+    if (mantissa.contains(QLatin1Char('.'))) {
+        while (mantissa.endsWith(QLatin1Char('0')))
+            mantissa.chop(1);
+        if (mantissa.endsWith(QLatin1Char('.')))
+            mantissa.chop(1);
+    }
+    const bool negative = exponent.startsWith(QLatin1Char('-'));
+    exponent.remove(0, exponent.startsWith(QLatin1Char('-')) || exponent.startsWith(QLatin1Char('+')) ? 1 : 0);
+    while (exponent.size() > 1 && exponent.startsWith(QLatin1Char('0')))
+        exponent.remove(0, 1);
+    if (exponent == QLatin1String("0"))
+        return mantissa;
+    return mantissa + QLatin1Char('e') + (negative ? QStringLiteral("-") : QString()) + exponent;
+}
+
+QString durationText(double seconds)
+{
+    // the unit that puts the figure between 0.5 and 1000, then two significant digits
+    struct Unit {
+        double size;
+        const char *name;
+    };
+    constexpr Unit kUnits[] = {{1.0, "s"}, {1e-3, "ms"}, {1e-6, "µs"}, {1e-9, "ns"}};
+    Unit unit = kUnits[std::size(kUnits) - 1];
+    for (const Unit &candidate : kUnits) {
+        if (seconds >= 0.5 * candidate.size) {
+            unit = candidate;
+            break;
+        }
+    }
+    const double figure = seconds / unit.size;
+    const QString number = figure >= 100.0 ? QString::number(figure, 'f', 0) : QString::number(figure, 'g', 2);
+    return number + QLatin1Char(' ') + QString::fromUtf8(unit.name);
+}
+
+QString localErrorText(std::optional<double> metres)
+{
+    if (!metres)
+        return tr("local error ≈ ?");
+    return tr("local error ≈ %1 m/step").arg(scientificText(*metres));
+}
+
+QString driftText(const core::Energies &initial, double current)
+{
+    // a signed number: one decimal from 0.1 up, whole from 10 up, scientific below 0.001
+    auto signedText = [](double value) {
+        if (value == 0.0)
+            return QStringLiteral("0");
+        const QString sign = value > 0.0 ? QStringLiteral("+") : QStringLiteral("-");
+        const double size = std::abs(value);
+        if (size >= 10.0)
+            return sign + QString::number(size, 'f', 0);
+        if (size >= 0.1)
+            return sign + QString::number(size, 'f', 1);
+        if (size >= 1e-3)
+            return sign + QString::number(size, 'g', 2);
+        return sign + scientificText(size);
+    };
+    const double start = initial.total();
+    const double parts = std::abs(initial.kinetic) + std::abs(initial.gravitational) + std::abs(initial.spring);
+    const double change = current - start;
+    if (!(std::abs(start) > kZeroEnergyShare * parts))
+        return tr("ΔE = %1 J").arg(signedText(change));
+    return tr("ΔE = %1 %").arg(signedText(100.0 * change / std::abs(start)));
+}
+
+QString planText(const core::AccuracyPlan &plan)
+{
+    const QString tolerance = scientificText(plan.tolerance);
+    if (plan.candidates.empty())
+        return tr("No scene to plan for");
+    const core::PlanCandidate *pick = plan.pick();
+    if (!pick)
+        return tr("No fixed-step integrator meets %1 m/step within %2 substeps; try a looser tolerance or a "
+                  "smaller time step")
+            .arg(tolerance)
+            .arg(core::parameterInfo(core::Parameter::Substeps).maximum, 0, 'f', 0);
+    int feasible = 0;
+    for (const core::PlanCandidate &row : plan.candidates)
+        feasible += row.feasible ? 1 : 0;
+    const std::string_view name = core::integratorName(pick->integrator);
+    const QString integrator = QString::fromLatin1(name.data(), qsizetype(name.size()));
+    QString text = pick->substeps == 1 ? tr("%1 with 1 substep").arg(integrator)
+                                       : tr("%1 with %2 substeps").arg(integrator).arg(pick->substeps);
+    text += tr(": ≈ %1 m/step at %2 per simulated second")
+                .arg(scientificText(pick->localError), durationText(pick->secondsPerSimulatedSecond));
+    text += feasible == 1 ? tr(", the only integrator that meets %1 m/step").arg(tolerance)
+                          : tr(", the cheapest of %1 integrators that meet %2 m/step").arg(feasible).arg(tolerance);
+    if (pick->stabilityLimited)
+        text += tr(" (the substeps are set by its stability limit)");
+    return text;
 }
 
 }  // namespace ui

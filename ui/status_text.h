@@ -1,9 +1,14 @@
 #pragma once
 // The status bar's words for the figures of a run, kept apart from the window so that the unit
 // tests can check them: "t = 1.250 s", "×1.00", "×0.35 — slower than real time", "850 steps/s",
-// "E = 12.5 J".
+// "E = 12.5 J", "local error ≈ 3.2e-6 m/step", "ΔE = +0.4 %", and what the accuracy planner
+// picked.
+
+#include "core/accuracy_planner.h"
+#include "core/diagnostics.h"
 
 #include <QString>
+#include <optional>
 
 namespace ui {
 
@@ -15,5 +20,24 @@ QString timeText(double seconds);
 QString rateText(bool running, double realTimeFactor);
 QString stepsText(bool running, double stepsPerSecond);
 QString energyText(double joules);
+
+// a number in short scientific notation with at most `digits` significant digits: "3.2e-6", "1e-6"
+QString scientificText(double value, int digits = 2);
+// a computing time with its unit: "12 µs", "0.8 ms", "1.3 s"
+QString durationText(double seconds);
+
+// "local error ≈ 3.2e-6 m/step" (a step of the integrator: one sub-step); "local error ≈ ?" before
+// the first estimate or when its trial blew up
+QString localErrorText(std::optional<double> metres);
+
+// below this share of the sizes of its parts, the total energy at reset counts as zero, and the
+// drift is given in joules instead of relative to it
+inline constexpr double kZeroEnergyShare = 1e-3;
+// "ΔE = +0.4 %" since the energies at reset, or "ΔE = -0.012 J" when their total is about zero
+QString driftText(const core::Energies &initial, double current);
+
+// what the planner picked and why: "rk4 with 3 substeps: ≈ 2.1e-7 m/step at 0.8 ms per simulated
+// second, the cheapest of 4 integrators that meet 1e-6 m/step"; or why nothing was picked
+QString planText(const core::AccuracyPlan &plan);
 
 }  // namespace ui

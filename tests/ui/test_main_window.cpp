@@ -2,8 +2,11 @@
 // opens on the springs example and draws it, F4 plays and pauses, F5 resets, the parameters dock
 // edits the running simulation (and refuses what is out of range), the arrow keys steer the pool's
 // ball, T tilts from a seed, A switches collisions, F2 saves a screenshot, F1 lists the keys, and
-// closing while running ends the worker thread. Waits are on frames, never fixed sleeps.
+// closing while running ends the worker thread. The integrator box reaches the worker; the status
+// bar shows the local error and the energy drift; F7's accuracy dialog plans on the worker and
+// applies its pick as one undoable edit. Waits are on frames, never fixed sleeps.
 
+#include "ui/accuracy_dialog.h"
 #include "ui/help_dialog.h"
 #include "ui/main_window.h"
 #include "ui/parameter_row.h"
@@ -14,7 +17,10 @@
 #include "ui/viewport.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
+#include <QStatusBar>
+#include <QTableWidget>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
@@ -85,6 +91,9 @@ private slots:
     void aSwitchesCollisions();
     void f2SavesAScreenshot();
     void f1ListsEveryShortcut();
+    void integratorChoiceReachesTheWorker();
+    void statusBarShowsTheLocalErrorAndTheDrift();
+    void f7PlansAndAppliesTheCheapestIntegrator();
     void saveWritesTheEditedScene();
     void badFileLeavesTheSceneOpen();
     void examplesAreAllListed();
@@ -395,12 +404,130 @@ void TestMainWindow::f1ListsEveryShortcut()
 
     // every key of the handout, and the mouse
     const QString all = entries.join(QLatin1Char('\n'));
-    for (const char *key : {"F1\t", "F2\t", "F4\t", "F5\t", "F6\t", "T\t", "A\t", "Left\t", "Right\t", "Up\t", "Down\t",
-                            "F, Home\t", "Ctrl+Z\t"})
+    for (const char *key : {"F1\t", "F2\t", "F4\t", "F5\t", "F6\t", "F7\t", "T\t", "A\t", "Left\t", "Right\t", "Up\t",
+                            "Down\t", "F, Home\t", "Ctrl+Z\t"})
         QVERIFY2(all.contains(QLatin1String(key)) || all.contains(QLatin1Char('\n') + QLatin1String(key)), key);
     QVERIFY(all.contains(QStringLiteral("Orbit")));
     QVERIFY(all.contains(QStringLiteral("Pan")));
     QVERIFY(all.contains(QStringLiteral("Zoom")));
+
+    // and what tells how accurate the run is
+    QVERIFY(all.contains(QStringLiteral("Accuracy")));
+    QVERIFY(all.contains(QStringLiteral("Integrator")));
+    QVERIFY(all.contains(QStringLiteral("local error")));
+    QVERIFY(all.contains(QStringLiteral("ΔE")));
+}
+
+void TestMainWindow::integratorChoiceReachesTheWorker()
+{
+    // three presses of Down in the box, while running: rk4 from symplectic-euler
+    press(Qt::Key_F4);
+    QComboBox *box = m_window->parametersPanel()->integratorBox();
+    QCOMPARE(box->currentText(), QStringLiteral("symplectic-euler"));
+    box->setFocus();
+    for (int i = 0; i < 3; ++i)
+        QTest::keyClick(box, Qt::Key_Down);
+    QCOMPARE(box->currentText(), QStringLiteral("rk4"));
+    auto frame = settledFrame(controller());
+    QVERIFY(frame->running);
+    QCOMPARE(frame->model->integrator, core::Integrator::Rk4);
+    ui::ParameterRow *tolerance = m_window->parametersPanel()->row(QStringLiteral("tolerance"));
+    QVERIFY(!tolerance->isEnabled());
+
+    // the adaptive one, and its tolerance typed in
+    QTest::keyClick(box, Qt::Key_End);
+    QVERIFY(tolerance->isEnabled());
+    tolerance->spinBox()->setFocus();
+    tolerance->spinBox()->selectAll();
+    QTest::keyClicks(tolerance->spinBox(), QStringLiteral("1e-8"));
+    QTest::keyClick(tolerance->spinBox(), Qt::Key_Return);
+    frame = settledFrame(controller());
+    QCOMPARE(frame->model->integrator, core::Integrator::AdaptiveRk45);
+    QCOMPARE(frame->model->tolerance, 1e-8);
+
+    // undo, step by step, reaches the worker too
+    m_window->viewport()->setFocus();
+    press(Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(settledFrame(controller())->model->tolerance, 1e-6);
+    press(Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(settledFrame(controller())->model->integrator, core::Integrator::Rk4);
+    QCOMPARE(box->currentText(), QStringLiteral("rk4"));
+}
+
+void TestMainWindow::statusBarShowsTheLocalErrorAndTheDrift()
+{
+    // running: an estimate of the local error, and the drift since the scene was loaded
+    press(Qt::Key_F4);
+    QTRY_VERIFY(m_window->statusError().startsWith(QStringLiteral("local error ≈ ")) &&
+                m_window->statusError().endsWith(QStringLiteral(" m/step")));
+    QTRY_VERIFY(controller().frame()->snapshot->step > 20);
+    QVERIFY(m_window->statusDrift().startsWith(QStringLiteral("ΔE = ")));
+    const auto frame = settledFrame(controller());
+    QVERIFY(frame->localError.has_value() && *frame->localError > 0.0);
+
+    // paused and reset: no drift
+    press(Qt::Key_F4);
+    press(Qt::Key_F5);
+    const auto reset = settledFrame(controller());
+    QCOMPARE(reset->snapshot->energies.total(), reset->initialEnergies.total());
+    QTRY_VERIFY2(m_window->statusDrift() == QStringLiteral("ΔE = 0 %") ||
+                     m_window->statusDrift() == QStringLiteral("ΔE = 0 J"),
+                 qPrintable(m_window->statusDrift()));
+}
+
+void TestMainWindow::f7PlansAndAppliesTheCheapestIntegrator()
+{
+    // F7 while running opens the dialog
+    press(Qt::Key_F4);
+    QTRY_VERIFY(controller().frame()->snapshot->step > 0);
+    press(Qt::Key_F7);
+    ui::AccuracyDialog *dialog = m_window->accuracyDialog();
+    QVERIFY(dialog != nullptr);
+    QVERIFY(QTest::qWaitForWindowExposed(dialog));
+
+    // a tolerance out of range is refused there
+    QUndoStack *undo = m_window->document()->undoStack();
+    dialog->toleranceBox()->setFocus();
+    dialog->toleranceBox()->selectAll();
+    QTest::keyClicks(dialog->toleranceBox(), QStringLiteral("5"));
+    QTest::keyClick(dialog->toleranceBox(), Qt::Key_Return);
+    QVERIFY2(dialog->summary().contains(QStringLiteral("must be at most")), qPrintable(dialog->summary()));
+    QCOMPARE(undo->count(), 0);
+
+    // 1e-7 m per step, typed and Return: the worker plans, the pick is applied as one edit
+    dialog->toleranceBox()->selectAll();
+    QTest::keyClicks(dialog->toleranceBox(), QStringLiteral("1e-7"));
+    QTest::keyClick(dialog->toleranceBox(), Qt::Key_Return);
+    QTRY_COMPARE_WITH_TIMEOUT(undo->count(), 1, 20000);
+    const auto frame = settledFrame(controller());
+    QVERIFY(frame->accuracyPlan != nullptr);
+    const core::PlanCandidate *pick = frame->accuracyPlan->pick();
+    QVERIFY(pick != nullptr);
+    QCOMPARE(frame->accuracyPlan->tolerance, 1e-7);
+    QVERIFY(pick->localError <= 1e-7);
+    QCOMPARE(frame->model->integrator, pick->integrator);
+    QCOMPARE(frame->model->substeps, pick->substeps);
+    QVERIFY(frame->running);
+
+    // it says what it picked and why, in the dialog and the status bar, above the whole table
+    const std::string_view name = core::integratorName(pick->integrator);
+    QVERIFY2(dialog->summary().startsWith(QString::fromLatin1(name.data(), qsizetype(name.size()))),
+             qPrintable(dialog->summary()));
+    QVERIFY(dialog->summary().contains(QStringLiteral("per simulated second")));
+    QVERIFY(dialog->summary().contains(QStringLiteral("meet")));
+    QCOMPARE(m_window->statusBar()->currentMessage(), dialog->summary());
+    QCOMPARE(dialog->table()->rowCount(), int(std::size(core::kIntegrators)) - 1);
+
+    // closed, the dialog hands the keyboard back: one undo gives back the scene's integrator and
+    // substeps, in the worker too
+    dialog->close();
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window));
+    press(Qt::Key_Z, Qt::ControlModifier);
+    QTRY_COMPARE(undo->index(), 0);
+    const auto undone = settledFrame(controller());
+    QCOMPARE(undone->model->integrator, core::Integrator::SymplecticEuler);
+    QCOMPARE(undone->model->substeps, 1);
 }
 
 void TestMainWindow::saveWritesTheEditedScene()

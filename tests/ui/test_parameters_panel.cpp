@@ -1,6 +1,7 @@
 // The parameters panel with real widgets: its rows come from the parameter table, a slider move or
 // a typed value edits the document (one undo step per drag), and a value out of range is refused
-// with a message and never reaches the document.
+// with a message and never reaches the document. The integrator combo box lists every integrator;
+// each choice is one undo step, and the tolerance row is enabled for adaptive-rk45 only.
 
 #include "ui/parameter_row.h"
 #include "ui/parameters_panel.h"
@@ -9,7 +10,9 @@
 
 #include "core/generators.h"
 
+#include <QAbstractItemView>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QLabel>
 #include <QSignalSpy>
 #include <QSlider>
@@ -76,6 +79,9 @@ private slots:
     void outOfRangeValueIsRefused();
     void collisionSwitchesEditTheSettings();
     void springsGroupSaysWhatItAppliesTo();
+    void integratorBoxListsEveryIntegrator();
+    void choosingAnIntegratorIsOneUndoStep();
+    void toleranceRowIsForTheAdaptiveIntegratorOnly();
 
 private:
     ui::SceneDocument *m_document = nullptr;
@@ -109,7 +115,7 @@ void TestParametersPanel::rowsComeFromTheParameterTable()
         {"gravity.x", core::Parameter::Gravity, " x"}, {"gravity.y", core::Parameter::Gravity, " y"},
         {"gravity.z", core::Parameter::Gravity, " z"}, {"viscosity", core::Parameter::Viscosity, ""},
         {"restitution", core::Parameter::Restitution, ""}, {"stiffness", core::Parameter::Stiffness, ""},
-        {"damping", core::Parameter::Damping, ""},
+        {"damping", core::Parameter::Damping, ""},     {"tolerance", core::Parameter::Tolerance, ""},
     };
     for (const auto &e : expected) {
         ui::ParameterRow *row = m_panel->row(QString::fromLatin1(e.key));
@@ -243,6 +249,62 @@ void TestParametersPanel::springsGroupSaysWhatItAppliesTo()
     lonely.springs.clear();
     m_document->replace(lonely, QString());
     QVERIFY(!m_panel->row("stiffness")->isEnabled());
+}
+
+void TestParametersPanel::integratorBoxListsEveryIntegrator()
+{
+    QComboBox *box = m_panel->integratorBox();
+    QCOMPARE(box->count(), int(std::size(core::kIntegrators)));
+    for (int i = 0; i < box->count(); ++i)
+        QCOMPARE(box->itemText(i), fromView(core::integratorName(core::kIntegrators[i])));
+    QCOMPARE(box->currentText(), fromView(core::integratorName(m_document->scene().settings.integrator)));
+}
+
+void TestParametersPanel::choosingAnIntegratorIsOneUndoStep()
+{
+    // the popup opened with a click, rk4 picked in it with the mouse
+    QComboBox *box = m_panel->integratorBox();
+    QTest::mouseClick(box, Qt::LeftButton);
+    QAbstractItemView *list = box->view();
+    QTRY_VERIFY(list->isVisible());
+    const QPoint item = list->visualRect(list->model()->index(3, 0)).center();
+    QTest::mouseMove(list->viewport(), item);
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, item);
+    QTRY_VERIFY(!list->isVisible());
+    QCOMPARE(m_document->scene().settings.integrator, core::Integrator::Rk4);
+    QCOMPARE(m_document->undoStack()->count(), 1);
+
+    // then the next one down from the keyboard: a second step of undo, not merged with the first
+    box->setFocus();
+    QTest::keyClick(box, Qt::Key_Down);
+    QCOMPARE(m_document->scene().settings.integrator, core::Integrator::ImplicitEuler);
+    QCOMPARE(m_document->undoStack()->count(), 2);
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->scene().settings.integrator, core::Integrator::Rk4);
+    QCOMPARE(box->currentText(), QStringLiteral("rk4"));
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->scene().settings.integrator, netScene().settings.integrator);
+}
+
+void TestParametersPanel::toleranceRowIsForTheAdaptiveIntegratorOnly()
+{
+    ui::ParameterRow *row = m_panel->row(QStringLiteral("tolerance"));
+    QVERIFY(!row->isEnabled());
+    QComboBox *box = m_panel->integratorBox();
+    box->setFocus();
+    QTest::keyClick(box, Qt::Key_End);
+    QCOMPARE(m_document->scene().settings.integrator, core::Integrator::AdaptiveRk45);
+    QVERIFY(row->isEnabled());
+
+    // typed in, and refused out of the table's range
+    type(row->spinBox(), QStringLiteral("1e-8"));
+    QCOMPARE(m_document->scene().settings.tolerance, 1e-8);
+    type(row->spinBox(), QStringLiteral("5"));
+    QVERIFY2(m_panel->message().contains(QStringLiteral("must be at most")), qPrintable(m_panel->message()));
+    QCOMPARE(m_document->scene().settings.tolerance, 1e-8);
+
+    QTest::keyClick(box, Qt::Key_Home);
+    QVERIFY(!row->isEnabled());
 }
 
 QTEST_MAIN(TestParametersPanel)

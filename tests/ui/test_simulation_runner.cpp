@@ -1,9 +1,12 @@
 // SimulationRunner, the worker's Qt-free half, driven one edit and one advance at a time: whole
 // steps from wall time, edits between steps, reset to the exact initial state, the seeded tilt,
-// the steering force, and the stop at a blow-up.
+// the steering force, the stop at a blow-up, the live error estimate and energy drift (and what
+// the estimate costs on the cloth example), and the accuracy plan.
 
 #include "ui/simulation_runner.h"
 
+#include "core/error_estimate.h"
+#include "core/io/scene_file.h"
 #include "core/step.h"
 
 #include <QtTest>
@@ -59,6 +62,11 @@ private slots:
     void steeringPushesTheParticle();
     void steeringSurvivesResetButNotReplace();
     void blowupPausesAndRestoresTheLastGoodState();
+    void errorEstimateFollowsEdits();
+    void errorEstimateRefreshesWhileRunning();
+    void driftIsMeasuredFromTheLastReset();
+    void errorEstimateIsCheapOnTheCloth();
+    void accuracyPlanIsMadeFromTheRunnersState();
 };
 
 void TestSimulationRunner::startsPausedAtTheInitialState()
@@ -267,6 +275,123 @@ void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
     runner.apply(ui::SetSceneEdit{springScene(100.0, 0.1), ui::SceneChange::Parameters});
     runner.apply(ui::StepOnceEdit{});
     QVERIFY(!runner.takeBlowup().has_value());
+}
+
+void TestSimulationRunner::errorEstimateFollowsEdits()
+{
+    // loaded: an estimate of the initial state, the same as step doubling's own
+    ui::SimulationRunner runner = runnerWith(springScene());
+    QVERIFY(!runner.localError().has_value());
+    runner.updateEstimate();
+    QVERIFY(runner.localError().has_value());
+    QCOMPARE(runner.localErrorStep(), 0u);
+    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    QVERIFY(*runner.localError() > 0.0);
+
+    // a step, then another integrator: each time the estimate of the state and model now
+    runner.apply(ui::StepOnceEdit{});
+    runner.updateEstimate();
+    QCOMPARE(runner.localErrorStep(), 1u);
+    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    const double symplectic = *runner.localError();
+    auto rk4 = std::make_shared<core::SceneDesc>(*springScene());
+    rk4->settings.integrator = core::Integrator::Rk4;
+    runner.apply(ui::SetSceneEdit{rk4, ui::SceneChange::Parameters});
+    runner.updateEstimate();
+    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    QVERIFY(*runner.localError() < symplectic);  // fourth order against first, same step
+}
+
+void TestSimulationRunner::errorEstimateRefreshesWhileRunning()
+{
+    // running: a new estimate comes within a bounded number of ticks, of the state they ended at
+    ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
+    runner.updateEstimate();
+    runner.apply(ui::PlayEdit{});
+    int ticks = 0;
+    while (runner.localErrorStep() == 0 && ticks < 100000) {
+        runner.advance(0.05, kNoBudgetLimit);
+        ++ticks;
+    }
+    QVERIFY2(runner.localErrorStep() > 0, "no estimate while running");
+    QCOMPARE(runner.localErrorStep(), runner.state().step);
+    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+
+    // never more often than every kEstimateInterval of wall time: not after the next tick
+    const std::uint64_t at = runner.localErrorStep();
+    runner.advance(0.05, kNoBudgetLimit);
+    QCOMPARE(runner.localErrorStep(), at);
+    QVERIFY(runner.estimateSeconds() > 0.0);
+}
+
+void TestSimulationRunner::driftIsMeasuredFromTheLastReset()
+{
+    // the reference is the energy of the initial state: no drift at load or right after a reset
+    const auto scene = springScene(100.0, 0.01);
+    ui::SimulationRunner runner = runnerWith(scene);
+    const core::Energies initial = core::energies(*runner.model(), runner.state());
+    QCOMPARE(runner.initialEnergies().total(), initial.total());
+    QCOMPARE(runner.snapshot()->energies.total(), runner.initialEnergies().total());
+
+    // symplectic Euler on a spring: the energy moves during the run
+    runner.apply(ui::PlayEdit{});
+    runner.advance(0.37, kNoBudgetLimit);
+    QVERIFY(runner.snapshot()->energies.total() != runner.initialEnergies().total());
+
+    // a parameter change keeps the reference; a reset measures again from the initial state
+    auto softer = std::make_shared<core::SceneDesc>(*scene);
+    softer->springs[0].stiffness = 50.0;
+    runner.apply(ui::SetSceneEdit{softer, ui::SceneChange::Parameters});
+    QCOMPARE(runner.initialEnergies().total(), initial.total());
+    runner.apply(ui::ResetEdit{});
+    QCOMPARE(runner.snapshot()->energies.total(), runner.initialEnergies().total());
+    QVERIFY(runner.initialEnergies().total() != initial.total());  // the softer spring stores less
+}
+
+void TestSimulationRunner::errorEstimateIsCheapOnTheCloth()
+{
+    // the cloth example, run as the worker runs it: ticks of 1/60 s of wall time
+    io::LoadResult loaded = io::loadScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/cloth.json"));
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+    ui::SimulationRunner runner = runnerWith(std::make_shared<const core::SceneDesc>(std::move(*loaded.scene)));
+    runner.apply(ui::PlayEdit{});
+    std::uint64_t estimates = 0;
+    std::uint64_t lastStep = 0;
+    for (int tick = 0; tick < 180; ++tick) {
+        runner.advance(1.0 / 60.0, kNoBudgetLimit);
+        if (runner.localErrorStep() != lastStep) {
+            lastStep = runner.localErrorStep();
+            ++estimates;
+        }
+    }
+
+    // estimates through the run (about four per second of wall time), at a small share of its cost
+    QVERIFY(runner.localError().has_value());
+    QVERIFY2(estimates >= 6 && estimates <= 13, qPrintable(QString::number(estimates)));
+    qInfo("cloth: %llu steps, %llu estimates, steps %.3f s, estimates %.5f s: %.2f %% of the steps' time",
+          static_cast<unsigned long long>(runner.state().step), static_cast<unsigned long long>(estimates),
+          runner.stepSeconds(), runner.estimateSeconds(), 100.0 * runner.estimateShare());
+    QVERIFY2(runner.estimateShare() < ui::SimulationRunner::kEstimateShare,
+             qPrintable(QString::number(runner.estimateShare())));
+}
+
+void TestSimulationRunner::accuracyPlanIsMadeFromTheRunnersState()
+{
+    ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
+    QVERIFY(runner.accuracyPlan() == nullptr);
+    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::PlanAccuracyEdit{1e-6, 7});
+
+    // a row per fixed-step integrator, tagged with the request; the state was not stepped
+    QCOMPARE(runner.accuracyRequest(), 7u);
+    const auto plan = runner.accuracyPlan();
+    QVERIFY(plan != nullptr);
+    QCOMPARE(plan->tolerance, 1e-6);
+    QCOMPARE(plan->candidates.size(), std::size(core::kIntegrators) - 1);
+    QVERIFY(plan->pick() != nullptr);
+    QVERIFY(plan->secondsPerEvaluation > 0.0);
+    QVERIFY(plan->pick()->localError <= 1e-6);
+    QCOMPARE(runner.state().step, 1u);
 }
 
 QTEST_APPLESS_MAIN(TestSimulationRunner)

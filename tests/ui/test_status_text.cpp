@@ -1,4 +1,5 @@
-// The status bar's words: the real-time factor says when the run falls behind the wall clock.
+// The status bar's words: the real-time factor says when the run falls behind the wall clock; the
+// local error and the energy drift in short figures; what the accuracy planner picked and why.
 
 #include "ui/status_text.h"
 
@@ -11,6 +12,12 @@ private slots:
     void rate_data();
     void rate();
     void figures();
+    void scientific_data();
+    void scientific();
+    void localError();
+    void drift_data();
+    void drift();
+    void plan();
 };
 
 void TestStatusText::rate_data()
@@ -40,6 +47,94 @@ void TestStatusText::figures()
     QCOMPARE(ui::stepsText(true, 849.6), QStringLiteral("850 steps/s"));
     QCOMPARE(ui::stepsText(false, 849.6), QString());
     QCOMPARE(ui::energyText(-12.5), QStringLiteral("E = -12.5 J"));
+}
+
+void TestStatusText::scientific_data()
+{
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("text");
+    QTest::newRow("small") << 3.2e-6 << "3.2e-6";
+    QTest::newRow("rounded") << 3.249e-6 << "3.2e-6";
+    QTest::newRow("large") << 12500.0 << "1.3e4";
+    QTest::newRow("whole") << 2.0 << "2";
+    QTest::newRow("trailing zero") << 1e-6 << "1e-6";
+    QTest::newRow("two-digit exponent") << 4.5e-12 << "4.5e-12";
+}
+
+void TestStatusText::scientific()
+{
+    QFETCH(double, value);
+    QFETCH(QString, text);
+    QCOMPARE(ui::scientificText(value), text);
+}
+
+void TestStatusText::localError()
+{
+    QCOMPARE(ui::localErrorText(3.2e-6), QStringLiteral("local error ≈ 3.2e-6 m/step"));
+    QCOMPARE(ui::localErrorText(std::nullopt), QStringLiteral("local error ≈ ?"));
+    QCOMPARE(ui::durationText(8e-4), QStringLiteral("0.8 ms"));
+    QCOMPARE(ui::durationText(1.24e-5), QStringLiteral("12 µs"));
+    QCOMPARE(ui::durationText(3.1e-4), QStringLiteral("310 µs"));
+    QCOMPARE(ui::durationText(2.0), QStringLiteral("2 s"));
+}
+
+void TestStatusText::drift_data()
+{
+    QTest::addColumn<double>("kinetic");
+    QTest::addColumn<double>("gravitational");
+    QTest::addColumn<double>("spring");
+    QTest::addColumn<double>("current");
+    QTest::addColumn<QString>("text");
+    QTest::newRow("none") << 1.0 << 2.0 << 3.0 << 6.0 << "ΔE = 0 %";
+    QTest::newRow("gain") << 0.0 << 100.0 << 0.0 << 100.4 << "ΔE = +0.4 %";
+    QTest::newRow("loss, of a negative total") << 0.0 << -200.0 << 0.0 << -230.0 << "ΔE = -15 %";
+    QTest::newRow("tiny") << 0.0 << 10.0 << 0.0 << 10.0002 << "ΔE = +0.002 %";
+    QTest::newRow("zero total: joules") << 0.0 << 0.0 << 0.0 << 0.012 << "ΔE = +0.012 J";
+    QTest::newRow("parts cancel: joules") << 5.0 << -5.0 << 0.0 << -0.26 << "ΔE = -0.3 J";
+}
+
+void TestStatusText::drift()
+{
+    QFETCH(double, kinetic);
+    QFETCH(double, gravitational);
+    QFETCH(double, spring);
+    QFETCH(double, current);
+    QFETCH(QString, text);
+    core::Energies initial;
+    initial.kinetic = kinetic;
+    initial.gravitational = gravitational;
+    initial.spring = spring;
+    QCOMPARE(ui::driftText(initial, current), text);
+}
+
+void TestStatusText::plan()
+{
+    // two rows meet the tolerance; rk4 is the cheaper
+    core::AccuracyPlan plan;
+    plan.tolerance = 1e-6;
+    plan.timeStep = 0.01;
+    core::PlanCandidate euler;
+    euler.substeps = 120;
+    euler.localError = 9e-7;
+    euler.secondsPerSimulatedSecond = 1.5e-3;
+    euler.feasible = true;
+    core::PlanCandidate rk4;
+    rk4.integrator = core::Integrator::Rk4;
+    rk4.substeps = 3;
+    rk4.localError = 2.1e-7;
+    rk4.secondsPerSimulatedSecond = 8e-4;
+    rk4.feasible = true;
+    core::PlanCandidate unstable;
+    unstable.integrator = core::Integrator::ExplicitEuler;
+    unstable.reason = "unstable";
+    plan.candidates = {euler, unstable, rk4};
+    plan.chosen = 2;
+    QCOMPARE(ui::planText(plan), QStringLiteral("rk4 with 3 substeps: ≈ 2.1e-7 m/step at 0.8 ms per simulated "
+                                                "second, the cheapest of 2 integrators that meet 1e-6 m/step"));
+
+    // nothing meets it
+    plan.chosen = -1;
+    QVERIFY(ui::planText(plan).startsWith(QStringLiteral("No fixed-step integrator meets 1e-6 m/step")));
 }
 
 QTEST_APPLESS_MAIN(TestStatusText)
