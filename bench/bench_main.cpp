@@ -1,0 +1,100 @@
+// springlab-bench: the benchmark programs, one per first argument.
+//   springlab-bench accuracy [--out DIR] [--quick]   error against run time (docs/benchmarks.md)
+//   springlab-bench write-references DIR             the reference problems as scene files
+//
+// The plots are painted into images, which needs a QGuiApplication for the fonts but no display:
+// the program picks Qt's offscreen platform unless QT_QPA_PLATFORM says otherwise.
+
+#include "accuracy.h"
+#include "reference_problems.h"
+
+#include "core/io/scene_file.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QGuiApplication>
+#include <QTextStream>
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailed = 1;
+constexpr int kExitBadArguments = 2;
+
+const char *const kUsage =
+    "usage: springlab-bench accuracy [--out DIR] [--quick]\n"
+    "       springlab-bench write-references DIR\n";
+
+int badArguments(QTextStream &err, const QString &message)
+{
+    err << "springlab-bench: " << message << '\n' << kUsage;
+    return kExitBadArguments;
+}
+
+int accuracy(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Error against run time for every integrator on the reference problems."));
+    parser.addHelpOption();
+    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Folder for the CSVs and plots (default: .)."),
+                                       QStringLiteral("DIR"), QStringLiteral("."));
+    const QCommandLineOption quickOption(QStringLiteral("quick"), QStringLiteral("A tiny sweep: a smoke test only."));
+    parser.addOptions({outOption, quickOption});
+    if (!parser.parse(arguments))
+        return badArguments(err, parser.errorText());
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << parser.helpText();
+        return kExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return badArguments(err, QStringLiteral("accuracy takes no file names"));
+    return bench::runAccuracy({parser.value(outOption), parser.isSet(quickOption)}, out);
+}
+
+// every reference problem's scene, saved as DIR/<name>.json
+int writeReferences(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    if (arguments.size() != 2)
+        return badArguments(err, QStringLiteral("write-references takes one folder"));
+    const QDir dir(arguments[1]);
+    if (!dir.mkpath(QStringLiteral(".")))
+        return badArguments(err, QStringLiteral("cannot create the folder %1").arg(arguments[1]));
+    for (const bench::ReferenceProblem &problem : bench::referenceProblems()) {
+        const QString path = dir.filePath(QString::fromStdString(problem.name) + QStringLiteral(".json"));
+        const io::SaveResult saved = io::saveScene(path, problem.scene);
+        if (!saved.ok()) {
+            err << "springlab-bench: " << saved.error << '\n';
+            return kExitFailed;
+        }
+        out << "wrote " << path << '\n';
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char *argv[])
+{
+    // painting text needs a platform, not a display
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    QGuiApplication app(argc, argv);
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+
+    // the first argument names the benchmark; the rest are its own
+    QStringList arguments = QGuiApplication::arguments();
+    if (arguments.size() < 2)
+        return badArguments(err, QStringLiteral("which benchmark?"));
+    const QString name = arguments[1];
+    arguments.removeAt(1);
+    if (name == QStringLiteral("accuracy"))
+        return accuracy(arguments, out, err);
+    if (name == QStringLiteral("write-references"))
+        return writeReferences(arguments, out, err);
+    if (name == QStringLiteral("--help") || name == QStringLiteral("-h")) {
+        out << kUsage;
+        return kExitOk;
+    }
+    return badArguments(err, QStringLiteral("unknown benchmark \"%1\"").arg(name));
+}

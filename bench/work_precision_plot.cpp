@@ -1,0 +1,290 @@
+#include "work_precision_plot.h"
+
+#include <QFontMetrics>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace bench {
+
+namespace {
+
+// the targets the summary table reads costs at, drawn as dashed lines
+constexpr double kTargets[] = {1e-2, 1e-4, 1e-6};
+
+enum class Marker { Circle, Square, TriangleUp, Diamond, TriangleDown, Cross };
+
+struct CurveStyle {
+    QColor colour;
+    Marker marker;
+};
+
+// a colour-blind-safe palette (Okabe and Ito) and a distinct marker per integrator
+CurveStyle styleOf(core::Integrator integrator)
+{
+    switch (integrator) {
+    case core::Integrator::SymplecticEuler: return {QColor(0x00, 0x72, 0xB2), Marker::Circle};
+    case core::Integrator::ExplicitEuler: return {QColor(0xD5, 0x5E, 0x00), Marker::Square};
+    case core::Integrator::VelocityVerlet: return {QColor(0x00, 0x9E, 0x73), Marker::TriangleUp};
+    case core::Integrator::Rk4: return {QColor(0xCC, 0x79, 0xA7), Marker::Diamond};
+    case core::Integrator::ImplicitEuler: return {QColor(0xE6, 0x9F, 0x00), Marker::TriangleDown};
+    case core::Integrator::AdaptiveRk45: return {QColor(0x00, 0x00, 0x00), Marker::Cross};
+    }
+    return {Qt::gray, Marker::Circle};
+}
+
+void drawMarker(QPainter &painter, Marker marker, QPointF centre, double size)
+{
+    const double r = 0.5 * size;
+    QPainterPath path;
+    switch (marker) {
+    case Marker::Circle: path.addEllipse(centre, r, r); break;
+    case Marker::Square: path.addRect(QRectF(centre.x() - r, centre.y() - r, size, size)); break;
+    case Marker::TriangleUp:
+        path.moveTo(centre.x(), centre.y() - 1.15 * r);
+        path.lineTo(centre.x() + 1.1 * r, centre.y() + 0.8 * r);
+        path.lineTo(centre.x() - 1.1 * r, centre.y() + 0.8 * r);
+        path.closeSubpath();
+        break;
+    case Marker::Diamond:
+        path.moveTo(centre.x(), centre.y() - 1.25 * r);
+        path.lineTo(centre.x() + 1.25 * r, centre.y());
+        path.lineTo(centre.x(), centre.y() + 1.25 * r);
+        path.lineTo(centre.x() - 1.25 * r, centre.y());
+        path.closeSubpath();
+        break;
+    case Marker::TriangleDown:
+        path.moveTo(centre.x(), centre.y() + 1.15 * r);
+        path.lineTo(centre.x() + 1.1 * r, centre.y() - 0.8 * r);
+        path.lineTo(centre.x() - 1.1 * r, centre.y() - 0.8 * r);
+        path.closeSubpath();
+        break;
+    case Marker::Cross: {
+        // an X drawn with the line pen, thicker so it reads as a marker
+        const QPen pen = painter.pen();
+        painter.setPen(QPen(pen.color(), 2.2));
+        painter.drawLine(centre + QPointF(-r, -r), centre + QPointF(r, r));
+        painter.drawLine(centre + QPointF(-r, r), centre + QPointF(r, -r));
+        painter.setPen(pen);
+        return;
+    }
+    }
+    painter.drawPath(path);
+}
+
+// whether a run has a place on the log-log axes
+bool plottable(const WorkPrecisionPoint &point)
+{
+    return !point.blewUp() && point.error > 0.0 && point.error <= kPlotErrorCeiling && point.cost > 0.0;
+}
+
+// whole decades around the values, [10^lo, 10^hi], at least one decade wide and leaving a tenth of
+// a decade between the data and the frame
+struct Decades {
+    int lo = 0;
+    int hi = 1;
+};
+
+Decades decadesAround(double smallest, double largest)
+{
+    constexpr double kMargin = 0.1;  // decades
+    Decades d{static_cast<int>(std::floor(std::log10(smallest) - kMargin)),
+              static_cast<int>(std::ceil(std::log10(largest) + kMargin))};
+    if (d.hi <= d.lo)
+        d.hi = d.lo + 1;
+    return d;
+}
+
+// "10" with the exponent as a superscript, placed by its right edge (y axis) or its centre (x axis)
+void drawPowerOfTen(QPainter &painter, int exponent, QPointF anchor, bool rightAligned)
+{
+    const QFont base = painter.font();
+    QFont small = base;
+    small.setPointSizeF(base.pointSizeF() * 0.72);
+    const QString mantissa = QStringLiteral("10");
+    const QString power = QString::number(exponent).replace(u'-', QChar(0x2212));
+    const double baseWidth = QFontMetricsF(base).horizontalAdvance(mantissa);
+    const double powerWidth = QFontMetricsF(small).horizontalAdvance(power);
+    const double width = baseWidth + powerWidth;
+    const double ascent = QFontMetricsF(base).ascent();
+    const double left = rightAligned ? anchor.x() - width : anchor.x() - 0.5 * width;
+    const double baseline = rightAligned ? anchor.y() + 0.35 * ascent : anchor.y() + ascent;
+    painter.drawText(QPointF(left, baseline), mantissa);
+    painter.setFont(small);
+    painter.drawText(QPointF(left + baseWidth, baseline - 0.45 * ascent), power);
+    painter.setFont(base);
+}
+
+}  // namespace
+
+QImage drawWorkPrecision(const QString &title, const std::vector<WorkPrecisionCurve> &curves, const QSize &size)
+{
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    QFont font = painter.font();
+    font.setPointSizeF(11.0);
+    painter.setFont(font);
+
+    // the data's range, in whole decades
+    double costLo = std::numeric_limits<double>::infinity(), costHi = 0.0;
+    double errorLo = std::numeric_limits<double>::infinity(), errorHi = 0.0;
+    for (const WorkPrecisionCurve &curve : curves)
+        for (const WorkPrecisionPoint &point : curve.points)
+            if (plottable(point)) {
+                costLo = std::min(costLo, point.cost);
+                costHi = std::max(costHi, point.cost);
+                errorLo = std::min(errorLo, point.error);
+                errorHi = std::max(errorHi, point.error);
+            }
+    const bool empty = costHi == 0.0;
+    const Decades xs = empty ? Decades{-3, 0} : decadesAround(costLo, costHi);
+    const Decades ys = empty ? Decades{-6, 0} : decadesAround(errorLo, errorHi);
+
+    // the frame: title on top, legend on the right, axis labels left and below
+    const QRectF plot(QPointF(110.0, 70.0), QPointF(size.width() - 250.0, size.height() - 90.0));
+    const auto toX = [&](double cost) {
+        return plot.left() + (std::log10(cost) - xs.lo) / (xs.hi - xs.lo) * plot.width();
+    };
+    const auto toY = [&](double error) {
+        return plot.bottom() - (std::log10(error) - ys.lo) / (ys.hi - ys.lo) * plot.height();
+    };
+
+    // title
+    QFont titleFont = font;
+    titleFont.setPointSizeF(15.0);
+    titleFont.setBold(true);
+    painter.setFont(titleFont);
+    painter.setPen(Qt::black);
+    painter.drawText(QRectF(0.0, 12.0, size.width(), 36.0), Qt::AlignCenter, title);
+    painter.setFont(font);
+
+    // grid: a line at each decade, short ticks at 2..9 times it
+    const QPen gridPen(QColor(0xDD, 0xDD, 0xDD), 1.0);
+    const QPen tickPen(QColor(0x55, 0x55, 0x55), 1.0);
+    for (int k = xs.lo; k <= xs.hi; ++k) {
+        const double x = toX(std::pow(10.0, k));
+        painter.setPen(gridPen);
+        painter.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+        painter.setPen(tickPen);
+        painter.drawLine(QPointF(x, plot.bottom()), QPointF(x, plot.bottom() + 7.0));
+        drawPowerOfTen(painter, k, QPointF(x, plot.bottom() + 10.0), false);
+        for (int m = 2; m <= 9 && k < xs.hi; ++m) {
+            const double xm = toX(m * std::pow(10.0, k));
+            painter.drawLine(QPointF(xm, plot.bottom()), QPointF(xm, plot.bottom() + 4.0));
+        }
+    }
+    for (int k = ys.lo; k <= ys.hi; ++k) {
+        const double y = toY(std::pow(10.0, k));
+        painter.setPen(gridPen);
+        painter.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
+        painter.setPen(tickPen);
+        painter.drawLine(QPointF(plot.left() - 7.0, y), QPointF(plot.left(), y));
+        drawPowerOfTen(painter, k, QPointF(plot.left() - 11.0, y), true);
+        for (int m = 2; m <= 9 && k < ys.hi; ++m) {
+            const double ym = toY(m * std::pow(10.0, k));
+            painter.drawLine(QPointF(plot.left() - 4.0, ym), QPointF(plot.left(), ym));
+        }
+    }
+
+    // the errors the summary table reads costs at
+    QPen targetPen(QColor(0x88, 0x88, 0x88), 1.2, Qt::DashLine);
+    painter.setPen(targetPen);
+    for (double target : kTargets)
+        if (target > std::pow(10.0, ys.lo) && target < std::pow(10.0, ys.hi))
+            painter.drawLine(QPointF(plot.left(), toY(target)), QPointF(plot.right(), toY(target)));
+
+    // the frame and the axis labels, with units
+    painter.setPen(QPen(Qt::black, 1.2));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(plot);
+    painter.drawText(QRectF(plot.left(), plot.bottom() + 38.0, plot.width(), 24.0), Qt::AlignCenter,
+                     QStringLiteral("cost: CPU seconds per simulated second"));
+    painter.save();
+    painter.translate(28.0, plot.center().y());
+    painter.rotate(-90.0);
+    painter.drawText(QRectF(-plot.height() / 2.0, -12.0, plot.height(), 24.0), Qt::AlignCenter,
+                     QStringLiteral("error: RMS position error at the end time (m)"));
+    painter.restore();
+
+    // one line with markers per integrator, in sweep order, clipped to the frame
+    painter.setClipRect(plot.adjusted(-8.0, -8.0, 8.0, 8.0));
+    for (const WorkPrecisionCurve &curve : curves) {
+        const CurveStyle style = styleOf(curve.integrator);
+        QPolygonF line;
+        for (const WorkPrecisionPoint &point : curve.points)
+            if (plottable(point))
+                line << QPointF(toX(point.cost), toY(point.error));
+        painter.setPen(QPen(style.colour, 2.0));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawPolyline(line);
+        painter.setBrush(style.colour);
+        painter.setPen(QPen(style.colour.darker(130), 1.0));
+        if (style.marker == Marker::Cross)
+            painter.setPen(QPen(style.colour, 1.0));
+        for (const QPointF &p : line)
+            drawMarker(painter, style.marker, p, 8.0);
+    }
+    painter.setClipping(false);
+    if (empty)
+        painter.drawText(plot, Qt::AlignCenter, QStringLiteral("no run to show"));
+
+    // legend: a sample of each line, the name, and what was left out
+    double y = plot.top() + 8.0;
+    const double x = plot.right() + 22.0;
+    QFont noteFont = font;
+    noteFont.setPointSizeF(9.0);
+    for (const WorkPrecisionCurve &curve : curves) {
+        const CurveStyle style = styleOf(curve.integrator);
+        int shown = 0, blowups = 0, offScale = 0;
+        for (const WorkPrecisionPoint &point : curve.points) {
+            if (plottable(point))
+                ++shown;
+            else if (point.blewUp())
+                ++blowups;
+            else
+                ++offScale;
+        }
+        painter.setPen(QPen(style.colour, 2.0));
+        painter.drawLine(QPointF(x, y + 9.0), QPointF(x + 34.0, y + 9.0));
+        painter.setBrush(style.colour);
+        painter.setPen(style.marker == Marker::Cross ? QPen(style.colour, 1.0) : QPen(style.colour.darker(130), 1.0));
+        drawMarker(painter, style.marker, QPointF(x + 17.0, y + 9.0), 8.0);
+        painter.setPen(Qt::black);
+        const std::string_view name = core::integratorName(curve.integrator);
+        painter.drawText(QPointF(x + 44.0, y + 14.0),
+                         QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size())));
+        y += 22.0;
+        QStringList notes;
+        if (blowups > 0)
+            notes << QStringLiteral("%1 of %2 runs blew up").arg(blowups).arg(curve.points.size());
+        if (offScale > 0)
+            notes << QStringLiteral("%1 with error > %2 m").arg(offScale).arg(kPlotErrorCeiling);
+        if (shown == 0 && notes.isEmpty())
+            notes << QStringLiteral("no runs");
+        painter.setFont(noteFont);
+        painter.setPen(QColor(0x55, 0x55, 0x55));
+        for (const QString &note : notes) {
+            painter.drawText(QPointF(x + 44.0, y + 8.0), note);
+            y += 16.0;
+        }
+        painter.setFont(font);
+        y += 8.0;
+    }
+
+    // what the dashed lines are
+    painter.setPen(targetPen);
+    painter.drawLine(QPointF(x, y + 9.0), QPointF(x + 34.0, y + 9.0));
+    painter.setPen(Qt::black);
+    painter.setFont(noteFont);
+    painter.drawText(QRectF(x + 44.0, y, size.width() - x - 50.0, 40.0), Qt::TextWordWrap,
+                     QStringLiteral("errors the summary table reads costs at"));
+    painter.setFont(font);
+    return image;
+}
+
+}  // namespace bench
