@@ -1,12 +1,12 @@
 // springlab: the editor. `springlab [SCENE.json]` opens the scene, or the springs example without
-// one; a file that cannot be opened is reported and the editor opens on the example instead.
+// one; a file that cannot be opened is reported and the editor opens on the example instead. A
+// session that crashed with unsaved changes is offered back first.
 
 #include "ui/main_window.h"
 #include "ui/viewport.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QMessageBox>
 #include <QSurfaceFormat>
 #include <cstdio>
 
@@ -39,15 +39,10 @@ int main(int argc, char *argv[])
     ui::MainWindow window;
     window.show();
 
-    // a scene that cannot be opened is reported; the example stays open
-    if (!arguments.isEmpty()) {
-        QString error;
-        if (!window.openScene(arguments.front(), &error)) {
-            std::fprintf(stderr, "springlab: %s\n", qPrintable(error));
-            QMessageBox::warning(&window, QStringLiteral("Springlab"),
-                                 QStringLiteral("Could not open the scene:\n%1\n\nThe springs example is open instead.")
-                                     .arg(error));
-        }
-    }
+    // work a crash left behind is offered first; a scene that cannot be opened is reported (here
+    // and in a message), and the example stays open
+    QString error;
+    if (!window.start(arguments.isEmpty() ? QString() : arguments.front(), &error))
+        std::fprintf(stderr, "springlab: %s\n", qPrintable(error));
     return app.exec();
 }

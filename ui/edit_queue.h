@@ -39,15 +39,26 @@ struct SteerEdit {
     int particle = -1;                                // -1: none
     Eigen::Vector3d force = Eigen::Vector3d::Zero();  // N, constant until the next SteerEdit
 };
+// the mouse spring of the Drag tool: pulls a free particle toward target until released
+// (particle -1); a pinned particle, having infinite mass, is carried to target instead
+struct GrabEdit {
+    int particle = -1;
+    Eigen::Vector3d target = Eigen::Vector3d::Zero();  // m
+};
 // plan the integrator and substeps for a tolerance from the current state (core/accuracy_planner.h);
 // the plan comes back in the frames, tagged with the request's number
 struct PlanAccuracyEdit {
     double tolerance = 1e-6;    // m, local position error per sub-step
     std::uint64_t request = 0;  // the controller's number for this request
 };
+// copy the current positions and velocities out (captured_state.h) for "Use current state as
+// initial"; they come back in the frames, tagged with the request's number
+struct CaptureStateEdit {
+    std::uint64_t request = 0;  // the controller's number for this request
+};
 
 using Edit = std::variant<SetSceneEdit, PlayEdit, PauseEdit, StepOnceEdit, ResetEdit, TiltEdit, SteerEdit, SyncEdit,
-                          PlanAccuracyEdit>;
+                          PlanAccuracyEdit, GrabEdit, CaptureStateEdit>;
 
 // a thread-safe first-in first-out queue of edits, numbered in the order they were pushed
 class EditQueue {

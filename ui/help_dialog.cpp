@@ -30,9 +30,33 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
 
     // the mouse, in the 3D view
     addSection(tr("Mouse, in the 3D view"));
-    addEntry(tr("Left drag on empty space"), tr("Orbit the camera around its target"));
-    addEntry(tr("Middle drag, or Shift + left drag"), tr("Pan"));
+    addEntry(tr("Right drag"), tr("Orbit the camera around its target (left drag on empty space too, "
+                                   "except with the Select tool)"));
+    addEntry(tr("Middle drag, or Shift + left drag on empty space"), tr("Pan"));
     addEntry(tr("Wheel"), tr("Zoom towards the point under the cursor"));
+    addEntry(tr("Select tool (1)"),
+             tr("Click a particle or spring to select it; Shift or Ctrl + click adds or removes; drag on empty "
+                "space selects the particles in a box (Ctrl + drag adds them)"));
+    addEntry(tr("Add Particle tool (2)"),
+             tr("Click to place a particle on the ground y = 0, or, with one particle selected, on the plane "
+                "through it facing you; Snap in the toolbar rounds to the grid"));
+    addEntry(tr("Pin tool (3)"), tr("Click a particle to pin or free it"));
+    addEntry(tr("Spring tool (4)"),
+             tr("Click one particle, then another: a spring with the toolbar's k and kc, at rest at their distance"));
+    addEntry(tr("Drag tool (5)"),
+             tr("Running: hold a particle to pull it toward the cursor. Paused: drag to move the selection (one "
+                "undo step)"));
+    addEntry(tr("Hover"), tr("What a click would pick is highlighted"));
+
+    // files: what the menus do not show
+    addSection(tr("Files"));
+    addEntry(tr("Drop a .json file on the window"), tr("Open it (after asking about unsaved changes)"));
+    addEntry(tr("springlab SCENE.json"), tr("Start the editor on that scene"));
+    addEntry(tr("File › Open Recent"), tr("The last 10 scenes opened or saved; a missing file is removed"));
+    addEntry(tr("File › Autosave"),
+             tr("Unsaved changes go to a recovery file every minute (or as chosen); after a crash the next start "
+                "offers them back"));
+    addEntry(tr("View › Undo History"), tr("Every edit of the scene; click one to go back to it"));
 
     // accuracy: the integrator, and the figures that say how accurate the run is
     addSection(tr("Accuracy"));

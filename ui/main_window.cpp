@@ -1,8 +1,13 @@
 #include "main_window.h"
 
 #include "accuracy_dialog.h"
+#include "edit_tools.h"
+#include "inspector_panel.h"
+#include "autosave.h"
 #include "help_dialog.h"
+#include "initial_state_command.h"
 #include "parameters_panel.h"
+#include "recent_files.h"
 #include "scene_commands.h"
 #include "scene_document.h"
 #include "simulation_controller.h"
@@ -33,6 +38,7 @@
 #include <QStyle>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QUndoView>
 
 namespace ui {
 
@@ -44,10 +50,8 @@ constexpr const char *kExampleOrder[] = {"particles", "springs", "collisions", "
 // how long the status bar shows what the accuracy planner picked, ms
 constexpr int kPlanMessageMs = 20000;
 
-QString examplePath(const QString &name)
-{
-    return QStringLiteral(":/scenes/%1.json").arg(name);
-}
+// the right-hand docks' width on a first start (the view gets the rest), px
+constexpr int kDefaultDockWidth = 400;
 
 QString defaultScreenshotDirectory()
 {
@@ -59,7 +63,8 @@ QString defaultScreenshotDirectory()
 
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent), m_document(new SceneDocument(this)), m_controller(new SimulationController(this)),
-      m_viewport(new Viewport(this)), m_screenshotDirectory(defaultScreenshotDirectory())
+      m_recentFiles(new RecentFiles(this)), m_viewport(new Viewport(this)),
+      m_screenshotDirectory(defaultScreenshotDirectory())
 {
     // the 3D view in the middle; it takes the keyboard focus when clicked
     setObjectName(QStringLiteral("mainWindow"));
@@ -71,12 +76,17 @@ MainWindow::MainWindow(QWidget *parent)
     createActions();
     createMenus();
     createDocks();
+    createEditing();
     createStatusBar();
+    createAutosave();
+    // a scene file dropped anywhere on the window opens
+    setAcceptDrops(true);
 
     // the document feeds the worker and the title; the worker feeds the views
     connect(m_document, &SceneDocument::sceneChanged, this, &MainWindow::sceneChanged);
     connect(m_document, &SceneDocument::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateFileActions);
     connect(m_controller, &SimulationController::frameChanged, this, &MainWindow::frameChanged);
     connect(m_controller, &SimulationController::runningChanged, this, &MainWindow::runningChanged);
     connect(m_controller, &SimulationController::blewUp, this, [this](const QString &message) {
@@ -92,7 +102,16 @@ MainWindow::MainWindow(QWidget *parent)
         showWarning(error);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // the tools filter the viewport's events and read the document: they go first, before the
+    // children are torn down in creation order (the document before the viewport); the
+    // inspector reads the tools, so it goes before them
+    delete m_inspector;
+    m_inspector = nullptr;
+    delete m_tools;
+    m_tools = nullptr;
+}
 
 void MainWindow::createActions()
 {
@@ -116,6 +135,13 @@ void MainWindow::createActions()
     m_resetAction->setShortcut(Qt::Key_F5);
     m_resetAction->setStatusTip(tr("Back to the scene's initial state"));
     connect(m_resetAction, &QAction::triggered, m_controller, &SimulationController::reset);
+
+    m_captureAction = new QAction(tr("&Use Current State as Initial"), this);
+    m_captureAction->setObjectName(QStringLiteral("actionUseCurrentState"));
+    m_captureAction->setStatusTip(
+        tr("Make the running positions and velocities the scene's initial conditions (undoable); Reset returns "
+           "to them"));
+    connect(m_captureAction, &QAction::triggered, this, &MainWindow::useCurrentStateAsInitial);
 
     m_tiltAction = new QAction(tr("&Tilt"), this);
     m_tiltAction->setObjectName(QStringLiteral("actionTilt"));
@@ -168,51 +194,15 @@ void MainWindow::createActions()
 
 void MainWindow::createMenus()
 {
-    // file
-    QMenu *file = menuBar()->addMenu(tr("&File"));
-    QAction *open = file->addAction(tr("&Open..."), this, &MainWindow::openFromDialog);
-    open->setShortcut(QKeySequence::Open);
-    QMenu *examples = file->addMenu(tr("&Examples"));
-    for (const QString &name : exampleNames()) {
-        examples->addAction(name, this, [this, name] {
-            QString error;
-            if (maybeSave() && !openExample(name, &error))
-                QMessageBox::warning(this, tr("Open example"), error);
-        });
-    }
-    file->addSeparator();
-    QAction *saveAction = file->addAction(tr("&Save"), this, &MainWindow::save);
-    saveAction->setShortcut(QKeySequence::Save);
-    QAction *saveAsAction = file->addAction(tr("Save &As..."), this, &MainWindow::saveAs);
-    saveAsAction->setShortcut(QKeySequence::SaveAs);
-    file->addSeparator();
-    QAction *screenshot = file->addAction(tr("Save Screensho&t"), this, [this] {
-        QString error;
-        if (saveScreenshot(&error).isEmpty())
-            showWarning(error);
-    });
-    screenshot->setObjectName(QStringLiteral("actionScreenshot"));
-    screenshot->setShortcut(Qt::Key_F2);
-    screenshot->setStatusTip(tr("Save the 3D view as a PNG in the screenshot folder"));
-    file->addAction(tr("Screenshot &Folder..."), this, &MainWindow::chooseScreenshotDirectory);
-    file->addSeparator();
-    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
-
-    // edit: undo and redo of every scene change
-    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
-    QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
-    undo->setShortcut(QKeySequence::Undo);
-    QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
-    edit->addAction(undo);
-    edit->addAction(redo);
+    createFileMenu();
+    createEditMenu();
 
     // simulation
-    QMenu *simulation = menuBar()->addMenu(tr("&Simulation"));
+    QMenu *simulation = m_simulationMenu = menuBar()->addMenu(tr("&Simulation"));
     simulation->addAction(m_playAction);
     simulation->addAction(m_stepAction);
     simulation->addAction(m_resetAction);
+    simulation->addAction(m_captureAction);
     simulation->addSeparator();
     simulation->addAction(m_tiltAction);
     simulation->addAction(m_collisionsAction);
@@ -245,19 +235,62 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(toolbar->toggleViewAction());
 }
 
+QWidget *MainWindow::inScrollArea(QWidget *content)
+{
+    // a dock's content scrolls rather than forcing the window taller when it grows
+    auto *scroll = new QScrollArea;
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    return scroll;
+}
+
 void MainWindow::createDocks()
 {
     // parameters, scrollable when the window is short
     m_parameters = new ParametersPanel(*m_document);
-    auto *scroll = new QScrollArea;
-    scroll->setWidget(m_parameters);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
     m_parametersDock = new QDockWidget(tr("Parameters"), this);
     m_parametersDock->setObjectName(QStringLiteral("parametersDock"));
-    m_parametersDock->setWidget(scroll);
+    m_parametersDock->setWidget(inScrollArea(m_parameters));
     addDockWidget(Qt::RightDockWidgetArea, m_parametersDock);
     m_viewMenu->addAction(m_parametersDock->toggleViewAction());
+    createUndoHistoryDock();
+}
+
+void MainWindow::createEditMenu()
+{
+    // undo and redo of every scene change
+    m_editMenu = menuBar()->addMenu(tr("&Edit"));
+    QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("actionUndo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("actionRedo"));
+    // Ctrl+Shift+Z everywhere, and the platform's own key as well where it differs (Ctrl+Y)
+    QList<QKeySequence> redoKeys{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)};
+    for (const QKeySequence &key : QKeySequence::keyBindings(QKeySequence::Redo))
+        if (!redoKeys.contains(key))
+            redoKeys << key;
+    redo->setShortcuts(redoKeys);
+    m_editMenu->addAction(undo);
+    m_editMenu->addAction(redo);
+}
+
+void MainWindow::createUndoHistoryDock()
+{
+    // every step of the undo stack; a click goes back (or forward) to it. Hidden until asked for.
+    m_undoView = new QUndoView(m_document->undoStack());
+    m_undoView->setObjectName(QStringLiteral("undoView"));
+    m_undoView->setEmptyLabel(tr("<as opened>"));
+    m_undoDock = new QDockWidget(tr("Undo History"), this);
+    m_undoDock->setObjectName(QStringLiteral("undoHistoryDock"));
+    m_undoDock->setWidget(m_undoView);
+    addDockWidget(Qt::RightDockWidgetArea, m_undoDock);
+    m_undoDock->hide();
+    QAction *toggle = m_undoDock->toggleViewAction();
+    toggle->setObjectName(QStringLiteral("actionUndoHistory"));
+    toggle->setStatusTip(tr("Show or hide the list of edits that undo and redo walk through"));
+    m_viewMenu->addAction(toggle);
 }
 
 void MainWindow::createStatusBar()
@@ -300,7 +333,9 @@ void MainWindow::readSettings()
     settings.beginGroup(QStringLiteral("mainWindow"));
     if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray()))
         resize(1200, 800);
-    restoreState(settings.value(QStringLiteral("state")).toByteArray());
+    // the docks narrow by default: the view gets most of the window
+    if (!restoreState(settings.value(QStringLiteral("state")).toByteArray()))
+        resizeDocks({m_parametersDock}, {kDefaultDockWidth}, Qt::Horizontal);
     settings.endGroup();
     m_screenshotDirectory =
         settings.value(QStringLiteral("screenshots/directory"), defaultScreenshotDirectory()).toString();
@@ -326,76 +361,6 @@ QStringList MainWindow::exampleNames()
         if (found.removeOne(QString::fromLatin1(name)))
             ordered << QString::fromLatin1(name);
     return ordered + found;
-}
-
-bool MainWindow::openScene(const QString &path, QString *error)
-{
-    io::LoadResult loaded = io::loadScene(path);
-    if (!loaded.ok()) {
-        if (error)
-            *error = loaded.error;
-        return false;
-    }
-    m_document->replace(std::move(*loaded.scene), QFileInfo(path).absoluteFilePath());
-    if (!loaded.warnings.isEmpty())
-        showWarning(loaded.warnings.join(QStringLiteral("; ")));
-    return true;
-}
-
-bool MainWindow::openExample(const QString &name, QString *error)
-{
-    io::LoadResult loaded = io::loadScene(examplePath(name));
-    if (!loaded.ok()) {
-        if (error)
-            *error = loaded.error.isEmpty() ? tr("no example named \"%1\"").arg(name) : loaded.error;
-        return false;
-    }
-    // an example is not a file of the user's: saving asks where
-    m_document->replace(std::move(*loaded.scene), QString());
-    return true;
-}
-
-bool MainWindow::save()
-{
-    if (m_document->filePath().isEmpty())
-        return saveAs();
-    QString error;
-    if (!saveTo(m_document->filePath(), &error)) {
-        QMessageBox::warning(this, tr("Save scene"), error);
-        return false;
-    }
-    return true;
-}
-
-bool MainWindow::saveAs()
-{
-    const QString suggested = m_document->filePath().isEmpty()
-                                  ? QDir::home().filePath(m_document->displayName() + QStringLiteral(".json"))
-                                  : m_document->filePath();
-    QString path = QFileDialog::getSaveFileName(this, tr("Save scene"), suggested, tr("Springlab scenes (*.json)"));
-    if (path.isEmpty())
-        return false;
-    if (QFileInfo(path).suffix().isEmpty())
-        path += QStringLiteral(".json");
-    QString error;
-    if (!saveTo(path, &error)) {
-        QMessageBox::warning(this, tr("Save scene"), error);
-        return false;
-    }
-    return true;
-}
-
-bool MainWindow::saveTo(const QString &path, QString *error)
-{
-    const io::SaveResult saved = io::saveScene(path, m_document->scene());
-    if (!saved.ok()) {
-        if (error)
-            *error = saved.error;
-        return false;
-    }
-    m_document->markSaved(QFileInfo(path).absoluteFilePath());
-    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 5000);
-    return true;
 }
 
 QString MainWindow::saveScreenshot(QString *error)
@@ -463,6 +428,8 @@ void MainWindow::closeEvent(QCloseEvent *event)
         return;
     }
     writeSettings();
+    // a clean end: no recovery file is left for the next start
+    m_autosave->discard();
     // stop the worker before the window goes: nothing may step once the views are gone
     m_controller->shutDown();
     event->accept();
@@ -483,6 +450,7 @@ void MainWindow::sceneChanged(SceneChange change)
         if (m_accuracyRequest != 0 && m_accuracy)
             m_accuracy->showPlan(core::AccuracyPlan{}, tr("Another scene was opened; plan again"));
         m_accuracyRequest = 0;
+        m_captureRequest = 0;
     }
     {
         const QSignalBlocker block(m_collisionsAction);
@@ -502,6 +470,11 @@ void MainWindow::frameChanged()
     if (m_accuracyRequest != 0 && frame->accuracyRequest >= m_accuracyRequest && frame->accuracyPlan) {
         m_accuracyRequest = 0;
         applyPlan(*frame->accuracyPlan);
+    }
+    // so has the state asked for by Use Current State as Initial
+    if (m_captureRequest != 0 && frame->captureRequest >= m_captureRequest && frame->capturedState) {
+        m_captureRequest = 0;
+        applyCapturedState(*frame->capturedState);
     }
     if (!frame->snapshot)
         return;
@@ -556,32 +529,6 @@ void MainWindow::updateSteerActions()
                                   .arg(m_steering.strength(mass), 0, 'g', 4)
                                   .arg(m_steering.angle, 0, 'f', 0));
     }
-}
-
-bool MainWindow::maybeSave()
-{
-    if (!m_document->isModified())
-        return true;
-    const QMessageBox::StandardButton answer = QMessageBox::warning(
-        this, tr("Unsaved changes"), tr("The scene \"%1\" has changes that are not saved.").arg(m_document->displayName()),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-    if (answer == QMessageBox::Save)
-        return save();
-    return answer == QMessageBox::Discard;
-}
-
-void MainWindow::openFromDialog()
-{
-    if (!maybeSave())
-        return;
-    const QString directory = m_document->filePath().isEmpty() ? QDir::homePath()
-                                                               : QFileInfo(m_document->filePath()).absolutePath();
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), directory, tr("Springlab scenes (*.json)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    if (!openScene(path, &error))
-        QMessageBox::warning(this, tr("Open scene"), error);
 }
 
 void MainWindow::chooseScreenshotDirectory()
@@ -658,6 +605,26 @@ void MainWindow::applyPlan(const core::AccuracyPlan &plan)
     statusBar()->showMessage(summary, kPlanMessageMs);
     if (m_accuracy)
         m_accuracy->showPlan(plan, summary);
+}
+
+void MainWindow::useCurrentStateAsInitial()
+{
+    // the worker copies its state out; the answer comes back in a frame
+    m_captureRequest = m_controller->captureState();
+}
+
+void MainWindow::applyCapturedState(const CapturedState &state)
+{
+    // a scene replaced or given other particles since the request: the state no longer fits
+    if (!state.scene || state.particleCount() != static_cast<int>(m_document->scene().particles.size())) {
+        showWarning(tr("Use current state as initial: the scene changed meanwhile; nothing was changed"));
+        return;
+    }
+    m_document->undoStack()->push(new InitialStateCommand(
+        *m_document, tr("Use state at t = %1 s as initial").arg(state.time, 0, 'g', 4), state));
+    statusBar()->showMessage(
+        tr("The state at t = %1 s is now the initial state; Reset (F5) returns to it").arg(state.time, 0, 'g', 4),
+        kPlanMessageMs);
 }
 
 void MainWindow::steer(int turn, int change)

@@ -2,28 +2,41 @@
 // MainWindow: the editor. It ties the scene document (the UI thread's SceneDesc and its undo
 // stack) to the simulation controller (the worker thread) and to the views: the 3D viewport, the
 // parameters dock and the status bar. A document change becomes a scene edit for the worker; a
-// frame from the worker goes to the viewport and the status bar.
+// frame from the worker goes to the viewport and the status bar. What touches files (New, Open,
+// Save, Revert, recent files, drops, autosave and recovery) is in main_window_files.cpp.
 
 #include "steering.h"
 
 #include <QMainWindow>
+#include <QMessageBox>
 #include <QString>
 #include <QStringList>
 #include <cstdint>
+#include <functional>
 
 class QAction;
+class QActionGroup;
 class QLabel;
 class QMenu;
 class QDockWidget;
+class QMimeData;
+class QToolBar;
+class QUndoView;
 
 namespace core {
 struct AccuracyPlan;
+struct SceneDesc;
 }
 
 namespace ui {
 
 class AccuracyDialog;
+class EditTools;
+class InspectorPanel;
+class Autosave;
 class ParametersPanel;
+class RecentFiles;
+struct CapturedState;
 class SceneDocument;
 class SimulationController;
 class Viewport;
@@ -40,8 +53,38 @@ public:
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
+    // every question and message the window shows goes through this function, and the file
+    // dialogs through the next, so that tests can answer them without a modal dialog; the
+    // defaults show a QMessageBox and a QFileDialog
+    using MessageBoxFunction =
+        std::function<QMessageBox::StandardButton(QMessageBox::Icon icon, const QString &title, const QString &text,
+                                                  QMessageBox::StandardButtons buttons,
+                                                  QMessageBox::StandardButton defaultButton)>;
+    enum class FileDialogMode { Open, Save };
+    // returns the chosen path, or an empty string when cancelled
+    using FileDialogFunction =
+        std::function<QString(FileDialogMode mode, const QString &title, const QString &suggestedPath)>;
+    void setMessageBoxFunction(MessageBoxFunction function);
+    void setFileDialogFunction(FileDialogFunction function);
+
+    // File › New: an empty scene (newScene()) once unsaved changes are dealt with; false if cancelled
+    bool newDocument();
+    // what File › New opens: no particles, the default settings, a ground plane y = 0
+    static core::SceneDesc newScene();
+
     // opens a scene file; on failure the current scene stays and error says why
     bool openScene(const QString &path, QString *error = nullptr);
+    // opens a scene file as File › Open, a recent file or a drop does: asks about unsaved changes
+    // first and shows a failure in a message; false if cancelled or failed
+    bool openFile(const QString &path);
+    // File › Revert: reloads the document's file, after a confirmation if there are changes
+    bool revert();
+    // the start of the editor: offers to recover a crashed session's work, then opens path (the
+    // command line's scene) unless work was recovered; a file that fails is reported in a message
+    // (and error), and the default example stays open
+    bool start(const QString &path = QString(), QString *error = nullptr);
+    // offers the newest recovery file of a crashed session; true if one was recovered
+    bool offerRecovery();
     // opens a built-in example by name ("springs"), read from ":/scenes/<name>.json"
     bool openExample(const QString &name, QString *error = nullptr);
     // the examples built in, in the handout's order
@@ -58,7 +101,18 @@ public:
     QString screenshotDirectory() const { return m_screenshotDirectory; }
     void setScreenshotDirectory(const QString &directory);
 
+    RecentFiles *recentFiles() const { return m_recentFiles; }
+    Autosave *autosave() const { return m_autosave; }
+    QUndoView *undoView() const { return m_undoView; }
+
+    // Simulation › Use Current State as Initial: asks the worker for its positions and
+    // velocities; they become the scene's initial conditions, as one undo step, once they arrive
+    void useCurrentStateAsInitial();
+
     SceneDocument *document() const { return m_document; }
+    // the editing tools and their selection (main_window_editing.cpp)
+    EditTools *editTools() const { return m_tools; }
+    InspectorPanel *inspector() const { return m_inspector; }
     SimulationController *controller() const { return m_controller; }
     Viewport *viewport() const { return m_viewport; }
     ParametersPanel *parametersPanel() const { return m_parameters; }
@@ -75,11 +129,20 @@ public:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void dragEnterEvent(QDragEnterEvent *event) override;
+    void dragMoveEvent(QDragMoveEvent *event) override;
+    void dropEvent(QDropEvent *event) override;
 
 private:
     void createActions();
     void createMenus();
+    void createFileMenu();
+    void createEditMenu();
+    static QWidget *inScrollArea(QWidget *content);
     void createDocks();
+    void createEditing();
+    void createUndoHistoryDock();
+    void createAutosave();
     void createStatusBar();
     void readSettings();
     void writeSettings() const;
@@ -91,8 +154,20 @@ private:
     void updateTitle();
     void updateSteerActions();
 
+    // files (main_window_files.cpp)
     bool maybeSave();
     void openFromDialog();
+    QMessageBox::StandardButton ask(QMessageBox::Icon icon, const QString &title, const QString &text,
+                                    QMessageBox::StandardButtons buttons = QMessageBox::Ok,
+                                    QMessageBox::StandardButton defaultButton = QMessageBox::NoButton);
+    QString chooseFile(FileDialogMode mode, const QString &title, const QString &suggestedPath);
+    void openRecent(const QString &path);
+    void updateRecentMenu();
+    void updateFileActions();
+    void setAutosaveInterval(int seconds);
+    static QString droppedScenePath(const QMimeData *mime);
+    void applyCapturedState(const CapturedState &state);
+
     void chooseScreenshotDirectory();
     void showHelp();
     void showAbout();
@@ -104,9 +179,19 @@ private:
 
     SceneDocument *m_document = nullptr;
     SimulationController *m_controller = nullptr;
+    RecentFiles *m_recentFiles = nullptr;
+    Autosave *m_autosave = nullptr;
+    MessageBoxFunction m_messageBox;
+    FileDialogFunction m_fileDialog;
+    std::uint64_t m_captureRequest = 0;  // the captured state awaited from the worker; 0: none
     Viewport *m_viewport = nullptr;
+    EditTools *m_tools = nullptr;
+    QToolBar *m_toolBar = nullptr;
+    InspectorPanel *m_inspector = nullptr;
     ParametersPanel *m_parameters = nullptr;
     QDockWidget *m_parametersDock = nullptr;
+    QDockWidget *m_undoDock = nullptr;
+    QUndoView *m_undoView = nullptr;
     AccuracyDialog *m_accuracy = nullptr;
     std::uint64_t m_accuracyRequest = 0;  // the plan awaited from the worker; 0: none
     QString m_screenshotDirectory;
@@ -120,7 +205,16 @@ private:
     QAction *m_tiltAction = nullptr;
     QAction *m_collisionsAction = nullptr;
     QAction *m_accuracyAction = nullptr;
+    QAction *m_captureAction = nullptr;
     QList<QAction *> m_steerActions;
+    QAction *m_revertAction = nullptr;
+    QMenu *m_recentMenu = nullptr;
+    QList<QAction *> m_recentActions;  // File › Open Recent's entries, most recent first
+    QAction *m_clearRecentAction = nullptr;
+    QActionGroup *m_autosaveGroup = nullptr;
+    QMenu *m_fileMenu = nullptr;
+    QMenu *m_editMenu = nullptr;
+    QMenu *m_simulationMenu = nullptr;
     QMenu *m_viewMenu = nullptr;
 
     // status bar fields

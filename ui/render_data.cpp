@@ -49,7 +49,7 @@ Rgb ParticleStyle::colour(int i) const
     return {v[1], v[2], v[3]};
 }
 
-ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vector<int> &selection)
+ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vector<int> &selection, int hover)
 {
     const int n = snapshot.particleCount();
     std::vector<std::uint8_t> selected(std::size_t(n), 0);
@@ -63,7 +63,7 @@ ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vecto
     for (int i = 0; i < n; ++i) {
         const bool pinned = i < int(snapshot.pinned.size()) && snapshot.pinned[std::size_t(i)] != 0;
         const bool isSelected = selected[std::size_t(i)] != 0;
-        const Rgb &c = isSelected ? kSelectedColour : pinned ? kPinnedColour : kFreeColour;
+        const Rgb &c = i == hover ? kHoverColour : isSelected ? kSelectedColour : pinned ? kPinnedColour : kFreeColour;
         float *v = style.values.data() + std::size_t(i) * kStyleFloats;
         v[0] = snapshot.radii[std::size_t(i)];
         v[1] = c[0];
@@ -96,17 +96,24 @@ void StyleKey::clear()
     m_pinned.clear();
 }
 
-void packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertices, float fullStrain)
+void packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertices, float fullStrain,
+                     const SpringHighlight &highlight)
 {
     // end a then end b of each spring, both in the spring's colour
     const int springs = snapshot.springCount();
     vertices.clear();
     if (snapshot.springEnds.size() < std::size_t(springs) * 6)
         return;
+    std::vector<std::uint8_t> selected(std::size_t(springs), 0);
+    for (int s : highlight.selected)
+        if (s >= 0 && s < springs)
+            selected[std::size_t(s)] = 1;
     vertices.reserve(std::size_t(springs) * 2 * kVertexFloats);
     for (int s = 0; s < springs; ++s) {
         const float *e = snapshot.springEnds.data() + std::size_t(s) * 6;
-        const Rgb c = strainColour(snapshot.springStrain[s], fullStrain);
+        const Rgb c = s == highlight.hover        ? kHoverColour
+                      : selected[std::size_t(s)] ? kSelectedColour
+                                                 : strainColour(snapshot.springStrain[s], fullStrain);
         pushVertex(vertices, QVector3D(e[0], e[1], e[2]), c);
         pushVertex(vertices, QVector3D(e[3], e[4], e[5]), c);
     }

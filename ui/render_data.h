@@ -23,6 +23,7 @@ inline constexpr Rgb kBackgroundColour{0.16f, 0.17f, 0.20f};
 inline constexpr Rgb kFreeColour{0.93f, 0.60f, 0.22f};      // amber
 inline constexpr Rgb kPinnedColour{0.56f, 0.38f, 0.88f};    // violet, with a dark ring
 inline constexpr Rgb kSelectedColour{0.25f, 0.88f, 1.00f};  // cyan, with a bright rim
+inline constexpr Rgb kHoverColour{1.00f, 0.95f, 0.55f};     // pale yellow: what a click would pick
 inline constexpr Rgb kRestColour{0.62f, 0.62f, 0.62f};      // a spring at its rest length
 inline constexpr Rgb kCompressedColour{0.20f, 0.42f, 1.00f};
 inline constexpr Rgb kStretchedColour{1.00f, 0.20f, 0.16f};
@@ -48,8 +49,9 @@ struct ParticleStyle {
     bool selected(int i) const { return values[std::size_t(i) * kStyleFloats + 5] != 0.0f; }
 };
 
-// selection: indices of selected particles, in any order; those out of range are ignored
-ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vector<int> &selection);
+// selection: indices of selected particles, in any order; those out of range are ignored; hover:
+// the particle under the cursor (-1: none), drawn in the hover colour over any other
+ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vector<int> &selection, int hover = -1);
 
 // what a ParticleStyle was packed from, to tell whether a new snapshot needs a new one
 class StyleKey {
@@ -67,8 +69,16 @@ private:
 // line and triangle vertices: xyz then rgba
 inline constexpr int kVertexFloats = 7;
 
-// two vertices per spring, coloured by its strain
-void packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertices, float fullStrain = kFullStrain);
+// the springs drawn apart from the strain colours: selected ones in the selection colour, the one
+// under the cursor in the hover colour
+struct SpringHighlight {
+    std::vector<int> selected;  // any order; those out of range are ignored
+    int hover = -1;
+};
+
+// two vertices per spring, coloured by its strain unless highlighted
+void packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertices, float fullStrain = kFullStrain,
+                     const SpringHighlight &highlight = {});
 
 // the bounding sphere of the particles (their radii included), leaving out any that are not
 // finite; radius 0 when none is left

@@ -9,6 +9,7 @@ namespace {
 // ids that let QUndoStack merge commands of one kind
 constexpr int kSettingsCommandId = 1001;
 constexpr int kSpringValueCommandId = 1002;
+constexpr int kSceneCommandId = 1003;
 
 }  // namespace
 
@@ -84,6 +85,38 @@ bool SpringValueCommand::mergeWith(const QUndoCommand *other)
     if (next->m_field != m_field)
         return false;
     m_after = next->m_after;
+    return true;
+}
+
+SceneCommand::SceneCommand(SceneDocument &document, const QString &text, std::shared_ptr<const core::SceneDesc> after,
+                           const QString &mergeKey)
+    : QUndoCommand(text), m_document(document), m_mergeKey(mergeKey), m_before(document.sharedScene()),
+      m_after(std::move(after))
+{
+}
+
+void SceneCommand::redo()
+{
+    m_document.setScene(m_after, SceneChange::Structure);
+}
+
+void SceneCommand::undo()
+{
+    m_document.setScene(m_before, SceneChange::Structure);
+}
+
+int SceneCommand::id() const
+{
+    return kSceneCommandId;
+}
+
+bool SceneCommand::mergeWith(const QUndoCommand *other)
+{
+    const auto *next = static_cast<const SceneCommand *>(other);
+    if (m_mergeKey.isEmpty() || next->m_mergeKey != m_mergeKey)
+        return false;
+    m_after = next->m_after;
+    setObsolete(*m_after == *m_before);
     return true;
 }
 

@@ -5,6 +5,7 @@
 #include "core/scene.h"
 
 #include <QUndoCommand>
+#include <memory>
 #include <vector>
 
 namespace ui {
@@ -44,6 +45,27 @@ private:
     double core::SpringDesc::*m_field;
     std::vector<double> m_before;  // per spring
     double m_after;
+};
+
+// any edit of the scene's content (particles, springs, planes, initial conditions): keeps the whole
+// scene before and after, so undo returns exactly the previous scene whatever the edit did. Scenes
+// are shared immutable values, so each side costs a pointer, not a copy. Commands with the same
+// non-empty mergeKey merge (one drag, one typed value), as the settings do.
+class SceneCommand : public QUndoCommand {
+public:
+    SceneCommand(SceneDocument &document, const QString &text, std::shared_ptr<const core::SceneDesc> after,
+                 const QString &mergeKey = {});
+
+    void redo() override;
+    void undo() override;
+    int id() const override;
+    bool mergeWith(const QUndoCommand *other) override;
+
+private:
+    SceneDocument &m_document;
+    QString m_mergeKey;
+    std::shared_ptr<const core::SceneDesc> m_before;
+    std::shared_ptr<const core::SceneDesc> m_after;
 };
 
 }  // namespace ui

@@ -53,4 +53,10 @@ void SceneDocument::modify(const std::function<void(core::SceneDesc &)> &edit, S
     emit sceneChanged(change);
 }
 
+void SceneDocument::setScene(std::shared_ptr<const core::SceneDesc> scene, SceneChange change)
+{
+    m_scene = std::move(scene);
+    emit sceneChanged(change);
+}
+
 }  // namespace ui

@@ -43,6 +43,8 @@ public:
 
     // replaces the scene with an edited copy; for the undo commands
     void modify(const std::function<void(core::SceneDesc &)> &edit, SceneChange change);
+    // puts a whole scene in place; for the undo commands
+    void setScene(std::shared_ptr<const core::SceneDesc> scene, SceneChange change);
 
 signals:
     void sceneChanged(ui::SceneChange change);

@@ -109,6 +109,11 @@ std::uint64_t SimulationController::steer(int particle, const Eigen::Vector3d &f
     return post(SteerEdit{particle, force});
 }
 
+std::uint64_t SimulationController::grab(int particle, const Eigen::Vector3d &target)
+{
+    return post(GrabEdit{particle, target});
+}
+
 std::uint64_t SimulationController::sync()
 {
     return post(SyncEdit{});
@@ -118,6 +123,13 @@ std::uint64_t SimulationController::planAccuracy(double tolerance)
 {
     const std::uint64_t request = ++m_accuracyRequests;
     post(PlanAccuracyEdit{tolerance, request});
+    return request;
+}
+
+std::uint64_t SimulationController::captureState()
+{
+    const std::uint64_t request = ++m_captureRequests;
+    post(CaptureStateEdit{request});
     return request;
 }
 

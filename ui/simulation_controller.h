@@ -38,11 +38,16 @@ public:
     std::uint64_t reset();
     std::uint64_t tilt();
     std::uint64_t steer(int particle, const Eigen::Vector3d &force);
+    // the Drag tool's mouse spring pulls particle toward target; particle -1 lets go
+    std::uint64_t grab(int particle, const Eigen::Vector3d &target);
     // changes nothing, but the worker publishes a frame once it has applied every earlier edit
     std::uint64_t sync();
     // asks the worker to plan the integrator and substeps for a tolerance (m per sub-step) from its
     // state; returns the request's number, which frame()->accuracyRequest reaches with the plan
     std::uint64_t planAccuracy(double tolerance);
+    // asks the worker for a copy of its positions and velocities; returns the request's number,
+    // which frame()->captureRequest reaches with the captured state
+    std::uint64_t captureState();
 
     // tilts are drawn from this seed: the n-th tilt after setTiltSeed(s) is the same every time
     void setTiltSeed(std::uint64_t seed);
@@ -80,6 +85,7 @@ private:
     std::uint64_t m_tiltSeed = 0;
     std::uint64_t m_tiltCount = 0;
     std::uint64_t m_accuracyRequests = 0;
+    std::uint64_t m_captureRequests = 0;
 };
 
 }  // namespace ui

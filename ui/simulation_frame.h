@@ -1,7 +1,9 @@
 #pragma once
 // SimulationFrame: what the worker publishes after a tick: the snapshot of the state, the model it
 // was stepped with, how fast the run keeps up with the wall clock, how accurate it is, and the
-// latest accuracy plan asked for. Immutable once published.
+// latest accuracy plan and captured state asked for. Immutable once published.
+
+#include "captured_state.h"
 
 #include "core/accuracy_planner.h"
 #include "core/diagnostics.h"
@@ -37,6 +39,10 @@ struct SimulationFrame {
     // the latest accuracy plan asked for (null before the first) and the request it answers
     std::shared_ptr<const core::AccuracyPlan> accuracyPlan;
     std::uint64_t accuracyRequest = 0;
+
+    // the latest state captured on request (null before the first) and the request it answers
+    std::shared_ptr<const CapturedState> capturedState;
+    std::uint64_t captureRequest = 0;
 };
 
 }  // namespace ui

@@ -53,13 +53,16 @@ void SimulationRunner::apply(const Edit &edit)
                    [this](const SteerEdit &e) { steer(e); },
                    [](const SyncEdit &) {},
                    [this](const PlanAccuracyEdit &e) { planAccuracy(e); },
+                   [this](const CaptureStateEdit &e) { captureState(e); },
+                   [this](const GrabEdit &e) { grab(e); },
                },
                edit);
 }
 
 void SimulationRunner::setScene(const SetSceneEdit &edit)
 {
-    const bool sameCount = m_scene && edit.scene->particles.size() == m_scene->particles.size();
+    const std::shared_ptr<const core::SceneDesc> previous = m_scene;
+    const bool sameCount = previous && edit.scene->particles.size() == previous->particles.size();
     m_scene = edit.scene;
     m_model = core::compileModel(*m_scene);
     switch (edit.change) {
@@ -69,16 +72,8 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
             break;
         [[fallthrough]];
     case SceneChange::Structure:
-        if (sameCount) {
-            // rebuild, then carry the motion over
-            core::State rebuilt = core::makeState(*m_model, *m_scene);
-            rebuilt.position = m_state.position;
-            for (int i = 0; i < m_model->particleCount(); ++i)
-                rebuilt.velocity.col(i) = m_model->isPinned(i) ? Eigen::Vector3d::Zero()
-                                                                : Eigen::Vector3d(m_state.velocity.col(i));
-            rebuilt.time = m_state.time;
-            rebuilt.step = m_state.step;
-            m_state = std::move(rebuilt);
+        if (previous && m_state.position.cols() == static_cast<Eigen::Index>(previous->particles.size())) {
+            carryMotion(*previous);
             break;
         }
         [[fallthrough]];
@@ -91,12 +86,49 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
         m_running = false;
         m_steerParticle = -1;
         m_steerForce.setZero();
+        m_grabParticle = -1;
         m_stepSeconds = 0.0;
         m_estimateSeconds = 0.0;
         m_lastEstimateSeconds = 0.0;
     }
     applySteering();
     m_estimateStale = true;
+}
+
+// A structural edit while a run is under way keeps the run: a particle the edit left as it was
+// keeps its current motion, one it added or changed (moved, pinned, given a new mass) starts from
+// its description. Edits keep the particles' order, so the old particle each new one continues is
+// found by walking both lists in step: same index when the count is the same, else the next old
+// particle with the same description (a deletion skips old ones, an addition matches none).
+void SimulationRunner::carryMotion(const core::SceneDesc &previous)
+{
+    const auto &before = previous.particles;
+    const auto &after = m_scene->particles;
+    core::State rebuilt = core::makeState(*m_model, *m_scene);
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < after.size(); ++i) {
+        std::size_t from = before.size();
+        if (before.size() == after.size()) {
+            from = before[i] == after[i] ? i : before.size();
+        } else {
+            std::size_t k = next;
+            while (k < before.size() && !(before[k] == after[i]))
+                ++k;
+            if (k < before.size()) {
+                from = k;
+                next = k + 1;
+            }
+        }
+        if (from >= before.size() || after[i].pinned)
+            continue;
+        const auto col = static_cast<Eigen::Index>(i);
+        const auto old = static_cast<Eigen::Index>(from);
+        rebuilt.position.col(col) = m_state.position.col(old);
+        rebuilt.velocity.col(col) = m_state.velocity.col(old);
+    }
+    rebuilt.time = m_state.time;
+    rebuilt.step = m_state.step;
+    m_state = std::move(rebuilt);
 }
 
 // the scene's initial conditions, and the energy the drift is measured from
@@ -145,8 +177,45 @@ void SimulationRunner::applySteering()
         core::setAppliedForce(m_state, m_steerParticle, m_steerForce);
 }
 
+void SimulationRunner::grab(const GrabEdit &edit)
+{
+    const bool valid = hasScene() && edit.particle >= 0 && edit.particle < m_model->particleCount();
+    // let go of the old particle: steering alone acts on it again
+    if (m_grabParticle >= 0 && m_grabParticle < m_state.position.cols()) {
+        core::setAppliedForce(m_state, m_grabParticle, Eigen::Vector3d::Zero());
+        applySteering();
+    }
+    m_grabParticle = valid ? edit.particle : -1;
+    m_grabTarget = edit.target;
+    applyGrab();
+}
+
+// The mouse spring is a critically damped spring per unit mass, ω² (target - x) - 2ω v, so every
+// particle follows the cursor in the same time whatever its mass. ω is held to a tenth of the
+// sub-step's rate, well inside every explicit integrator's stability limit.
+void SimulationRunner::applyGrab()
+{
+    if (!hasScene() || m_grabParticle < 0 || m_grabParticle >= m_model->particleCount())
+        return;
+    const int i = m_grabParticle;
+    const auto col = static_cast<Eigen::Index>(i);
+    if (m_model->isPinned(i)) {
+        m_state.position.col(col) = m_grabTarget;
+        return;
+    }
+    const double h = m_model->timeStep / m_model->substeps;
+    const double omega = std::min(kGrabRate, 0.1 / h);
+    const Eigen::Vector3d x = m_state.position.col(col);
+    const Eigen::Vector3d v = m_state.velocity.col(col);
+    Eigen::Vector3d force = m_model->mass[col] * (omega * omega * (m_grabTarget - x) - 2.0 * omega * v);
+    if (i == m_steerParticle)
+        force += m_steerForce;
+    core::setAppliedForce(m_state, i, force);
+}
+
 bool SimulationRunner::stepOnce()
 {
+    applyGrab();
     if (core::step(*m_model, m_state))
         return true;
     // blown up: stop, keep the report, and go back to the last good state
@@ -236,6 +305,21 @@ void SimulationRunner::planAccuracy(const PlanAccuracyEdit &edit)
     }
     m_plan = std::move(plan);
     m_planRequest = edit.request;
+}
+
+void SimulationRunner::captureState(const CaptureStateEdit &edit)
+{
+    // a copy in doubles: the scene's initial conditions get exactly what the run has
+    auto captured = std::make_shared<CapturedState>();
+    if (hasScene()) {
+        captured->position = m_state.position;
+        captured->velocity = m_state.velocity;
+        captured->time = m_state.time;
+        captured->step = m_state.step;
+        captured->scene = m_scene;
+    }
+    m_captured = std::move(captured);
+    m_captureRequest = edit.request;
 }
 
 std::shared_ptr<const core::Snapshot> SimulationRunner::snapshot() const

@@ -10,6 +10,7 @@
 // estimates never cost more than that share of the run; and the energies at the last reset, from
 // which the drift is measured. The accuracy planner runs here too, on the runner's own state.
 
+#include "captured_state.h"
 #include "edit_queue.h"
 
 #include "core/accuracy_planner.h"
@@ -29,6 +30,8 @@ public:
     // the live error estimate: at most this often (s of wall time), and at most this share of the
     // computing time of the steps
     static constexpr double kEstimateInterval = 0.25;
+    // rad/s: how fast the mouse spring pulls a particle to the cursor (a time constant of 50 ms)
+    static constexpr double kGrabRate = 20.0;
     static constexpr double kEstimateShare = 0.05;
 
     struct Advance {
@@ -78,16 +81,24 @@ public:
     std::shared_ptr<const core::AccuracyPlan> accuracyPlan() const { return m_plan; }
     std::uint64_t accuracyRequest() const { return m_planRequest; }
 
+    // the latest captured state (null before the first request) and the request it answers
+    std::shared_ptr<const CapturedState> capturedState() const { return m_captured; }
+    std::uint64_t captureRequest() const { return m_captureRequest; }
+
 private:
     void setScene(const SetSceneEdit &edit);
     void restart();
+    void carryMotion(const core::SceneDesc &previous);
     void reset();
     void tilt(const TiltEdit &edit);
     void steer(const SteerEdit &edit);
     void applySteering();
+    void grab(const GrabEdit &edit);
+    void applyGrab();
     bool stepOnce();
     void estimate(bool counted);
     void planAccuracy(const PlanAccuracyEdit &edit);
+    void captureState(const CaptureStateEdit &edit);
 
     std::shared_ptr<const core::SceneDesc> m_scene;
     std::shared_ptr<const core::Model> m_model;
@@ -111,6 +122,13 @@ private:
 
     std::shared_ptr<const core::AccuracyPlan> m_plan;
     std::uint64_t m_planRequest = 0;
+
+    std::shared_ptr<const CapturedState> m_captured;
+    std::uint64_t m_captureRequest = 0;
+
+    // the mouse spring: the particle held (-1: none) and where the cursor holds it
+    int m_grabParticle = -1;
+    Eigen::Vector3d m_grabTarget = Eigen::Vector3d::Zero();
 
     // the steering force, kept across resets and parameter changes
     int m_steerParticle = -1;

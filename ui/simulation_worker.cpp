@@ -106,6 +106,8 @@ void SimulationWorker::publish()
     frame->estimateShare = m_runner.estimateShare();
     frame->accuracyPlan = m_runner.accuracyPlan();
     frame->accuracyRequest = m_runner.accuracyRequest();
+    frame->capturedState = m_runner.capturedState();
+    frame->captureRequest = m_runner.captureRequest();
     if (m_mailbox.publish(std::move(frame)))
         emit frameReady();
 }

@@ -2,6 +2,7 @@
 
 #include <QFile>
 #include <QKeyEvent>
+#include <QLineF>
 #include <QMouseEvent>
 #include <QOpenGLBuffer>
 #include <QOpenGLContext>
@@ -148,6 +149,24 @@ void Viewport::setSelection(const std::vector<int> &particles)
     update();
 }
 
+void Viewport::setSpringSelection(const std::vector<int> &springs)
+{
+    m_springHighlight.selected = springs;
+    m_positionsStale = true;  // the spring lines carry the colours
+    update();
+}
+
+void Viewport::setHover(int particle, int spring)
+{
+    if (particle == m_hoverParticle && spring == m_springHighlight.hover)
+        return;
+    m_hoverParticle = particle;
+    m_springHighlight.hover = spring;
+    m_selectionChanged = true;
+    m_positionsStale = true;
+    update();
+}
+
 void Viewport::setParticleDrawing(ParticleDrawing drawing)
 {
     m_drawing = drawing;
@@ -201,6 +220,49 @@ int Viewport::particleAt(const QPointF &pixel) const
         if (distance > 0.0f && distance < nearestDistance) {
             nearest = i;
             nearestDistance = distance;
+        }
+    }
+    if (nearest >= 0)
+        return nearest;
+
+    // else the centre nearest the pixel on screen, if near enough
+    float best = kPickPixels;
+    for (int i = 0; i < n; ++i) {
+        const auto onScreen =
+            m_camera.project(QVector3D(s.positions[3 * i], s.positions[3 * i + 1], s.positions[3 * i + 2]));
+        if (!onScreen)
+            continue;
+        const float d = float(QLineF(*onScreen, pixel).length());
+        if (d <= best) {
+            best = d;
+            nearest = i;
+        }
+    }
+    return nearest;
+}
+
+int Viewport::springAt(const QPointF &pixel) const
+{
+    if (!m_snapshot)
+        return -1;
+    const core::Snapshot &s = *m_snapshot;
+    const int springs = std::min<int>(s.springCount(), int(s.springEnds.size() / 6));
+    int nearest = -1;
+    float best = kPickPixels;
+    for (int k = 0; k < springs; ++k) {
+        const float *e = s.springEnds.data() + std::size_t(k) * 6;
+        const auto a = m_camera.project(QVector3D(e[0], e[1], e[2]));
+        const auto b = m_camera.project(QVector3D(e[3], e[4], e[5]));
+        if (!a || !b)
+            continue;
+        // distance from the pixel to the segment a-b on screen
+        const QPointF ab = *b - *a;
+        const double lengthSquared = QPointF::dotProduct(ab, ab);
+        const double t = lengthSquared > 0.0 ? std::clamp(QPointF::dotProduct(pixel - *a, ab) / lengthSquared, 0.0, 1.0) : 0.0;
+        const float d = float(QLineF(*a + t * ab, pixel).length());
+        if (d <= best) {
+            best = d;
+            nearest = k;
         }
     }
     return nearest;
@@ -348,7 +410,7 @@ void Viewport::uploadSnapshot()
 
     // the style, only when the radii, the pins or the selection changed
     if (m_selectionChanged || !m_styleKey.matches(s)) {
-        const ParticleStyle style = packParticleStyle(s, m_selection);
+        const ParticleStyle style = packParticleStyle(s, m_selection, m_hoverParticle);
         gpu.styles.bind();
         gpu.styles.allocate(style.values.data(), int(style.values.size() * sizeof(float)));
         gpu.styleCount = style.count();
@@ -361,7 +423,7 @@ void Viewport::uploadSnapshot()
     if (m_positionsStale) {
         gpu.positions.bind();
         gpu.positions.allocate(s.positions.data(), int(s.positions.size() * sizeof(float)));
-        packSpringLines(s, m_springVertices);
+        packSpringLines(s, m_springVertices, kFullStrain, m_springHighlight);
         gpu.springs.bind();
         gpu.springs.allocate(m_springVertices.data(), int(m_springVertices.size() * sizeof(float)));
         gpu.springVertices = int(m_springVertices.size() / kVertexFloats);
@@ -478,11 +540,14 @@ void Viewport::paintGL()
 
 void Viewport::mousePressEvent(QMouseEvent *event)
 {
-    // middle or shift+left pans; left orbits unless it lands on a particle
+    // middle or shift+left pans; right orbits, and so does left unless it lands on a particle (the
+    // editing tools filter the left button first and take what they need)
     m_lastMouse = event->position();
     const bool left = event->button() == Qt::LeftButton;
     if (event->button() == Qt::MiddleButton || (left && event->modifiers().testFlag(Qt::ShiftModifier))) {
         m_drag = Drag::Pan;
+    } else if (event->button() == Qt::RightButton) {
+        m_drag = Drag::Orbit;
     } else if (left) {
         const int particle = particleAt(event->position());
         m_drag = particle < 0 ? Drag::Orbit : Drag::None;

@@ -50,9 +50,14 @@ public:
     // the scene's planes, drawn as translucent squares around the particles
     void setPlanes(const std::vector<core::PlaneDesc> &planes);
 
-    // indices of the highlighted particles
+    // indices of the highlighted particles and springs
     void setSelection(const std::vector<int> &particles);
     const std::vector<int> &selection() const { return m_selection; }
+    void setSpringSelection(const std::vector<int> &springs);
+    // what a click would pick, drawn in the hover colour; -1 for none
+    void setHover(int particle, int spring);
+    int hoveredParticle() const { return m_hoverParticle; }
+    int hoveredSpring() const { return m_springHighlight.hover; }
 
     void setParticleDrawing(ParticleDrawing drawing);
     ParticleDrawing particleDrawing() const { return m_drawing; }
@@ -60,8 +65,13 @@ public:
     Camera &camera() { return m_camera; }
     const Camera &camera() const { return m_camera; }
 
-    // the nearest particle whose sphere the ray through a pixel (logical) meets; -1 for none
+    // the nearest particle whose sphere the ray through a pixel (logical) meets, or else whose
+    // centre is within kPickPixels of the pixel on screen, so that tiny or far particles can still
+    // be picked; -1 for none
     int particleAt(const QPointF &pixel) const;
+    // the spring whose line on screen passes nearest the pixel, within kPickPixels; -1 for none
+    int springAt(const QPointF &pixel) const;
+    static constexpr float kPickPixels = 6.0f;
 
     // how many times the particle style was uploaded, and whether the framebuffer is multisampled
     int styleUploads() const { return m_styleUploads; }
@@ -74,7 +84,7 @@ public slots:
 signals:
     // seconds from the start of painting a frame to the frame on screen
     void frameTimeMeasured(double seconds);
-    // a left press on a particle (a left press on empty space orbits instead)
+    // a left press on a particle that no event filter took (a left press on empty space orbits)
     void particlePressed(int particle, Qt::KeyboardModifiers modifiers);
 
 protected:
@@ -101,6 +111,8 @@ private:
     std::shared_ptr<const core::Snapshot> m_snapshot;
     std::vector<core::PlaneDesc> m_planes;
     std::vector<int> m_selection;
+    SpringHighlight m_springHighlight;
+    int m_hoverParticle = -1;
     ParticleDrawing m_drawing = ParticleDrawing::Impostor;
 
     // what is on the GPU

@@ -56,6 +56,8 @@ private slots:
     void resetRestoresTheInitialStateExactly();
     void parameterChangeKeepsTheState();
     void structureChangeKeepsTheMotionWhenTheCountMatches();
+    void editedParticlesStartFromTheirNewDescription();
+    void grabPullsTowardTheTargetAndLetsGo();
     void replaceStartsAfresh();
     void tiltIsSeeded();
     void tiltLeavesPinnedParticlesAlone();
@@ -174,13 +176,71 @@ void TestSimulationRunner::structureChangeKeepsTheMotionWhenTheCountMatches()
     QVERIFY(runner.state().position == before.position);
     QVERIFY(runner.state().velocity == before.velocity);
 
-    // a particle more: the new scene's initial conditions
+    // a particle more: the others keep their motion, the new one starts from its description
     changed = std::make_shared<core::SceneDesc>(*changed);
     changed->particles.push_back(core::ParticleDesc{});
+    changed->particles.back().position = {0.0, 3.0, 0.0};
     runner.apply(ui::SetSceneEdit{changed, ui::SceneChange::Structure});
     QCOMPARE(runner.state().position.cols(), Eigen::Index(3));
-    QCOMPARE(runner.state().position(0, 1), 1.0);
-    QCOMPARE(runner.state().step, 0u);
+    QVERIFY(runner.state().position.col(1) == before.position.col(1));
+    QVERIFY(runner.state().velocity.col(1) == before.velocity.col(1));
+    QCOMPARE(runner.state().position(1, 2), 3.0);
+    QCOMPARE(runner.state().step, before.step);
+}
+
+void TestSimulationRunner::editedParticlesStartFromTheirNewDescription()
+{
+    // three particles under way; the middle one is moved in the scene, then the first is deleted
+    auto scene = std::make_shared<core::SceneDesc>(*springScene());
+    scene->particles.push_back(scene->particles[1]);
+    scene->particles[2].position = {2.0, 0.0, 0.0};
+    ui::SimulationRunner runner = runnerWith(scene);
+    runner.apply(ui::StepOnceEdit{});
+    const core::State before = runner.state();
+    QVERIFY(before.position.col(1) != Eigen::Vector3d(1.0, 0.0, 0.0));
+
+    auto moved = std::make_shared<core::SceneDesc>(*scene);
+    moved->particles[1].position = {0.0, 0.0, 4.0};
+    runner.apply(ui::SetSceneEdit{moved, ui::SceneChange::Structure});
+    QCOMPARE(runner.state().position.col(1), Eigen::Vector3d(0.0, 0.0, 4.0));
+    QCOMPARE(runner.state().velocity.col(1), Eigen::Vector3d(0.0, 0.5, 0.0));
+    QVERIFY(runner.state().position.col(2) == before.position.col(2));
+
+    // deleting the anchor shifts the indices: particle 2 (now 1) still keeps its motion
+    auto fewer = std::make_shared<core::SceneDesc>(*moved);
+    fewer->particles.erase(fewer->particles.begin());
+    fewer->springs.clear();
+    runner.apply(ui::SetSceneEdit{fewer, ui::SceneChange::Structure});
+    QCOMPARE(runner.state().position.cols(), Eigen::Index(2));
+    QCOMPARE(runner.state().position.col(0), Eigen::Vector3d(0.0, 0.0, 4.0));
+    QVERIFY(runner.state().position.col(1) == before.position.col(2));
+    QVERIFY(runner.state().velocity.col(1) == before.velocity.col(2));
+}
+
+void TestSimulationRunner::grabPullsTowardTheTargetAndLetsGo()
+{
+    // a free particle with nothing else acting: the mouse spring brings it to the target
+    auto scene = std::make_shared<core::SceneDesc>(*springScene(100.0, 0.01));
+    scene->springs.clear();
+    scene->particles[1].velocity.setZero();
+    ui::SimulationRunner runner = runnerWith(scene);
+    runner.apply(ui::PlayEdit{});
+    const Eigen::Vector3d target(1.0, 2.0, 0.0);
+    runner.apply(ui::GrabEdit{1, target});
+    runner.advance(1.0, kNoBudgetLimit);
+    QVERIFY2((runner.state().position.col(1) - target).norm() < 0.01,
+             qPrintable(QString::number((runner.state().position.col(1) - target).norm())));
+    // let go: no force is left on it, so it coasts at the speed it has
+    runner.apply(ui::GrabEdit{-1, Eigen::Vector3d::Zero()});
+    QCOMPARE(runner.state().applied.col(1), Eigen::Vector3d::Zero());
+    const Eigen::Vector3d v = runner.state().velocity.col(1);
+    runner.advance(0.1, kNoBudgetLimit);
+    QVERIFY((runner.state().velocity.col(1) - v).norm() < 1e-12);
+
+    // a pinned particle is carried to the target instead
+    runner.apply(ui::GrabEdit{0, Eigen::Vector3d(0.0, -1.0, 0.0)});
+    runner.advance(0.02, kNoBudgetLimit);
+    QCOMPARE(runner.state().position.col(0), Eigen::Vector3d(0.0, -1.0, 0.0));
 }
 
 void TestSimulationRunner::replaceStartsAfresh()

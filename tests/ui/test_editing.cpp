@@ -1,0 +1,487 @@
+// Editing by mouse in the real main window, under a virtual X server: real mouse events on the
+// viewport and real key presses pick the tools and act on the scene. Each test checks the
+// document afterwards, and that undo gives back exactly the scene before and redo exactly the one
+// after. Waits are on the worker's frames, never fixed sleeps.
+
+#include "ui/edit_tools.h"
+#include "ui/main_window.h"
+#include "ui/scene_document.h"
+#include "ui/simulation_controller.h"
+#include "ui/viewport.h"
+
+#include <QSettings>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+namespace {
+
+// a particle of radius r at p
+core::ParticleDesc particle(const Eigen::Vector3d &p, double r = 0.1, bool pinned = false)
+{
+    core::ParticleDesc d;
+    d.position = p;
+    d.radius = r;
+    d.pinned = pinned;
+    return d;
+}
+
+// nothing moves unless the test moves it: no gravity, no planes, no contacts
+core::SceneDesc stillScene()
+{
+    core::SceneDesc scene;
+    scene.name = "still";
+    scene.settings.gravity.setZero();
+    scene.settings.planeCollisions = false;
+    scene.settings.particleCollisions = false;
+    return scene;
+}
+
+QVector3D toQt(const Eigen::Vector3d &v)
+{
+    return {float(v.x()), float(v.y()), float(v.z())};
+}
+
+}  // namespace
+
+class TestEditing : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain()
+    {
+        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
+        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    }
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void addToolPlacesAParticleUnderTheCursor();
+    void addToolSnapsToTheGrid();
+    void pinToolPinsAndFrees();
+    void springToolJoinsTwoParticlesAtTheirDistance();
+    void boxSelectSelectsExactlyTheParticlesInside();
+    void clickAndShiftClickSelect();
+    void hoverShowsWhatAClickWouldPick();
+    void deleteRemovesParticlesAndTheirSprings();
+    void copyPasteAndDuplicate();
+    void dragWhilePausedMovesTheSelectionAsOneStep();
+    void dragWhileRunningPullsTheParticleAndLetsGo();
+    void buildTheHandoutNetByMouse();
+
+private:
+    ui::SimulationController &controller() { return *m_window->controller(); }
+    ui::Viewport *viewport() { return m_window->viewport(); }
+    ui::EditTools *tools() { return m_window->editTools(); }
+    const core::SceneDesc &scene() { return m_window->document()->scene(); }
+    QUndoStack *undo() { return m_window->document()->undoStack(); }
+
+    // the viewport shows the document's scene as the worker has it now
+    void settle()
+    {
+        const std::uint64_t sequence = controller().sync();
+        QTRY_VERIFY(controller().frame() && controller().frame()->appliedEdit >= sequence);
+        QTRY_VERIFY(viewport()->snapshot() == controller().frame()->snapshot);
+    }
+    // opens a scene and looks at it from a fixed camera: down on the origin from 6 m
+    void open(const core::SceneDesc &s)
+    {
+        m_window->document()->replace(s, QString());
+        settle();
+        ui::Camera &camera = viewport()->camera();
+        camera.setTarget(QVector3D(0.0f, 0.0f, 0.0f));
+        camera.setDistance(6.0f);
+        camera.setAngles(20.0f, 45.0f);
+        viewport()->update();
+    }
+    QPoint pixelOf(const Eigen::Vector3d &p)
+    {
+        const auto pixel = viewport()->camera().project(toQt(p));
+        return pixel ? pixel->toPoint() : QPoint(-1, -1);
+    }
+    void key(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
+    {
+        QTest::keyClick(m_window, key, modifiers);
+    }
+    void click(const QPoint &pixel, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
+    {
+        QTest::mouseClick(viewport(), Qt::LeftButton, modifiers, pixel);
+    }
+    // undo gives back `before`, redo `after`
+    void checkUndoRedo(const core::SceneDesc &before, const core::SceneDesc &after)
+    {
+        undo()->undo();
+        QVERIFY(scene() == before);
+        undo()->redo();
+        QVERIFY(scene() == after);
+    }
+
+    QTemporaryDir m_settings;
+    ui::MainWindow *m_window = nullptr;
+};
+
+void TestEditing::initTestCase()
+{
+    QVERIFY(m_settings.isValid());
+    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("test_editing"));
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+}
+
+void TestEditing::init()
+{
+    m_window = new ui::MainWindow;
+    m_window->resize(900, 700);
+    m_window->show();
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window));
+    settle();
+}
+
+void TestEditing::cleanup()
+{
+    delete m_window;
+    m_window = nullptr;
+}
+
+void TestEditing::addToolPlacesAParticleUnderTheCursor()
+{
+    open(stillScene());
+    const core::SceneDesc before = scene();
+    key(Qt::Key_2);
+    QCOMPARE(tools()->tool(), ui::Tool::AddParticle);
+
+    // where the ray through the pixel meets the ground y = 0
+    const QPoint pixel = viewport()->rect().center() + QPoint(60, 40);
+    const ui::Ray ray = viewport()->camera().unproject(pixel);
+    const float t = -ray.origin.y() / ray.direction.y();
+    const QVector3D expected = ray.at(t);
+    click(pixel);
+    QCOMPARE(scene().particles.size(), std::size_t(1));
+    const Eigen::Vector3d placed = scene().particles[0].position;
+    QVERIFY2((toQt(placed) - expected).length() < 1e-4f, qPrintable(QStringLiteral("%1 %2 %3").arg(placed.x()).arg(placed.y()).arg(placed.z())));
+    QCOMPARE(placed.y(), 0.0);
+    QCOMPARE(scene().particles[0].mass, tools()->defaults().mass);
+    QCOMPARE(scene().particles[0].radius, tools()->defaults().radius);
+    QCOMPARE(undo()->count(), 1);
+    checkUndoRedo(before, core::SceneDesc(scene()));
+
+    // it reaches the worker, which draws it where it was placed
+    settle();
+    QCOMPARE(viewport()->snapshot()->particleCount(), 1);
+    QCOMPARE(viewport()->particleAt(pixel), 0);
+}
+
+void TestEditing::addToolSnapsToTheGrid()
+{
+    open(stillScene());
+    tools()->defaults().snap = true;
+    tools()->defaults().gridStep = 0.5;
+    key(Qt::Key_2);
+    click(viewport()->rect().center() + QPoint(37, 23));
+    QCOMPARE(scene().particles.size(), std::size_t(1));
+    const Eigen::Vector3d p = scene().particles[0].position;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double steps = p[axis] / 0.5;
+        QVERIFY2(std::abs(steps - std::round(steps)) < 1e-9, qPrintable(QString::number(p[axis])));
+    }
+}
+
+void TestEditing::pinToolPinsAndFrees()
+{
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({0.0, 0.0, 0.0}), particle({1.0, 0.0, 0.0})};
+    open(s);
+    key(Qt::Key_3);
+    click(pixelOf(s.particles[1].position));
+    QVERIFY(scene().particles[1].pinned);
+    QVERIFY(!scene().particles[0].pinned);
+    const core::SceneDesc pinned = scene();
+    checkUndoRedo(s, pinned);
+    settle();
+    QCOMPARE(viewport()->snapshot()->pinned[1], std::uint8_t(1));
+    // again: freed
+    click(pixelOf(s.particles[1].position));
+    QVERIFY(!scene().particles[1].pinned);
+    // P pins the selection
+    tools()->setSelection(ui::Selection{{0, 1}, {}});
+    key(Qt::Key_P);
+    QVERIFY(scene().particles[0].pinned && scene().particles[1].pinned);
+}
+
+void TestEditing::springToolJoinsTwoParticlesAtTheirDistance()
+{
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({-1.0, 0.0, 0.0}), particle({1.0, 0.5, 0.3})};
+    open(s);
+    tools()->defaults().stiffness = 250.0;
+    key(Qt::Key_4);
+    click(pixelOf(s.particles[0].position));
+    QCOMPARE(tools()->springStart(), 0);
+    QVERIFY(scene().springs.empty());
+    click(pixelOf(s.particles[1].position));
+    QCOMPARE(scene().springs.size(), std::size_t(1));
+    const core::SpringDesc spring = scene().springs[0];
+    QCOMPARE(spring.a, 0);
+    QCOMPARE(spring.b, 1);
+    QCOMPARE(spring.restLength, (s.particles[0].position - s.particles[1].position).norm());
+    QCOMPARE(spring.stiffness, 250.0);
+    QCOMPARE(undo()->count(), 1);
+    checkUndoRedo(s, core::SceneDesc(scene()));
+
+    // the same pair again is refused, the scene unchanged
+    click(pixelOf(s.particles[1].position));
+    click(pixelOf(s.particles[0].position));
+    QCOMPARE(scene().springs.size(), std::size_t(1));
+}
+
+void TestEditing::boxSelectSelectsExactlyTheParticlesInside()
+{
+    // a 4 × 4 grid on the ground, 0.5 m apart
+    core::SceneDesc s = stillScene();
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            s.particles.push_back(particle({-0.75 + 0.5 * i, 0.0, -0.75 + 0.5 * j}, 0.05));
+    open(s);
+    key(Qt::Key_1);
+
+    // a box from the empty space left of particle 0 to between particles 5 and 10
+    const QPoint from = pixelOf({-1.2, 0.0, -1.2});
+    const QPoint to = pixelOf({0.0, 0.0, 0.0});
+    const QRect box = QRect(from, to).normalized();
+    std::vector<int> expected;
+    for (int i = 0; i < int(s.particles.size()); ++i)
+        if (box.contains(pixelOf(s.particles[std::size_t(i)].position)))
+            expected.push_back(i);
+    QVERIFY(!expected.empty() && expected.size() < s.particles.size());
+
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(viewport(), (from + to) / 2);
+    QTest::mouseMove(viewport(), to);
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to);
+    QCOMPARE(tools()->selection().particles, expected);
+    QCOMPARE(viewport()->selection(), expected);
+    QCOMPARE(undo()->count(), 0);  // selecting is not an edit
+
+    // Esc clears it
+    key(Qt::Key_Escape);
+    QVERIFY(tools()->selection().empty());
+}
+
+void TestEditing::clickAndShiftClickSelect()
+{
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({-1.0, 0.0, 0.0}), particle({0.0, 0.0, 0.0}), particle({1.0, 0.0, 0.0})};
+    s.springs = {{0, 1, 10.0, 0.0, 1.0}};
+    open(s);
+    key(Qt::Key_1);
+    click(pixelOf(s.particles[0].position));
+    QCOMPARE(tools()->selection().particles, std::vector<int>{0});
+    click(pixelOf(s.particles[2].position), Qt::ControlModifier);
+    QCOMPARE(tools()->selection().particles, (std::vector<int>{0, 2}));
+    // a click on the spring's middle selects the spring alone
+    click(pixelOf({-0.5, 0.0, 0.0}));
+    QVERIFY(tools()->selection().particles.empty());
+    QCOMPARE(tools()->selection().springs, std::vector<int>{0});
+    // Ctrl+A: everything
+    key(Qt::Key_A, Qt::ControlModifier);
+    QCOMPARE(tools()->selection().particles, (std::vector<int>{0, 1, 2}));
+    QCOMPARE(tools()->selection().springs, std::vector<int>{0});
+    QVERIFY(scene() == s);
+}
+
+void TestEditing::hoverShowsWhatAClickWouldPick()
+{
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({0.0, 0.0, 0.0}), particle({1.0, 0.0, 0.0})};
+    open(s);
+    key(Qt::Key_1);
+    QTest::mouseMove(viewport(), pixelOf(s.particles[1].position));
+    QTRY_COMPARE(viewport()->hoveredParticle(), 1);
+    QTest::mouseMove(viewport(), pixelOf({-2.0, 0.0, 2.0}));
+    QTRY_COMPARE(viewport()->hoveredParticle(), -1);
+
+    // a far, tiny particle can still be picked: within a few pixels of its centre
+    core::SceneDesc tiny = stillScene();
+    tiny.particles = {particle({0.0, 0.0, 0.0}, 1e-4)};
+    open(tiny);
+    QCOMPARE(viewport()->particleAt(pixelOf({0.0, 0.0, 0.0}) + QPoint(3, 2)), 0);
+}
+
+void TestEditing::deleteRemovesParticlesAndTheirSprings()
+{
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({-1.0, 0.0, 0.0}), particle({0.0, 0.0, 0.0}), particle({1.0, 0.0, 0.0})};
+    s.springs = {{0, 1, 10.0, 0.0, 1.0}, {1, 2, 20.0, 0.0, 1.0}, {0, 2, 30.0, 0.0, 2.0}};
+    open(s);
+    key(Qt::Key_1);
+    click(pixelOf(s.particles[1].position));
+    key(Qt::Key_Delete);
+    QCOMPARE(scene().particles.size(), std::size_t(2));
+    QCOMPARE(scene().springs.size(), std::size_t(1));
+    QCOMPARE(scene().springs[0].stiffness, 30.0);
+    QCOMPARE(scene().springs[0].a, 0);
+    QCOMPARE(scene().springs[0].b, 1);
+    QVERIFY(tools()->selection().empty());
+    checkUndoRedo(s, core::SceneDesc(scene()));
+    settle();
+    QCOMPARE(viewport()->snapshot()->particleCount(), 2);
+    QCOMPARE(viewport()->snapshot()->springCount(), 1);
+}
+
+void TestEditing::copyPasteAndDuplicate()
+{
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({-0.5, 0.0, 0.0}), particle({0.5, 0.0, 0.0})};
+    s.springs = {{0, 1, 10.0, 0.0, 1.0}};
+    open(s);
+    key(Qt::Key_A, Qt::ControlModifier);
+    key(Qt::Key_C, Qt::ControlModifier);
+    key(Qt::Key_V, Qt::ControlModifier);
+    QCOMPARE(scene().particles.size(), std::size_t(4));
+    QCOMPARE(scene().springs.size(), std::size_t(2));
+    QCOMPARE(scene().springs[1].a, 2);
+    QCOMPARE(scene().springs[1].b, 3);
+    // beside the original, not on it
+    QVERIFY((scene().particles[2].position - scene().particles[0].position).norm() > 0.2);
+    QCOMPARE(tools()->selection().particles, (std::vector<int>{2, 3}));
+    const core::SceneDesc pasted = scene();
+
+    // Ctrl+D duplicates the new selection, beside it
+    key(Qt::Key_D, Qt::ControlModifier);
+    QCOMPARE(scene().particles.size(), std::size_t(6));
+    QCOMPARE(scene().springs.size(), std::size_t(3));
+    QCOMPARE(tools()->selection().particles, (std::vector<int>{4, 5}));
+    QVERIFY((scene().particles[4].position - scene().particles[2].position).norm() > 0.2);
+    const core::SceneDesc duplicated = scene();
+    undo()->undo();
+    QVERIFY(scene() == pasted);
+    checkUndoRedo(s, pasted);
+    undo()->redo();
+    QVERIFY(scene() == duplicated);
+
+    // into another scene, a paste lands where it was copied
+    open(stillScene());
+    key(Qt::Key_V, Qt::ControlModifier);
+    QCOMPARE(scene().particles.size(), std::size_t(2));
+    QCOMPARE(scene().springs.size(), std::size_t(1));
+}
+
+void TestEditing::dragWhilePausedMovesTheSelectionAsOneStep()
+{
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({0.0, 0.0, 0.0}), particle({0.5, 0.0, 0.0}), particle({-1.0, 0.0, 0.0})};
+    open(s);
+    tools()->setSelection(ui::Selection{{0, 1}, {}});
+    key(Qt::Key_5);
+    const QPoint start = pixelOf(s.particles[0].position);
+    const QPoint end = start + QPoint(50, -30);
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, start);
+    QTest::mouseMove(viewport(), start + QPoint(20, -10));
+    QTest::mouseMove(viewport(), end);
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, end);
+
+    // both moved by the same amount, in the plane facing the view; the third stayed
+    const Eigen::Vector3d d0 = scene().particles[0].position - s.particles[0].position;
+    const Eigen::Vector3d d1 = scene().particles[1].position - s.particles[1].position;
+    QVERIFY(d0.norm() > 0.1);
+    QVERIFY((d0 - d1).norm() < 1e-6);
+    QVERIFY(scene().particles[2] == s.particles[2]);
+    QVERIFY(std::abs(d0.dot(Eigen::Vector3d(double(viewport()->camera().forward().x()),
+                                             double(viewport()->camera().forward().y()),
+                                             double(viewport()->camera().forward().z())))) < 1e-4);
+    // the particle is under the cursor where the drag ended
+    settle();
+    QCOMPARE(viewport()->particleAt(end), 0);
+    QCOMPARE(undo()->count(), 1);
+    checkUndoRedo(s, core::SceneDesc(scene()));
+}
+
+void TestEditing::dragWhileRunningPullsTheParticleAndLetsGo()
+{
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({0.0, 0.0, 0.0})};
+    open(s);
+    key(Qt::Key_5);
+    key(Qt::Key_F4);
+    QTRY_VERIFY(controller().isRunning());
+
+    // hold the particle and move the cursor: the worker pulls it there
+    const QPoint start = pixelOf(s.particles[0].position);
+    const QPoint end = start + QPoint(80, 0);
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, start);
+    QCOMPARE(tools()->grabbed(), 0);
+    QTest::mouseMove(viewport(), start + QPoint(40, 0));
+    QTest::mouseMove(viewport(), end);
+    QTRY_COMPARE_WITH_TIMEOUT(viewport()->particleAt(end), 0, 10000);
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, end);
+    QCOMPARE(tools()->grabbed(), -1);
+
+    // the run moved it, not the scene: nothing to undo, the initial position unchanged
+    QCOMPARE(undo()->count(), 0);
+    QVERIFY(scene() == s);
+    // let go, it coasts: nothing holds it at the cursor any more
+    settle();
+    const auto frame = controller().frame();
+    QVERIFY(frame->snapshot->positions[0] > 0.1f);
+}
+
+void TestEditing::buildTheHandoutNetByMouse()
+{
+    // a 3 × 3 net from an empty scene: place, join, pin the top row, run, undo it all
+    open(stillScene());
+    const core::SceneDesc empty = scene();
+    key(Qt::Key_2);
+    std::vector<QPoint> pixels;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const QPoint pixel = pixelOf({-0.6 + 0.6 * j, 0.0, -0.6 + 0.6 * i});
+            pixels.push_back(pixel);
+            key(Qt::Key_Escape);  // nothing selected: each lands on the ground
+                    click(pixel);
+        }
+    QCOMPARE(scene().particles.size(), std::size_t(9));
+    settle();
+
+    key(Qt::Key_4);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const int n = 3 * i + j;
+            if (j < 2) {
+                click(pixels[std::size_t(n)]);
+                click(pixels[std::size_t(n + 1)]);
+            }
+            if (i < 2) {
+                click(pixels[std::size_t(n)]);
+                click(pixels[std::size_t(n + 3)]);
+            }
+        }
+    QCOMPARE(scene().springs.size(), std::size_t(12));
+    // each at rest at the distance between its particles, which a click places to within a pixel
+    for (const core::SpringDesc &spring : scene().springs) {
+        const double distance =
+            (scene().particles[std::size_t(spring.a)].position - scene().particles[std::size_t(spring.b)].position).norm();
+        QVERIFY(std::abs(spring.restLength - distance) < 1e-9);
+        QVERIFY(std::abs(spring.restLength - 0.6) < 0.03);
+    }
+
+    key(Qt::Key_3);
+    for (int j = 0; j < 3; ++j)
+        click(pixels[std::size_t(j)]);
+    for (int j = 0; j < 3; ++j)
+        QVERIFY(scene().particles[std::size_t(j)].pinned);
+
+    // every step undoes, back to the empty scene
+    QCOMPARE(undo()->count(), 9 + 12 + 3);
+    while (undo()->canUndo())
+        undo()->undo();
+    QVERIFY(scene() == empty);
+}
+
+QTEST_MAIN(TestEditing)
+#include "test_editing.moc"

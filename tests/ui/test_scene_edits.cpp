@@ -1,0 +1,156 @@
+// The editing tools' scene changes, on plain SceneDescs: each keeps springs and the steerable
+// particle pointing at the same particles, and does nothing outside what it names.
+
+#include "ui/scene_edits.h"
+
+#include <QTest>
+
+namespace {
+
+core::ParticleDesc particleAt(double x, double y = 0.0, double z = 0.0)
+{
+    core::ParticleDesc p;
+    p.position = {x, y, z};
+    p.velocity = {0.0, 1.0, 0.0};
+    return p;
+}
+
+// four particles in a row along x, 1 m apart, joined 0-1, 1-2, 2-3
+core::SceneDesc row()
+{
+    core::SceneDesc scene;
+    for (int i = 0; i < 4; ++i)
+        scene.particles.push_back(particleAt(i));
+    for (int i = 0; i < 3; ++i)
+        scene.springs.push_back({i, i + 1, 10.0 + i, 0.5, 1.0});
+    scene.steerable = 3;
+    return scene;
+}
+
+}  // namespace
+
+class TestSceneEdits : public QObject {
+    Q_OBJECT
+
+private slots:
+    void selectionStaysSortedAndUnique()
+    {
+        ui::Selection s;
+        s.toggleParticle(5);
+        s.toggleParticle(2);
+        s.toggleParticle(9);
+        s.toggleParticle(5);
+        QCOMPARE(s.particles, (std::vector<int>{2, 9}));
+        QVERIFY(s.hasParticle(9) && !s.hasParticle(5));
+        std::vector<int> v{3, 1, 3, 2};
+        ui::normalise(v);
+        QCOMPARE(v, (std::vector<int>{1, 2, 3}));
+        s.springs = {0, 4};
+        s.clamp(row());  // 4 particles, 3 springs
+        QCOMPARE(s.particles, (std::vector<int>{2}));
+        QCOMPARE(s.springs, (std::vector<int>{0}));
+    }
+
+    void springRestLengthIsTheCurrentDistance()
+    {
+        core::SceneDesc scene = row();
+        scene.particles[3].position = {3.0, 4.0, 0.0};
+        const int s = ui::addSpring(scene, 0, 3, 50.0, 2.0);
+        QCOMPARE(s, 3);
+        QCOMPARE(scene.springs[3].restLength, 5.0);
+        QCOMPARE(scene.springs[3].stiffness, 50.0);
+        QCOMPARE(scene.springs[3].damping, 2.0);
+        // refused: the same pair either way round, a particle to itself, out of range
+        QCOMPARE(ui::addSpring(scene, 3, 0, 1.0, 0.0), -1);
+        QCOMPARE(ui::addSpring(scene, 1, 1, 1.0, 0.0), -1);
+        QCOMPARE(ui::addSpring(scene, 1, 7, 1.0, 0.0), -1);
+        QCOMPARE(scene.springs.size(), std::size_t(4));
+    }
+
+    void pinningStopsTheParticle()
+    {
+        core::SceneDesc scene = row();
+        ui::togglePinned(scene, {1, 2});
+        QVERIFY(scene.particles[1].pinned && scene.particles[2].pinned);
+        QCOMPARE(scene.particles[1].velocity, Eigen::Vector3d::Zero());
+        QVERIFY(!scene.particles[0].pinned);
+        ui::togglePinned(scene, {1});
+        QVERIFY(!scene.particles[1].pinned);
+        ui::setPinned(scene, {0, 2, 99}, true);
+        QVERIFY(scene.particles[0].pinned && scene.particles[2].pinned);
+    }
+
+    void deletingAParticleTakesItsSpringsAndRenumbers()
+    {
+        core::SceneDesc scene = row();
+        ui::removeItems(scene, ui::Selection{{1}, {}});
+        QCOMPARE(scene.particles.size(), std::size_t(3));
+        QCOMPARE(scene.particles[1].position.x(), 2.0);  // old 2
+        // 0-1 and 1-2 went with particle 1; old 2-3 is now 1-2 with its own stiffness
+        QCOMPARE(scene.springs.size(), std::size_t(1));
+        QCOMPARE(scene.springs[0].a, 1);
+        QCOMPARE(scene.springs[0].b, 2);
+        QCOMPARE(scene.springs[0].stiffness, 12.0);
+        QCOMPARE(scene.steerable, 2);
+
+        // a selected spring alone goes, its particles stay; deleting the steerable one clears it
+        core::SceneDesc other = row();
+        ui::removeItems(other, ui::Selection{{3}, {0}});
+        QCOMPARE(other.particles.size(), std::size_t(3));
+        QCOMPARE(other.springs.size(), std::size_t(1));
+        QCOMPARE(other.springs[0].a, 1);
+        QCOMPARE(other.springs[0].b, 2);
+        QCOMPARE(other.steerable, -1);
+    }
+
+    void copyTakesTheSpringsWithin()
+    {
+        const core::SceneDesc scene = row();
+        // particles 1 and 2: only the spring 1-2 lies within
+        ui::Fragment f = ui::copyItems(scene, ui::Selection{{1, 2}, {}});
+        QCOMPARE(f.particles.size(), std::size_t(2));
+        QCOMPARE(f.springs.size(), std::size_t(1));
+        QCOMPARE(f.springs[0].a, 0);
+        QCOMPARE(f.springs[0].b, 1);
+        QCOMPARE(f.springs[0].stiffness, 11.0);
+        // a selected spring brings its ends
+        f = ui::copyItems(scene, ui::Selection{{}, {2}});
+        QCOMPARE(f.particles.size(), std::size_t(2));
+        QCOMPARE(f.particles[0].position.x(), 2.0);
+        QCOMPARE(f.springs.size(), std::size_t(1));
+    }
+
+    void pasteAppendsMovedCopies()
+    {
+        core::SceneDesc scene = row();
+        const ui::Fragment f = ui::copyItems(scene, ui::Selection{{0, 1}, {}});
+        const ui::Selection added = ui::pasteFragment(scene, f, {0.0, 0.0, 2.0});
+        QCOMPARE(added.particles, (std::vector<int>{4, 5}));
+        QCOMPARE(added.springs, (std::vector<int>{3}));
+        QCOMPARE(scene.particles[5].position, Eigen::Vector3d(1.0, 0.0, 2.0));
+        QCOMPARE(scene.springs[3].a, 4);
+        QCOMPARE(scene.springs[3].b, 5);
+        QCOMPARE(scene.springs[3].restLength, 1.0);
+        // the originals are untouched
+        QCOMPARE(scene.particles[1].position, Eigen::Vector3d(1.0, 0.0, 0.0));
+    }
+
+    void moveStartsFromWhereTheParticlesWereSeen()
+    {
+        core::SceneDesc scene = row();
+        ui::moveParticles(scene, {0, 2}, {{5.0, 5.0, 5.0}, {7.0, 0.0, 0.0}}, {0.5, 0.0, -1.0});
+        QCOMPARE(scene.particles[0].position, Eigen::Vector3d(5.5, 5.0, 4.0));
+        QCOMPARE(scene.particles[2].position, Eigen::Vector3d(7.5, 0.0, -1.0));
+        QCOMPARE(scene.particles[1].position, Eigen::Vector3d(1.0, 0.0, 0.0));
+    }
+
+    void gridSnapping()
+    {
+        QVERIFY((ui::snapToGrid({0.26, -0.04, 1.0}, 0.1) - Eigen::Vector3d(0.3, 0.0, 1.0)).norm() < 1e-12);
+        QVERIFY((ui::snapToGrid({0.26, -0.04, 1.0}, 0.25) - Eigen::Vector3d(0.25, 0.0, 1.0)).norm() < 1e-12);
+        QCOMPARE(ui::snapToGrid({0.26, -0.04, 1.0}, 0.0), Eigen::Vector3d(0.26, -0.04, 1.0));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSceneEdits)
+#include "test_scene_edits.moc"

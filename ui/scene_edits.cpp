@@ -1,0 +1,187 @@
+#include "scene_edits.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ui {
+
+namespace {
+
+bool contains(const std::vector<int> &sorted, int i)
+{
+    return std::binary_search(sorted.begin(), sorted.end(), i);
+}
+
+void toggle(std::vector<int> &sorted, int i)
+{
+    const auto at = std::lower_bound(sorted.begin(), sorted.end(), i);
+    if (at != sorted.end() && *at == i)
+        sorted.erase(at);
+    else
+        sorted.insert(at, i);
+}
+
+bool inRange(const core::SceneDesc &scene, int i)
+{
+    return i >= 0 && i < static_cast<int>(scene.particles.size());
+}
+
+}  // namespace
+
+void normalise(std::vector<int> &indices)
+{
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+}
+
+bool Selection::hasParticle(int i) const { return contains(particles, i); }
+bool Selection::hasSpring(int i) const { return contains(springs, i); }
+void Selection::toggleParticle(int i) { toggle(particles, i); }
+void Selection::toggleSpring(int i) { toggle(springs, i); }
+
+void Selection::clamp(const core::SceneDesc &scene)
+{
+    const auto drop = [](std::vector<int> &v, std::size_t size) {
+        v.erase(std::remove_if(v.begin(), v.end(), [size](int i) { return i < 0 || std::size_t(i) >= size; }),
+                v.end());
+    };
+    drop(particles, scene.particles.size());
+    drop(springs, scene.springs.size());
+}
+
+int addParticle(core::SceneDesc &scene, const core::ParticleDesc &particle)
+{
+    scene.particles.push_back(particle);
+    return static_cast<int>(scene.particles.size()) - 1;
+}
+
+int addSpring(core::SceneDesc &scene, int a, int b, double stiffness, double damping)
+{
+    if (a == b || !inRange(scene, a) || !inRange(scene, b))
+        return -1;
+    for (const core::SpringDesc &s : scene.springs)
+        if ((s.a == a && s.b == b) || (s.a == b && s.b == a))
+            return -1;
+    const double length =
+        (scene.particles[std::size_t(a)].position - scene.particles[std::size_t(b)].position).norm();
+    scene.springs.push_back({a, b, stiffness, damping, length});
+    return static_cast<int>(scene.springs.size()) - 1;
+}
+
+void setPinned(core::SceneDesc &scene, const std::vector<int> &particles, bool pinned)
+{
+    for (int i : particles) {
+        if (!inRange(scene, i))
+            continue;
+        core::ParticleDesc &p = scene.particles[std::size_t(i)];
+        p.pinned = pinned;
+        if (pinned)
+            p.velocity.setZero();
+    }
+}
+
+void togglePinned(core::SceneDesc &scene, const std::vector<int> &particles)
+{
+    for (int i : particles)
+        if (inRange(scene, i))
+            setPinned(scene, {i}, !scene.particles[std::size_t(i)].pinned);
+}
+
+void removeItems(core::SceneDesc &scene, const Selection &selection)
+{
+    const std::size_t n = scene.particles.size();
+    std::vector<char> goes(n, 0);
+    for (int i : selection.particles)
+        if (inRange(scene, i))
+            goes[std::size_t(i)] = 1;
+
+    // old index -> new index, -1 for removed
+    std::vector<int> remap(n, -1);
+    std::vector<core::ParticleDesc> kept;
+    kept.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (goes[i])
+            continue;
+        remap[i] = static_cast<int>(kept.size());
+        kept.push_back(scene.particles[i]);
+    }
+
+    std::vector<core::SpringDesc> springs;
+    for (std::size_t s = 0; s < scene.springs.size(); ++s) {
+        core::SpringDesc spring = scene.springs[s];
+        if (selection.hasSpring(static_cast<int>(s)) || !inRange(scene, spring.a) || !inRange(scene, spring.b))
+            continue;
+        spring.a = remap[std::size_t(spring.a)];
+        spring.b = remap[std::size_t(spring.b)];
+        if (spring.a >= 0 && spring.b >= 0)
+            springs.push_back(spring);
+    }
+
+    if (scene.steerable >= 0)
+        scene.steerable = inRange(scene, scene.steerable) ? remap[std::size_t(scene.steerable)] : -1;
+    scene.particles = std::move(kept);
+    scene.springs = std::move(springs);
+}
+
+Fragment copyItems(const core::SceneDesc &scene, const Selection &selection)
+{
+    std::vector<int> particles = selection.particles;
+    for (int s : selection.springs)
+        if (s >= 0 && std::size_t(s) < scene.springs.size()) {
+            particles.push_back(scene.springs[std::size_t(s)].a);
+            particles.push_back(scene.springs[std::size_t(s)].b);
+        }
+    normalise(particles);
+
+    Fragment fragment;
+    std::vector<int> remap(scene.particles.size(), -1);
+    for (int i : particles) {
+        if (!inRange(scene, i))
+            continue;
+        remap[std::size_t(i)] = static_cast<int>(fragment.particles.size());
+        fragment.particles.push_back(scene.particles[std::size_t(i)]);
+    }
+    for (const core::SpringDesc &s : scene.springs) {
+        if (!inRange(scene, s.a) || !inRange(scene, s.b))
+            continue;
+        const int a = remap[std::size_t(s.a)];
+        const int b = remap[std::size_t(s.b)];
+        if (a >= 0 && b >= 0)
+            fragment.springs.push_back({a, b, s.stiffness, s.damping, s.restLength});
+    }
+    return fragment;
+}
+
+Selection pasteFragment(core::SceneDesc &scene, const Fragment &fragment, const Eigen::Vector3d &offset)
+{
+    Selection added;
+    const int base = static_cast<int>(scene.particles.size());
+    for (core::ParticleDesc p : fragment.particles) {
+        p.position += offset;
+        added.particles.push_back(addParticle(scene, p));
+    }
+    for (core::SpringDesc s : fragment.springs) {
+        s.a += base;
+        s.b += base;
+        added.springs.push_back(static_cast<int>(scene.springs.size()));
+        scene.springs.push_back(s);
+    }
+    return added;
+}
+
+void moveParticles(core::SceneDesc &scene, const std::vector<int> &particles, const std::vector<Eigen::Vector3d> &from,
+                   const Eigen::Vector3d &delta)
+{
+    for (std::size_t k = 0; k < particles.size() && k < from.size(); ++k)
+        if (inRange(scene, particles[k]))
+            scene.particles[std::size_t(particles[k])].position = from[k] + delta;
+}
+
+Eigen::Vector3d snapToGrid(const Eigen::Vector3d &point, double step)
+{
+    if (!(step > 0.0))
+        return point;
+    return (point / step).array().round().matrix() * step;
+}
+
+}  // namespace ui

@@ -1,0 +1,70 @@
+#pragma once
+// Scene edits: the structural changes the editing tools make to a SceneDesc, as pure functions
+// with no Qt, so that each can be unit-tested on its own and wrapped in one undo command
+// (SceneCommand, scene_commands.h). Particle indices refer to scene.particles; functions that
+// remove or add particles keep the springs and the steerable index pointing at the same particles.
+
+#include "core/scene.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace ui {
+
+// what the editor has selected; indices sorted and unique
+struct Selection {
+    std::vector<int> particles;
+    std::vector<int> springs;
+
+    bool empty() const { return particles.empty() && springs.empty(); }
+    bool hasParticle(int i) const;
+    bool hasSpring(int i) const;
+    // adds or removes one item, keeping the order
+    void toggleParticle(int i);
+    void toggleSpring(int i);
+    // drops indices that the scene no longer has
+    void clamp(const core::SceneDesc &scene);
+    bool operator==(const Selection &) const = default;
+};
+
+// sorts and removes duplicates
+void normalise(std::vector<int> &indices);
+
+// the particles and springs among them, cut out of a scene: what Copy puts on the clipboard
+struct Fragment {
+    std::vector<core::ParticleDesc> particles;
+    std::vector<core::SpringDesc> springs;  // indices into particles
+    bool empty() const { return particles.empty(); }
+};
+
+// appends a particle; returns its index
+int addParticle(core::SceneDesc &scene, const core::ParticleDesc &particle);
+
+// joins a and b with their current distance as the rest length; returns the spring's index, or -1
+// when a == b, either is out of range, or a spring already joins them
+int addSpring(core::SceneDesc &scene, int a, int b, double stiffness, double damping);
+
+// flips pinned on each particle; a pinned particle is at rest, so its velocity is cleared
+void togglePinned(core::SceneDesc &scene, const std::vector<int> &particles);
+// sets pinned on each particle
+void setPinned(core::SceneDesc &scene, const std::vector<int> &particles, bool pinned);
+
+// removes the springs, then the particles with every spring attached to them
+void removeItems(core::SceneDesc &scene, const Selection &selection);
+
+// the selected particles and the springs with both ends among them (a selected spring brings its
+// two ends along)
+Fragment copyItems(const core::SceneDesc &scene, const Selection &selection);
+
+// appends the fragment moved by offset; returns the selection of what was added
+Selection pasteFragment(core::SceneDesc &scene, const Fragment &fragment, const Eigen::Vector3d &offset);
+
+// places each particle at from[k] + delta, from[k] being where particles[k] was seen (the drag
+// starts from what is on screen, which is not the initial position once the run has moved on)
+void moveParticles(core::SceneDesc &scene, const std::vector<int> &particles, const std::vector<Eigen::Vector3d> &from,
+                   const Eigen::Vector3d &delta);
+
+// the nearest multiple of step in each coordinate; step <= 0 leaves the point as it is
+Eigen::Vector3d snapToGrid(const Eigen::Vector3d &point, double step);
+
+}  // namespace ui
