@@ -1,5 +1,6 @@
 // springlab-bench: the benchmark programs, one per first argument.
 //   springlab-bench accuracy [--out DIR] [--quick]   error against run time (docs/benchmarks.md)
+//   springlab-bench stability [--out DIR] [--quick]  largest stable time step against theory
 //   springlab-bench write-references DIR             the reference problems as scene files
 //
 // The plots are painted into images, which needs a QGuiApplication for the fonts but no display:
@@ -7,6 +8,7 @@
 
 #include "accuracy.h"
 #include "reference_problems.h"
+#include "stability.h"
 
 #include "core/io/scene_file.h"
 
@@ -23,6 +25,7 @@ constexpr int kExitBadArguments = 2;
 
 const char *const kUsage =
     "usage: springlab-bench accuracy [--out DIR] [--quick]\n"
+    "       springlab-bench stability [--out DIR] [--quick]\n"
     "       springlab-bench write-references DIR\n";
 
 int badArguments(QTextStream &err, const QString &message)
@@ -49,6 +52,27 @@ int accuracy(const QStringList &arguments, QTextStream &out, QTextStream &err)
     if (!parser.positionalArguments().isEmpty())
         return badArguments(err, QStringLiteral("accuracy takes no file names"));
     return bench::runAccuracy({parser.value(outOption), parser.isSet(quickOption)}, out);
+}
+
+int stability(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("Largest stable time step of the explicit integrators on spring chains, against theory."));
+    parser.addHelpOption();
+    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Folder for the CSV and plot (default: .)."),
+                                       QStringLiteral("DIR"), QStringLiteral("."));
+    const QCommandLineOption quickOption(QStringLiteral("quick"), QStringLiteral("A small grid, short trials: a smoke test only."));
+    parser.addOptions({outOption, quickOption});
+    if (!parser.parse(arguments))
+        return badArguments(err, parser.errorText());
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << parser.helpText();
+        return kExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return badArguments(err, QStringLiteral("stability takes no file names"));
+    return bench::runStability({parser.value(outOption), parser.isSet(quickOption)}, out);
 }
 
 // every reference problem's scene, saved as DIR/<name>.json
@@ -90,6 +114,8 @@ int main(int argc, char *argv[])
     arguments.removeAt(1);
     if (name == QStringLiteral("accuracy"))
         return accuracy(arguments, out, err);
+    if (name == QStringLiteral("stability"))
+        return stability(arguments, out, err);
     if (name == QStringLiteral("write-references"))
         return writeReferences(arguments, out, err);
     if (name == QStringLiteral("--help") || name == QStringLiteral("-h")) {

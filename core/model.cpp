@@ -1,5 +1,8 @@
 #include "model.h"
 
+#include "parameters.h"
+#include "stability.h"
+#include "state.h"
 #include "validate.h"
 
 #include <cassert>
@@ -20,9 +23,6 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
     model->gravity = s.gravity;
     model->viscosity = s.viscosity;
     model->restitution = s.restitution;
-    // two sub-steps' worth of speed gained under gravity: what a resting contact picks up between
-    // projections, well below any real impact
-    model->restingSpeed = 2.0 * s.gravity.norm() * (s.timeStep / s.substeps);
 
     // particles, structure of arrays
     const auto n = static_cast<Eigen::Index>(scene.particles.size());
@@ -72,6 +72,16 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
     plan.springs = springs > 0;
     plan.planeCollisions = anythingFree && s.planeCollisions && planes > 0;
     plan.particleCollisions = anythingFree && s.particleCollisions && n >= 2;
+
+    // auto substeps: as many as the stability limit at the initial state asks, and no fewer than the
+    // scene's own
+    if (s.autoSubsteps)
+        model->substeps = stableSubsteps(stabilityLimit(*model, makeState(*model, scene)), s.integrator, s.timeStep,
+                                         s.substeps, static_cast<int>(parameterInfo(Parameter::Substeps).maximum));
+
+    // two sub-steps' worth of speed gained under gravity: what a resting contact picks up between
+    // projections, well below any real impact
+    model->restingSpeed = 2.0 * s.gravity.norm() * model->subStep();
     return model;
 }
 

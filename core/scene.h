@@ -13,6 +13,9 @@ namespace core {
 struct Settings {
     double timeStep = 0.01;  // s, one step of the simulation clock
     int substeps = 1;        // each step is split into this many equal sub-steps
+    // substeps is then the least: raised when compiled to keep each sub-step inside the explicit
+    // integrators' stability limit (stability.h), as stiffness and mass change
+    bool autoSubsteps = false;
     Integrator integrator = Integrator::SymplecticEuler;
     double tolerance = 1e-6;  // m and m/s, the local error per step adaptive-rk45 aims for
     Eigen::Vector3d gravity{0.0, -9.81, 0.0};  // m/s², y is up

@@ -48,8 +48,9 @@ double StabilityLimit::maxSubStep(Integrator integrator) const
                (omegaMax * omegaMax);
     case Integrator::Rk4: return 2.0 * std::sqrt(2.0) / omegaMax;
     case Integrator::ExplicitEuler:
-        // stable only while damping outweighs the growth: h < 2γ/ω² (γ ≤ ω)
-        return 2.0 * dampingRate / (omegaMax * omegaMax);
+        // stable only while damping outweighs the growth: |1 + hλ|² = 1 - γh + ω²h² < 1 for
+        // λ = -γ/2 ± i√(ω² - γ²/4), so h < γ/ω² (γ ≤ 2ω)
+        return dampingRate / (omegaMax * omegaMax);
     case Integrator::ImplicitEuler:
     case Integrator::AdaptiveRk45: return infinity;
     }
@@ -107,6 +108,15 @@ StabilityLimit stabilityLimit(const Model &model, const State &state)
     return limit;
 }
 
+int stableSubsteps(const StabilityLimit &limit, Integrator integrator, double timeStep, int least, int most)
+{
+    const double maxStep = limit.maxSubStep(integrator);
+    if (!(maxStep > 0.0))
+        return most;  // no step is stable: as many as allowed, the message says why
+    const double needed = std::ceil(timeStep / (kStableShare * maxStep));
+    return needed >= double(most) ? most : std::max(least, static_cast<int>(needed));
+}
+
 std::string explainBlowup(const Model &model, const Blowup &blowup, const StabilityLimit &limit)
 {
     std::ostringstream out;
@@ -122,7 +132,7 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
     if (maxStep < h) {
         const double stiffest = model.springCount() > 0 ? model.stiffness.maxCoeff() : 0.0;
         if (maxStep > 0.0) {
-            const int substeps = static_cast<int>(std::ceil(model.timeStep / (0.9 * maxStep)));
+            const int substeps = static_cast<int>(std::ceil(model.timeStep / (kStableShare * maxStep)));
             out << " The time step " << format(h) << " s is " << format(h / maxStep) << "× the stability limit "
                 << format(maxStep) << " s for stiffness " << format(stiffest) << " N/m with " << name
                 << ": use ≥ " << substeps << " substeps or the implicit-euler integrator.";

@@ -28,6 +28,14 @@ struct StabilityLimit {
 // analyses the scene linearised at the state (allocates: call it off the step path)
 StabilityLimit stabilityLimit(const Model &model, const State &state);
 
+// the share of the limit a sub-step is kept under where the limit sets the substeps: the energy of
+// a lightly damped mode already swings widely just below it (docs/benchmarks.md, stability)
+constexpr double kStableShare = 0.9;
+
+// the fewest substeps, at least `least` and at most `most`, that keep timeStep / substeps under
+// kStableShare of the limit for the integrator
+int stableSubsteps(const StabilityLimit &limit, Integrator integrator, double timeStep, int least, int most);
+
 // one message naming what failed, where and why, with the fix, e.g. "Particle 17's velocity
 // became infinite at t = 2.31 s (step 231). The time step 0.01 s is 3.2× the stability limit
 // 0.0031 s for stiffness 1e5 N/m with symplectic-euler: use ≥ 4 substeps or the implicit-euler

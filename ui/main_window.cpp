@@ -90,9 +90,7 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_controller, &SimulationController::frameChanged, this, &MainWindow::frameChanged);
     connect(m_controller, &SimulationController::runningChanged, this, &MainWindow::runningChanged);
     connect(m_controller, &SimulationController::blewUp, this, [this](const QString &message) {
-        showWarning(tr("Blew up: %1. Paused at the last good state; a smaller time step or softer springs may "
-                       "help.")
-                        .arg(message));
+        showWarning(tr("%1 Paused at the last good state.").arg(message));
     });
     connect(m_parameters, &ParametersPanel::valueRefused, this, &MainWindow::showWarning);
 
@@ -476,6 +474,8 @@ void MainWindow::frameChanged()
         m_captureRequest = 0;
         applyCapturedState(*frame->capturedState);
     }
+    if (frame->stability && frame->model)
+        m_parameters->showStability(*frame->stability, *frame->model);
     if (!frame->snapshot)
         return;
     m_viewport->setSnapshot(frame->snapshot);

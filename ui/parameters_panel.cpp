@@ -3,6 +3,9 @@
 #include "parameter_row.h"
 #include "scene_commands.h"
 #include "scene_document.h"
+#include "status_text.h"
+
+#include "core/stability.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -142,6 +145,23 @@ ParametersPanel::ParametersPanel(SceneDocument &document, QWidget *parent)
         m_rows.push_back(row);
     }
 
+    // auto substeps and the stability limit follow the substeps row
+    QFormLayout *time = forms[std::size_t(Group::Time)];
+    int substepsRow = 0;
+    time->getWidgetPosition(row(QStringLiteral("substeps")), &substepsRow, nullptr);
+    m_autoSubsteps = new QCheckBox(tr("Auto substeps"), this);
+    m_autoSubsteps->setObjectName(QStringLiteral("parameter-autoSubsteps"));
+    m_autoSubsteps->setToolTip(tr("Raise the substeps (the value above is then the least) to keep each sub-step "
+                                  "under 90% of the stability limit, as stiffness and masses change"));
+    time->insertRow(substepsRow + 1, QString(), m_autoSubsteps);
+    connect(m_autoSubsteps, &QCheckBox::toggled, this, &ParametersPanel::setAutoSubsteps);
+    m_stabilityNote = new QLabel(this);
+    m_stabilityNote->setObjectName(QStringLiteral("parameter-stability"));
+    m_stabilityNote->setWordWrap(true);
+    m_stabilityNote->setToolTip(tr("The largest sub-step the explicit integrators stay stable at, from the highest "
+                                   "frequency of the springs (timeStep / substeps must stay under it)"));
+    time->insertRow(substepsRow + 2, QString(), m_stabilityNote);
+
     // the collision switches
     m_planeCollisions = new QCheckBox(tr("Plane collisions"), this);
     m_planeCollisions->setObjectName(QStringLiteral("parameter-planeCollisions"));
@@ -192,6 +212,10 @@ void ParametersPanel::refresh()
         if (core::kIntegrators[i] == integrator)
             m_integrator->setCurrentIndex(int(i));
     row(QStringLiteral("tolerance"))->setEnabled(integrator == core::Integrator::AdaptiveRk45);
+    {
+        const QSignalBlocker blockAuto(m_autoSubsteps);
+        m_autoSubsteps->setChecked(scene.settings.autoSubsteps);
+    }
     {
         const QSignalBlocker blockPlanes(m_planeCollisions);
         const QSignalBlocker blockParticles(m_particleCollisions);
@@ -250,6 +274,32 @@ void ParametersPanel::setIntegrator(int index)
     m_document.undoStack()->push(new SettingsCommand(
         m_document, tr("Set integrator to %1").arg(fromView(core::integratorName(integrator))),
         QString(), settings));
+}
+
+void ParametersPanel::setAutoSubsteps(bool on)
+{
+    if (on == m_document.scene().settings.autoSubsteps)
+        return;
+    m_message->hide();
+    core::Settings settings = m_document.scene().settings;
+    settings.autoSubsteps = on;
+    m_document.undoStack()->push(new SettingsCommand(
+        m_document, on ? tr("Switch auto substeps on") : tr("Switch auto substeps off"), QString(), settings));
+}
+
+void ParametersPanel::showStability(const core::StabilityLimit &limit, const core::Model &model)
+{
+    const StabilityNote note =
+        stabilityNote(limit.maxSubStep(model.integrator), model.subStep(), model.timeStep, model.integrator);
+    QString text = note.text;
+    if (m_document.scene().settings.autoSubsteps)
+        text += tr("; auto: %n substep(s)", nullptr, model.substeps);
+    m_stabilityNote->setText(text);
+    switch (note.level) {
+    case StabilityLevel::Safe: m_stabilityNote->setStyleSheet(QString()); break;
+    case StabilityLevel::Near: m_stabilityNote->setStyleSheet(QStringLiteral("color: #b06000")); break;
+    case StabilityLevel::Past: m_stabilityNote->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold")); break;
+    }
 }
 
 void ParametersPanel::setCollisions(bool planes, bool particles)

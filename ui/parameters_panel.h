@@ -14,6 +14,11 @@ class QComboBox;
 class QGroupBox;
 class QLabel;
 
+namespace core {
+struct Model;
+struct StabilityLimit;
+}
+
 namespace ui {
 
 class ParameterRow;
@@ -32,6 +37,13 @@ public:
     QComboBox *integratorBox() const { return m_integrator; }
     QCheckBox *planeCollisionsBox() const { return m_planeCollisions; }
     QCheckBox *particleCollisionsBox() const { return m_particleCollisions; }
+    QCheckBox *autoSubstepsBox() const { return m_autoSubsteps; }
+    // "Stable sub-step ≤ 3.1 ms; each is 10 ms, 3.2× over: ...", coloured by how near the limit
+    QLabel *stabilityLabel() const { return m_stabilityNote; }
+
+    // shows the explicit integrators' limit against the sub-step the model runs with (its
+    // substeps raised by auto substeps): amber near it, red past it
+    void showStability(const core::StabilityLimit &limit, const core::Model &model);
 
     // the latest refusal, empty when the latest change was accepted
     QString message() const;
@@ -46,6 +58,7 @@ private:
     void edit(std::size_t binding, double value);
     void setCollisions(bool planes, bool particles);
     void setIntegrator(int index);
+    void setAutoSubsteps(bool on);
 
     SceneDocument &m_document;
     std::vector<ParameterRow *> m_rows;  // one per binding, in the bindings' order
@@ -54,6 +67,8 @@ private:
     QComboBox *m_integrator = nullptr;
     QCheckBox *m_planeCollisions = nullptr;
     QCheckBox *m_particleCollisions = nullptr;
+    QCheckBox *m_autoSubsteps = nullptr;
+    QLabel *m_stabilityNote = nullptr;
     QLabel *m_message = nullptr;
 };
 

@@ -10,6 +10,7 @@
 #include "core/model.h"
 #include "core/scene.h"
 #include "core/snapshot.h"
+#include "core/stability.h"
 
 #include <cstdint>
 #include <memory>
@@ -43,6 +44,9 @@ struct SimulationFrame {
     // the latest state captured on request (null before the first) and the request it answers
     std::shared_ptr<const CapturedState> capturedState;
     std::uint64_t captureRequest = 0;
+
+    // the explicit integrators' stability limit for the model (nullopt before the first scene)
+    std::optional<core::StabilityLimit> stability;
 };
 
 }  // namespace ui

@@ -93,6 +93,7 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
     }
     applySteering();
     m_estimateStale = true;
+    m_stabilityStale = true;
 }
 
 // A structural edit while a run is under way keeps the run: a particle the edit left as it was
@@ -329,20 +330,23 @@ std::shared_ptr<const core::Snapshot> SimulationRunner::snapshot() const
     return core::makeSnapshot(*m_model, m_state);
 }
 
-std::optional<core::Blowup> SimulationRunner::takeBlowup()
+std::optional<std::string> SimulationRunner::takeBlowupMessage()
 {
+    if (!m_blowup || !hasScene())
+        return std::nullopt;
     std::optional<core::Blowup> blowup;
     blowup.swap(m_blowup);
-    return blowup;
+    // the state is the last good one again: the limit there is the one the steps ran into
+    return core::explainBlowup(*m_model, *blowup, core::stabilityLimit(*m_model, m_state));
 }
 
-std::string describeBlowup(const core::Blowup &blowup)
+bool SimulationRunner::updateStability()
 {
-    const char *quantity = blowup.quantity == core::Blowup::Quantity::Position ? "position" : "velocity";
-    char text[160];
-    std::snprintf(text, sizeof text, "particle %d's %s reached %.3g at step %llu (t = %.4g s)", blowup.particle,
-                  quantity, blowup.value, static_cast<unsigned long long>(blowup.step), blowup.time);
-    return text;
+    if (!m_stabilityStale || !hasScene())
+        return false;
+    m_stabilityStale = false;
+    m_stability = core::stabilityLimit(*m_model, m_state);
+    return true;
 }
 
 }  // namespace ui

@@ -8,7 +8,9 @@
 // after an edit and, while running, at most every kEstimateInterval of wall time and only once the
 // steps since the last estimate took 1 / kEstimateShare times as long as it did, so that the
 // estimates never cost more than that share of the run; and the energies at the last reset, from
-// which the drift is measured. The accuracy planner runs here too, on the runner's own state.
+// which the drift is measured. The accuracy planner runs here too, on the runner's own state, and
+// so does the stability analysis: the explicit integrators' limit for the model as edited, and the
+// explanation of a blow-up at the last good state.
 
 #include "captured_state.h"
 #include "edit_queue.h"
@@ -18,6 +20,7 @@
 #include "core/error_estimate.h"
 #include "core/model.h"
 #include "core/snapshot.h"
+#include "core/stability.h"
 #include "core/state.h"
 
 #include <memory>
@@ -57,8 +60,14 @@ public:
     // the current state, packed for drawing
     std::shared_ptr<const core::Snapshot> snapshot() const;
 
-    // the blow-up that stopped the run, once: the caller reports it
-    std::optional<core::Blowup> takeBlowup();
+    // what stopped the run by blowing up, once, explained at the last good state (what failed,
+    // where, why and the fix: core::explainBlowup); the caller reports it
+    std::optional<std::string> takeBlowupMessage();
+
+    // analyses the stability limit again if an edit changed the model since; true if it did
+    bool updateStability();
+    // the limit of the model as it is now (nullopt before the first scene)
+    const std::optional<core::StabilityLimit> &stability() const { return m_stability; }
 
     // estimates the local error now if an edit or a blow-up changed the model or the state since
     // the last estimate; the worker calls it once a tick, after the edits and the steps
@@ -107,6 +116,8 @@ private:
     bool m_running = false;
     double m_owed = 0.0;  // s of simulated time not yet covered by a whole step
     std::optional<core::Blowup> m_blowup;
+    std::optional<core::StabilityLimit> m_stability;
+    bool m_stabilityStale = true;  // the model changed since the limit was analysed
 
     // the live error estimate and what it has cost
     core::StepDoubling m_doubling;
@@ -134,8 +145,5 @@ private:
     int m_steerParticle = -1;
     Eigen::Vector3d m_steerForce = Eigen::Vector3d::Zero();  // N
 };
-
-// "particle 12's velocity reached 1.2e+10 at step 345 (t = 3.44 s)"
-std::string describeBlowup(const core::Blowup &blowup);
 
 }  // namespace ui

@@ -74,10 +74,13 @@ void SimulationWorker::tick()
     // an edit or a blow-up changed what the error estimate is of: estimate again
     m_runner.updateEstimate();
 
-    // a blow-up paused the run: say so
-    if (const std::optional<core::Blowup> blowup = m_runner.takeBlowup()) {
+    // an edit changed the model: its stability limit, for the parameters panel
+    changed = m_runner.updateStability() || changed;
+
+    // a blow-up paused the run: say what, where, why and what to do
+    if (const std::optional<std::string> message = m_runner.takeBlowupMessage()) {
         changed = true;
-        emit blewUp(QString::fromStdString(describeBlowup(*blowup)));
+        emit blewUp(QString::fromStdString(*message));
     }
 
     // the timer runs only while the simulation does
@@ -108,6 +111,7 @@ void SimulationWorker::publish()
     frame->accuracyRequest = m_runner.accuracyRequest();
     frame->capturedState = m_runner.capturedState();
     frame->captureRequest = m_runner.captureRequest();
+    frame->stability = m_runner.stability();
     if (m_mailbox.publish(std::move(frame)))
         emit frameReady();
 }

@@ -1,6 +1,7 @@
 #include "status_text.h"
 
 #include "core/parameters.h"
+#include "core/stability.h"
 
 #include <QCoreApplication>
 #include <algorithm>
@@ -145,6 +146,39 @@ QString planText(const core::AccuracyPlan &plan)
     if (pick->stabilityLimited)
         text += tr(" (the substeps are set by its stability limit)");
     return text;
+}
+
+StabilityNote stabilityNote(double maxSubStep, double subStep, double timeStep, core::Integrator integrator)
+{
+    const std::string_view name = core::integratorName(integrator);
+    const QString integratorText = QString::fromUtf8(name.data(), qsizetype(name.size()));
+    if (std::isinf(maxSubStep)) {
+        const bool implicit = integrator == core::Integrator::ImplicitEuler || integrator == core::Integrator::AdaptiveRk45;
+        return {implicit ? tr("%1 is stable at any time step").arg(integratorText)
+                         : tr("No springs: no stability limit on the time step"),
+                StabilityLevel::Safe};
+    }
+    if (!(maxSubStep > 0.0))
+        return {tr("%1 is unstable at any time step on undamped springs: use "
+                                                  "symplectic-euler or implicit-euler")
+                    .arg(integratorText),
+                StabilityLevel::Past};
+
+    const double share = subStep / maxSubStep;
+    StabilityNote note;
+    note.text = tr("Stable sub-step ≤ %1; each is %2")
+                    .arg(durationText(maxSubStep), durationText(subStep));
+    if (share > 1.0) {
+        const double substeps = std::ceil(timeStep / (core::kStableShare * maxSubStep));
+        note.level = StabilityLevel::Past;
+        note.text += tr(", %1× over: use ≥ %2 substeps or implicit-euler")
+                         .arg(share, 0, 'g', 2)
+                         .arg(substeps, 0, 'f', 0);
+    } else {
+        note.level = share >= kNearStabilityShare ? StabilityLevel::Near : StabilityLevel::Safe;
+        note.text += tr(" (%1 % of it)").arg(std::round(100.0 * share), 0, 'f', 0);
+    }
+    return note;
 }
 
 }  // namespace ui

@@ -40,4 +40,16 @@ QString driftText(const core::Energies &initial, double current);
 // second, the cheapest of 4 integrators that meet 1e-6 m/step"; or why nothing was picked
 QString planText(const core::AccuracyPlan &plan);
 
+// how a sub-step stands against the explicit integrators' stability limit
+enum class StabilityLevel { Safe, Near, Past };
+// from this share of the limit on, a sub-step is near it
+inline constexpr double kNearStabilityShare = 0.8;
+struct StabilityNote {
+    QString text;
+    StabilityLevel level = StabilityLevel::Safe;
+};
+// "Stable sub-step ≤ 3.1 ms; each is 10 ms, 3.2× over: use ≥ 4 substeps or implicit-euler", for a
+// limit maxSubStep (s; infinite when any step is stable, 0 when none is) and the sub-step taken
+StabilityNote stabilityNote(double maxSubStep, double subStep, double timeStep, core::Integrator integrator);
+
 }  // namespace ui

@@ -246,6 +246,7 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
     QString integrator = QString::fromUtf8(defaultName.data(), static_cast<qsizetype>(defaultName.size()));
     if (!member(object, path, QLatin1String("timeStep"), Need::Optional, settings.timeStep) ||
         !member(object, path, QLatin1String("substeps"), Need::Optional, settings.substeps) ||
+        !member(object, path, QLatin1String("autoSubsteps"), Need::Optional, settings.autoSubsteps) ||
         !member(object, path, QLatin1String("integrator"), Need::Optional, integrator) ||
         !member(object, path, QLatin1String("tolerance"), Need::Optional, settings.tolerance) ||
         !member(object, path, QLatin1String("gravity"), Need::Optional, settings.gravity) ||
@@ -263,7 +264,8 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
     settings.integrator = *chosen;
 
     warnUnknownKeys(object, path,
-                    {QLatin1String("timeStep"), QLatin1String("substeps"), QLatin1String("integrator"),
+                    {QLatin1String("timeStep"), QLatin1String("substeps"), QLatin1String("autoSubsteps"),
+                     QLatin1String("integrator"),
                      QLatin1String("tolerance"), QLatin1String("gravity"), QLatin1String("viscosity"), QLatin1String("restitution"),
                      QLatin1String("planeCollisions"), QLatin1String("particleCollisions")});
     return true;
@@ -575,6 +577,9 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
     out += "    \"settings\": {\n";
     out += "        \"timeStep\": " + formatNumber(s.timeStep) + ",\n";
     out += "        \"substeps\": " + QByteArray::number(s.substeps) + ",\n";
+    // only when on, so that files written before it existed read back byte for byte
+    if (s.autoSubsteps)
+        out += "        \"autoSubsteps\": true,\n";
     out += "        \"integrator\": ";
     appendString(out, integrator);
     out += ",\n        \"tolerance\": " + formatNumber(s.tolerance);

@@ -19,6 +19,7 @@ private slots:
     void measuredLimitMatchesTheory();
     void implicitAndAdaptiveHaveNoLimit();
     void blowupMessage();
+    void autoSubstepsKeepTheChainStable();
 };
 
 namespace {
@@ -84,8 +85,8 @@ void TestStability::dampingNarrowsTheLimit()
     const double expected = (std::sqrt(416.0) - 4.0) / 100.0;
     QVERIFY(std::abs(limit.maxSubStep(core::Integrator::SymplecticEuler) - expected) < 1e-10);
     QVERIFY(expected < 0.2);
-    // explicit Euler: stable only while damping wins, h < 2γ/ω² = 0.08 s
-    QVERIFY(std::abs(limit.maxSubStep(core::Integrator::ExplicitEuler) - 0.08) < 1e-10);
+    // explicit Euler: stable only while damping wins, h < γ/ω² = 0.04 s
+    QVERIFY(std::abs(limit.maxSubStep(core::Integrator::ExplicitEuler) - 0.04) < 1e-10);
 }
 
 void TestStability::measuredLimitMatchesTheory_data()
@@ -149,6 +150,37 @@ void TestStability::blowupMessage()
     QVERIFY2(text.contains("The time step 0.02 s is 3.2× the stability limit 0.0063 s"), message.c_str());
     QVERIFY2(text.contains("stiffness 1e+05 N/m with symplectic-euler"), message.c_str());
     QVERIFY2(text.contains("use ≥ 4 substeps or the implicit-euler integrator"), message.c_str());
+}
+
+void TestStability::autoSubstepsKeepTheChainStable()
+{
+    // a step 5× the limit: auto substeps splits it into the fewest sub-steps under 90% of the limit,
+    // and a run that blows up without them stays bounded with them
+    core::SceneDesc scene = chain(10);
+    const test::Sim probe = test::compile(scene);
+    const core::StabilityLimit limit = core::stabilityLimit(*probe.model, probe.state);
+    const double maxStep = limit.maxSubStep(core::Integrator::SymplecticEuler);
+    const double h = 5.0 * maxStep;
+    QVERIFY(!stableAt(scene, h, 4000));
+
+    scene.settings.timeStep = h;
+    scene.settings.autoSubsteps = true;
+    const test::Sim sim = test::compile(scene);
+    const int substeps = sim.model->substeps;
+    QCOMPARE(substeps, int(std::ceil(5.0 / core::kStableShare)));
+    QVERIFY(sim.model->subStep() <= core::kStableShare * maxStep);
+    QVERIFY(h / (substeps - 1) > core::kStableShare * maxStep);  // the fewest that do
+    QVERIFY(stableAt(scene, h, 4000));
+
+    // the scene's substeps is the least it takes
+    scene.settings.substeps = 20;
+    QCOMPARE(test::compile(scene).model->substeps, 20);
+
+    // the arithmetic at the edges: at least `least`, at most `most`, and `most` when no step is stable
+    QCOMPARE(core::stableSubsteps(limit, core::Integrator::SymplecticEuler, 0.5 * maxStep, 1, 10000), 1);
+    QCOMPARE(core::stableSubsteps(limit, core::Integrator::SymplecticEuler, 1e6 * maxStep, 1, 10000), 10000);
+    QCOMPARE(core::stableSubsteps(limit, core::Integrator::ImplicitEuler, h, 2, 10000), 2);
+    QCOMPARE(core::stableSubsteps(limit, core::Integrator::ExplicitEuler, h, 1, 10000), 10000);  // undamped
 }
 
 QTEST_APPLESS_MAIN(TestStability)

@@ -127,6 +127,7 @@ core::SceneDesc awkwardScene()
     scene.name = "awkward \"quoted\" \\ back\tslash\nnewline \x01 na\xc3\xafve \xe2\x98\x83 \xf0\x9f\x98\x80";
     scene.settings.timeStep = 1.0 / 3.0;
     scene.settings.substeps = 7;
+    scene.settings.autoSubsteps = true;
     scene.settings.integrator = core::Integrator::ExplicitEuler;
     scene.settings.gravity = {-0.0, -9.81, 1e-300};
     scene.settings.viscosity = denormal;
@@ -652,6 +653,10 @@ void TestSceneFile::saveWritesEveryKey()
           "offset"})
         QVERIFY2(json.contains(QByteArray("\"") + key + "\": "), key);
     QVERIFY(json.contains('\n'));
+    // but autoSubsteps only when on, so that files from before it read back byte for byte
+    QVERIFY(!json.contains("autoSubsteps"));
+    scene.settings.autoSubsteps = true;
+    QVERIFY(io::sceneToJson(scene).contains("\"autoSubsteps\": true,"));
 
     // an empty scene is still a whole file
     const io::LoadResult empty = io::parseScene(io::sceneToJson(core::SceneDesc{}), QStringLiteral("empty.json"));

@@ -17,6 +17,7 @@
 #include "ui/viewport.h"
 
 #include <QCheckBox>
+#include <QLabel>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QStatusBar>
@@ -274,16 +275,48 @@ void TestMainWindow::blowupPausesAndShowsInTheStatusBar()
     press(Qt::Key_F4);
     QVERIFY(blewUp.wait(10000));
 
-    // paused at the last good state, and the status bar says who and when
+    // paused at the last good state, and the status bar says what failed, when, why and the fix
     QVERIFY(!controller().isRunning());
-    QVERIFY2(m_window->statusWarning().contains(QStringLiteral("Blew up: particle ")),
-             qPrintable(m_window->statusWarning()));
-    QVERIFY(m_window->statusWarning().contains(QStringLiteral("at step ")));
+    const QString warning = m_window->statusWarning();
+    QVERIFY2(warning.startsWith(QStringLiteral("Particle ")) && warning.contains(QStringLiteral("(step ")) &&
+                 warning.contains(QStringLiteral("the stability limit")) &&
+                 warning.contains(QStringLiteral("for stiffness 1e+09 N/m with symplectic-euler: use ≥ ")) &&
+                 warning.endsWith(QStringLiteral("Paused at the last good state.")),
+             qPrintable(warning));
     const auto frame = settledFrame(controller());
     QVERIFY(!frame->running);
     QCOMPARE(m_window->statusRate(), QStringLiteral("paused"));
     for (float x : frame->snapshot->positions)
         QVERIFY(std::isfinite(x));
+
+    // the parameters panel said so before the run: the sub-step is past the limit, in red
+    ui::ParametersPanel *panel = m_window->parametersPanel();
+    QLabel *note = panel->stabilityLabel();
+    QVERIFY2(note->text().contains(QStringLiteral("× over: use ≥ ")), qPrintable(note->text()));
+    QVERIFY(note->styleSheet().contains(QStringLiteral("#b00020")));
+
+    // auto substeps, by a click: the worker takes as many as the limit asks, and the run holds
+    QTest::mouseClick(panel->autoSubstepsBox(), Qt::LeftButton, {},
+                      QPoint(8, panel->autoSubstepsBox()->height() / 2));
+    QVERIFY(m_window->document()->scene().settings.autoSubsteps);
+    const auto automatic = settledFrame(controller());
+    QVERIFY(automatic->model->substeps > 100);
+    QVERIFY(automatic->model->subStep() <= core::kStableShare * automatic->stability->maxSubStep(core::Integrator::SymplecticEuler));
+    QTRY_VERIFY2(!note->styleSheet().contains(QStringLiteral("#b00020")) && note->text().contains(QStringLiteral("auto: ")),
+                 qPrintable(note->text()));
+    press(Qt::Key_F5);
+    blewUp.clear();
+    press(Qt::Key_F4);
+    const std::uint64_t start = settledFrame(controller())->snapshot->step;
+    QTRY_VERIFY_WITH_TIMEOUT(controller().frame()->snapshot->step >= start + 5, 20000);
+    press(Qt::Key_F4);
+    QCOMPARE(blewUp.count(), 0);
+    for (float x : settledFrame(controller())->snapshot->positions)
+        QVERIFY(std::isfinite(x));
+    // and undo switches it off again
+    m_window->document()->undoStack()->undo();
+    QVERIFY(!m_window->document()->scene().settings.autoSubsteps);
+    QVERIFY(!panel->autoSubstepsBox()->isChecked());
 }
 
 void TestMainWindow::arrowKeysSteerThePoolBall()

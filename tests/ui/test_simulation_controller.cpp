@@ -169,10 +169,14 @@ void TestSimulationController::blowupPausesAndIsReported()
     controller.play();
     QVERIFY(blewUp.wait(10000));
     QVERIFY(!controller.isRunning());
-    QVERIFY(blewUp.front().front().toString().startsWith("particle "));
+    const QString message = blewUp.front().front().toString();
+    QVERIFY2(message.startsWith("Particle ") && message.contains("stability limit"), qPrintable(message));
     const auto frame = frameAfter(controller, controller.sync());
     QVERIFY(!frame->running);
     QVERIFY(!frame->snapshot->blowup.has_value());  // back at the last good state
+    // the limit the message names is the one the frame carries for the panel
+    QVERIFY(frame->stability.has_value());
+    QVERIFY(frame->model->subStep() > frame->stability->maxSubStep(frame->model->integrator));
 }
 
 void TestSimulationController::shutDownWhileRunningEndsTheThread()

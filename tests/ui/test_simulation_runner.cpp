@@ -9,6 +9,7 @@
 #include "core/io/scene_file.h"
 #include "core/step.h"
 
+#include <QRegularExpression>
 #include <QtTest>
 
 namespace {
@@ -64,6 +65,7 @@ private slots:
     void steeringPushesTheParticle();
     void steeringSurvivesResetButNotReplace();
     void blowupPausesAndRestoresTheLastGoodState();
+    void stabilityLimitFollowsEdits();
     void errorEstimateFollowsEdits();
     void errorEstimateRefreshesWhileRunning();
     void driftIsMeasuredFromTheLastReset();
@@ -321,20 +323,50 @@ void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
 
     // paused, reported once, and back at the state before the steps that blew up
     QVERIFY(!runner.isRunning());
-    const std::optional<core::Blowup> blowup = runner.takeBlowup();
-    QVERIFY(blowup.has_value());
-    QCOMPARE(blowup->particle, 1);
-    QVERIFY(!runner.takeBlowup().has_value());
+    const std::optional<std::string> message = runner.takeBlowupMessage();
+    QVERIFY(message.has_value());
+    QVERIFY(!runner.takeBlowupMessage().has_value());
     QVERIFY(runner.state().position.allFinite());
     QVERIFY(!runner.state().blowup.has_value());
-    QVERIFY(runner.state().step < blowup->step);
     QVERIFY(runner.state().step >= good.step);
-    QVERIFY(QString::fromStdString(ui::describeBlowup(*blowup)).startsWith("particle 1's"));
+
+    // what failed, where (the step after the state restored), why and the fix
+    const QString text = QString::fromStdString(*message);
+    const QRegularExpressionMatch what =
+        QRegularExpression(QStringLiteral("^Particle 1's (velocity|position) became .* \\(step (\\d+)\\)\\.")).match(text);
+    QVERIFY2(what.hasMatch(), qPrintable(text));
+    QVERIFY(runner.state().step < what.captured(2).toULongLong());
+    QVERIFY2(text.contains(QStringLiteral("the stability limit")) && text.contains(QStringLiteral("1e+09 N/m")) &&
+                 text.contains(QStringLiteral("substeps or the implicit-euler integrator")),
+             qPrintable(text));
 
     // it can go on from there once the scene is fixed
     runner.apply(ui::SetSceneEdit{springScene(100.0, 0.1), ui::SceneChange::Parameters});
     runner.apply(ui::StepOnceEdit{});
-    QVERIFY(!runner.takeBlowup().has_value());
+    QVERIFY(!runner.takeBlowupMessage().has_value());
+}
+
+void TestSimulationRunner::stabilityLimitFollowsEdits()
+{
+    // 1 kg on k = 100 N/m: ω = 10 rad/s, so symplectic Euler is stable below 2/ω = 0.2 s
+    ui::SimulationRunner runner = runnerWith(springScene(100.0));
+    QVERIFY(!runner.stability().has_value());
+    QVERIFY(runner.updateStability());
+    QVERIFY(runner.stability().has_value());
+    QVERIFY(std::abs(runner.stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.2) < 1e-6);
+    QVERIFY(!runner.updateStability());  // nothing changed: not analysed again
+
+    // four times stiffer halves it; with auto substeps the model takes as many as the limit asks:
+    // 0.25 s / (0.9 × 0.1 s) → 3
+    auto stiffer = std::make_shared<core::SceneDesc>(*springScene(400.0));
+    runner.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
+    QVERIFY(runner.updateStability());
+    QVERIFY(std::abs(runner.stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.1) < 1e-6);
+    QCOMPARE(runner.model()->substeps, 1);
+    auto automatic = std::make_shared<core::SceneDesc>(*stiffer);
+    automatic->settings.autoSubsteps = true;
+    runner.apply(ui::SetSceneEdit{automatic, ui::SceneChange::Parameters});
+    QCOMPARE(runner.model()->substeps, 3);
 }
 
 void TestSimulationRunner::errorEstimateFollowsEdits()

@@ -18,6 +18,7 @@ private slots:
     void drift_data();
     void drift();
     void plan();
+    void stability();
 };
 
 void TestStatusText::rate_data()
@@ -135,6 +136,35 @@ void TestStatusText::plan()
     // nothing meets it
     plan.chosen = -1;
     QVERIFY(ui::planText(plan).startsWith(QStringLiteral("No fixed-step integrator meets 1e-6 m/step")));
+}
+
+void TestStatusText::stability()
+{
+    using core::Integrator;
+    const double infinity = std::numeric_limits<double>::infinity();
+
+    // well inside, near (from 80%), past: the limit, the sub-step, and past it the substeps that fix it
+    ui::StabilityNote note = ui::stabilityNote(0.004, 0.001, 0.001, Integrator::SymplecticEuler);
+    QCOMPARE(note.level, ui::StabilityLevel::Safe);
+    QCOMPARE(note.text, QStringLiteral("Stable sub-step ≤ 4 ms; each is 1 ms (25 % of it)"));
+    note = ui::stabilityNote(0.004, 0.0032, 0.0032, Integrator::SymplecticEuler);
+    QCOMPARE(note.level, ui::StabilityLevel::Near);
+    QCOMPARE(note.text, QStringLiteral("Stable sub-step ≤ 4 ms; each is 3.2 ms (80 % of it)"));
+    note = ui::stabilityNote(0.0031, 0.01, 0.01, Integrator::SymplecticEuler);
+    QCOMPARE(note.level, ui::StabilityLevel::Past);
+    // 0.01 / (0.9 × 0.0031) = 3.58 → 4
+    QCOMPARE(note.text, QStringLiteral("Stable sub-step ≤ 3.1 ms; each is 10 ms, 3.2× over: use ≥ 4 substeps or "
+                                       "implicit-euler"));
+
+    // no limit, or no stable step at all
+    note = ui::stabilityNote(infinity, 0.01, 0.01, Integrator::ImplicitEuler);
+    QCOMPARE(note.level, ui::StabilityLevel::Safe);
+    QCOMPARE(note.text, QStringLiteral("implicit-euler is stable at any time step"));
+    note = ui::stabilityNote(infinity, 0.01, 0.01, Integrator::Rk4);
+    QCOMPARE(note.text, QStringLiteral("No springs: no stability limit on the time step"));
+    note = ui::stabilityNote(0.0, 0.01, 0.01, Integrator::ExplicitEuler);
+    QCOMPARE(note.level, ui::StabilityLevel::Past);
+    QVERIFY(note.text.startsWith(QStringLiteral("explicit-euler is unstable at any time step")));
 }
 
 QTEST_APPLESS_MAIN(TestStatusText)
