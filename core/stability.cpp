@@ -108,6 +108,56 @@ StabilityLimit stabilityLimit(const Model &model, const State &state)
     return limit;
 }
 
+std::optional<PairSpeedExcess> pairSpeedExcess(const Model &model, const State &state)
+{
+    const int n = model.particleCount();
+    if (!model.plan.particleCollisions || n < 2)
+        return std::nullopt;
+    // the two highest speeds (the fastest's index kept) and the two smallest radii
+    double fastest = 0.0, second = 0.0;
+    int fastestIndex = -1;
+    for (int i : model.freeParticles) {
+        const double speed = state.velocity.col(i).norm();
+        if (speed > fastest) {
+            second = fastest;
+            fastest = speed;
+            fastestIndex = i;
+        } else if (speed > second) {
+            second = speed;
+        }
+    }
+    double smallest = std::numeric_limits<double>::infinity(), nextSmallest = smallest;
+    for (int i = 0; i < n; ++i) {
+        const double r = model.radius[i];
+        if (r < smallest) {
+            nextSmallest = smallest;
+            smallest = r;
+        } else if (r < nextSmallest) {
+            nextSmallest = r;
+        }
+    }
+    PairSpeedExcess excess;
+    excess.fastest = fastestIndex;
+    excess.relativeSpeed = fastest + second;
+    excess.displacement = excess.relativeSpeed * model.subStep();
+    excess.contactDistance = smallest + nextSmallest;
+    if (!(excess.displacement > excess.contactDistance))
+        return std::nullopt;
+    excess.substeps =
+        static_cast<int>(std::min(std::ceil(excess.relativeSpeed * model.timeStep / excess.contactDistance), 1e9));
+    return excess;
+}
+
+std::string explainPairSpeed(const PairSpeedExcess &excess)
+{
+    std::ostringstream out;
+    out << "Particles move up to " << format(excess.displacement) << " m apart per sub-step (up to "
+        << format(excess.relativeSpeed) << " m/s, particle " << excess.fastest << " the fastest), more than the "
+        << format(excess.contactDistance) << " m at which the smallest pair touches: they may pass through each "
+        << "other. Use ≥ " << excess.substeps << " substeps.";
+    return out.str();
+}
+
 int stableSubsteps(const StabilityLimit &limit, Integrator integrator, double timeStep, int least, int most)
 {
     const double maxStep = limit.maxSubStep(integrator);

@@ -476,6 +476,11 @@ void MainWindow::frameChanged()
     }
     if (frame->stability && frame->model)
         m_parameters->showStability(*frame->stability, *frame->model);
+    // particles too fast for the pair contacts: said once as it starts, not over every later warning
+    const bool tooFast = !frame->pairSpeedWarning.empty();
+    if (tooFast && !m_pairSpeedWarned)
+        showWarning(QString::fromStdString(frame->pairSpeedWarning));
+    m_pairSpeedWarned = tooFast;
     if (!frame->snapshot)
         return;
     m_viewport->setSnapshot(frame->snapshot);

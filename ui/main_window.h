@@ -184,6 +184,7 @@ private:
     MessageBoxFunction m_messageBox;
     FileDialogFunction m_fileDialog;
     std::uint64_t m_captureRequest = 0;  // the captured state awaited from the worker; 0: none
+    bool m_pairSpeedWarned = false;      // the latest frame's particles were past the pair speed limit
     Viewport *m_viewport = nullptr;
     EditTools *m_tools = nullptr;
     QToolBar *m_toolBar = nullptr;

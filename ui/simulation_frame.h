@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace ui {
 
@@ -47,6 +48,8 @@ struct SimulationFrame {
 
     // the explicit integrators' stability limit for the model (nullopt before the first scene)
     std::optional<core::StabilityLimit> stability;
+    // particles faster than the pair speed limit allows (core::explainPairSpeed); empty when not
+    std::string pairSpeedWarning;
 };
 
 }  // namespace ui

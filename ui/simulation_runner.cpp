@@ -94,6 +94,13 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
     applySteering();
     m_estimateStale = true;
     m_stabilityStale = true;
+    checkPairSpeed();
+}
+
+void SimulationRunner::checkPairSpeed()
+{
+    const std::optional<core::PairSpeedExcess> excess = core::pairSpeedExcess(*m_model, m_state);
+    m_pairSpeedWarning = excess ? core::explainPairSpeed(*excess) : std::string();
 }
 
 // A structural edit while a run is under way keeps the run: a particle the edit left as it was
@@ -147,6 +154,7 @@ void SimulationRunner::reset()
     restart();
     applySteering();
     m_estimateStale = true;
+    checkPairSpeed();
 }
 
 void SimulationRunner::tilt(const TiltEdit &edit)
@@ -262,6 +270,7 @@ SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double b
     const double seconds = secondsSince(start);
     m_stepSeconds += seconds;
     m_stepSecondsSinceEstimate += seconds;
+    checkPairSpeed();
 
     // the periodic estimate, of the state these steps ended at: rare enough in wall time, and
     // only once the steps have paid for it many times over

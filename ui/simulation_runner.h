@@ -68,6 +68,9 @@ public:
     bool updateStability();
     // the limit of the model as it is now (nullopt before the first scene)
     const std::optional<core::StabilityLimit> &stability() const { return m_stability; }
+    // particles faster than the pair speed limit allows, as of the latest steps, edit or reset
+    // (empty when within it): core::explainPairSpeed
+    const std::string &pairSpeedWarning() const { return m_pairSpeedWarning; }
 
     // estimates the local error now if an edit or a blow-up changed the model or the state since
     // the last estimate; the worker calls it once a tick, after the edits and the steps
@@ -105,6 +108,7 @@ private:
     void grab(const GrabEdit &edit);
     void applyGrab();
     bool stepOnce();
+    void checkPairSpeed();
     void estimate(bool counted);
     void planAccuracy(const PlanAccuracyEdit &edit);
     void captureState(const CaptureStateEdit &edit);
@@ -118,6 +122,7 @@ private:
     std::optional<core::Blowup> m_blowup;
     std::optional<core::StabilityLimit> m_stability;
     bool m_stabilityStale = true;  // the model changed since the limit was analysed
+    std::string m_pairSpeedWarning;
 
     // the live error estimate and what it has cost
     core::StepDoubling m_doubling;

@@ -112,6 +112,7 @@ void SimulationWorker::publish()
     frame->capturedState = m_runner.capturedState();
     frame->captureRequest = m_runner.captureRequest();
     frame->stability = m_runner.stability();
+    frame->pairSpeedWarning = m_runner.pairSpeedWarning();
     if (m_mailbox.publish(std::move(frame)))
         emit frameReady();
 }

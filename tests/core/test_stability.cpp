@@ -20,6 +20,7 @@ private slots:
     void implicitAndAdaptiveHaveNoLimit();
     void blowupMessage();
     void autoSubstepsKeepTheChainStable();
+    void pairSpeedLimit();
 };
 
 namespace {
@@ -181,6 +182,57 @@ void TestStability::autoSubstepsKeepTheChainStable()
     QCOMPARE(core::stableSubsteps(limit, core::Integrator::SymplecticEuler, 1e6 * maxStep, 1, 10000), 10000);
     QCOMPARE(core::stableSubsteps(limit, core::Integrator::ImplicitEuler, h, 2, 10000), 2);
     QCOMPARE(core::stableSubsteps(limit, core::Integrator::ExplicitEuler, h, 1, 10000), 10000);  // undamped
+}
+
+void TestStability::pairSpeedLimit()
+{
+    // two particles of radius 0.05 m head on at 10 m/s each, and a third at rest with a larger
+    // radius: relative displacement 20 m/s × 0.01 s = 0.2 m per sub-step against a contact at 0.1 m
+    core::SceneDesc scene;
+    scene.settings.gravity.setZero();
+    scene.settings.timeStep = 0.01;
+    core::ParticleDesc p;
+    p.radius = 0.05;
+    p.position = {-1.0, 0.0, 0.0};
+    p.velocity = {10.0, 0.0, 0.0};
+    scene.particles.push_back(p);
+    p.position = {1.0, 0.0, 0.0};
+    p.velocity = {-10.0, 0.0, 0.0};
+    scene.particles.push_back(p);
+    p.position = {0.0, 5.0, 0.0};
+    p.velocity.setZero();
+    p.radius = 0.5;
+    scene.particles.push_back(p);
+    const test::Sim sim = test::compile(scene);
+    const std::optional<core::PairSpeedExcess> excess = core::pairSpeedExcess(*sim.model, sim.state);
+    QVERIFY(excess.has_value());
+    QCOMPARE(excess->relativeSpeed, 20.0);
+    QVERIFY(std::abs(excess->displacement - 0.2) < 1e-12);
+    QCOMPARE(excess->contactDistance, 0.1);
+    QCOMPARE(excess->substeps, 2);
+    QVERIFY(excess->fastest == 0 || excess->fastest == 1);
+    const std::string text = core::explainPairSpeed(*excess);
+    QVERIFY2(text.find("Particles move up to 0.2 m apart per sub-step (up to 20 m/s") == 0 &&
+                 text.find("more than the 0.1 m at which the smallest pair touches") != std::string::npos &&
+                 text.find("Use ≥ 2 substeps.") != std::string::npos,
+             text.c_str());
+
+    // the substeps it names are enough; without particle contacts there is no limit
+    scene.settings.substeps = excess->substeps;
+    test::Sim split = test::compile(scene);
+    QVERIFY(!core::pairSpeedExcess(*split.model, split.state).has_value());
+    scene.settings.substeps = 1;
+    scene.settings.particleCollisions = false;
+    split = test::compile(scene);
+    QVERIFY(!core::pairSpeedExcess(*split.model, split.state).has_value());
+
+    // and the substeps it names do hold them: the two bounce instead of passing through
+    scene.settings.particleCollisions = true;
+    scene.settings.substeps = excess->substeps;
+    test::Sim run = test::compile(scene);
+    for (int i = 0; i < 20; ++i)
+        QVERIFY(core::step(*run.model, run.state));
+    QVERIFY(run.state.position(0, 0) < run.state.position(0, 1));
 }
 
 QTEST_APPLESS_MAIN(TestStability)

@@ -66,6 +66,9 @@ private slots:
     void steeringSurvivesResetButNotReplace();
     void blowupPausesAndRestoresTheLastGoodState();
     void stabilityLimitFollowsEdits();
+    void pairSpeedWarningFollowsTheRun();
+    void examplesStayInsideThePairSpeedLimit_data();
+    void examplesStayInsideThePairSpeedLimit();
     void errorEstimateFollowsEdits();
     void errorEstimateRefreshesWhileRunning();
     void driftIsMeasuredFromTheLastReset();
@@ -367,6 +370,64 @@ void TestSimulationRunner::stabilityLimitFollowsEdits()
     automatic->settings.autoSubsteps = true;
     runner.apply(ui::SetSceneEdit{automatic, ui::SceneChange::Parameters});
     QCOMPARE(runner.model()->substeps, 3);
+}
+
+void TestSimulationRunner::pairSpeedWarningFollowsTheRun()
+{
+    // a particle of radius 0.1 m thrown at 30 m/s at one at rest: 0.3 m per 0.01 s step, against a
+    // contact at 0.2 m
+    auto scene = std::make_shared<core::SceneDesc>();
+    scene->settings.gravity.setZero();
+    scene->settings.timeStep = 0.01;
+    core::ParticleDesc thrown;
+    thrown.velocity = {30.0, 0.0, 0.0};
+    core::ParticleDesc still;
+    still.position = {3.0, 0.0, 0.0};
+    scene->particles = {thrown, still};
+    ui::SimulationRunner runner = runnerWith(scene);
+    QVERIFY2(QString::fromStdString(runner.pairSpeedWarning()).startsWith("Particles move up to 0.3 m apart"),
+             runner.pairSpeedWarning().c_str());
+
+    // two substeps bring it under, as the warning says
+    auto split = std::make_shared<core::SceneDesc>(*scene);
+    split->settings.substeps = 2;
+    runner.apply(ui::SetSceneEdit{split, ui::SceneChange::Parameters});
+    QVERIFY(runner.pairSpeedWarning().empty());
+
+    // the run is checked too: a kick past the limit shows after the steps
+    runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Parameters});
+    runner.apply(ui::ResetEdit{});
+    QVERIFY(!runner.pairSpeedWarning().empty());
+    auto slow = std::make_shared<core::SceneDesc>(*scene);
+    slow->particles[0].velocity = {1.0, 0.0, 0.0};
+    runner.apply(ui::SetSceneEdit{slow, ui::SceneChange::Structure});
+    QVERIFY(runner.pairSpeedWarning().empty());
+    runner.apply(ui::SteerEdit{0, Eigen::Vector3d(5000.0, 0.0, 0.0)});  // 1 kg: 5000 m/s² along x
+    runner.apply(ui::PlayEdit{});
+    runner.advance(0.05, kNoBudgetLimit);
+    QVERIFY(!runner.pairSpeedWarning().empty());
+}
+
+void TestSimulationRunner::examplesStayInsideThePairSpeedLimit_data()
+{
+    QTest::addColumn<QString>("name");
+    for (const char *name : {"particles", "springs", "collisions", "pool", "cloth"})
+        QTest::newRow(name) << QString::fromLatin1(name);
+}
+
+void TestSimulationRunner::examplesStayInsideThePairSpeedLimit()
+{
+    // the warning is for scenes that need it: the examples run 3 s without it
+    QFETCH(QString, name);
+    io::LoadResult loaded = io::loadScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/") + name +
+                                          QStringLiteral(".json"));
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+    ui::SimulationRunner runner = runnerWith(std::make_shared<core::SceneDesc>(*loaded.scene));
+    runner.apply(ui::PlayEdit{});
+    for (int tick = 0; tick < 100; ++tick) {
+        runner.advance(0.03, kNoBudgetLimit);
+        QVERIFY2(runner.pairSpeedWarning().empty(), runner.pairSpeedWarning().c_str());
+    }
 }
 
 void TestSimulationRunner::errorEstimateFollowsEdits()
