@@ -1,6 +1,8 @@
 // springlab-bench: the benchmark programs, one per first argument.
 //   springlab-bench accuracy [--out DIR] [--quick]   error against run time (docs/benchmarks.md)
 //   springlab-bench stability [--out DIR] [--quick]  largest stable time step against theory
+//   springlab-bench throughput [--out DIR] [--quick] run time per step against references and the
+//                                                    memory bandwidth bound
 //   springlab-bench write-references DIR             the reference problems as scene files
 //
 // The plots are painted into images, which needs a QGuiApplication for the fonts but no display:
@@ -9,6 +11,7 @@
 #include "accuracy.h"
 #include "reference_problems.h"
 #include "stability.h"
+#include "throughput.h"
 
 #include "core/io/scene_file.h"
 
@@ -26,6 +29,7 @@ constexpr int kExitBadArguments = 2;
 const char *const kUsage =
     "usage: springlab-bench accuracy [--out DIR] [--quick]\n"
     "       springlab-bench stability [--out DIR] [--quick]\n"
+    "       springlab-bench throughput [--out DIR] [--quick]\n"
     "       springlab-bench write-references DIR\n";
 
 int badArguments(QTextStream &err, const QString &message)
@@ -75,6 +79,27 @@ int stability(const QStringList &arguments, QTextStream &out, QTextStream &err)
     return bench::runStability({parser.value(outOption), parser.isSet(quickOption)}, out);
 }
 
+int throughput(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Run time per step of the core against plain and naive references and the memory bandwidth bound."));
+    parser.addHelpOption();
+    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Folder for the CSV and plot (default: .)."),
+                                       QStringLiteral("DIR"), QStringLiteral("."));
+    const QCommandLineOption quickOption(QStringLiteral("quick"), QStringLiteral("The smallest scenes, short timings: a smoke test only."));
+    parser.addOptions({outOption, quickOption});
+    if (!parser.parse(arguments))
+        return badArguments(err, parser.errorText());
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << parser.helpText();
+        return kExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return badArguments(err, QStringLiteral("throughput takes no file names"));
+    return bench::runThroughput({parser.value(outOption), parser.isSet(quickOption)}, out);
+}
+
 // every reference problem's scene, saved as DIR/<name>.json
 int writeReferences(const QStringList &arguments, QTextStream &out, QTextStream &err)
 {
@@ -116,6 +141,8 @@ int main(int argc, char *argv[])
         return accuracy(arguments, out, err);
     if (name == QStringLiteral("stability"))
         return stability(arguments, out, err);
+    if (name == QStringLiteral("throughput"))
+        return throughput(arguments, out, err);
     if (name == QStringLiteral("write-references"))
         return writeReferences(arguments, out, err);
     if (name == QStringLiteral("--help") || name == QStringLiteral("-h")) {

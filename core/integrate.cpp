@@ -1,3 +1,4 @@
+#include "parallel.h"
 #include "passes.h"
 
 namespace core {
@@ -16,20 +17,22 @@ namespace {
 void symplecticEuler(const Model &model, State &state, double h)
 {
     computeForces(model, state);
-    for (int i : model.freeParticles) {
+    parallelFor(static_cast<int>(model.freeParticles.size()), [&](int f) {
+        const int i = model.freeParticles[static_cast<std::size_t>(f)];
         state.velocity.col(i) += (h * model.invMass[i]) * state.force.col(i);
         state.position.col(i) += h * state.velocity.col(i);
-    }
+    });
 }
 
 // forward Euler: position and velocity both advance from the old state
 void explicitEuler(const Model &model, State &state, double h)
 {
     computeForces(model, state);
-    for (int i : model.freeParticles) {
+    parallelFor(static_cast<int>(model.freeParticles.size()), [&](int f) {
+        const int i = model.freeParticles[static_cast<std::size_t>(f)];
         state.position.col(i) += h * state.velocity.col(i);
         state.velocity.col(i) += (h * model.invMass[i]) * state.force.col(i);
-    }
+    });
 }
 
 // kick-drift-kick: half a velocity step, a full position step, half a velocity step with the

@@ -54,6 +54,23 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
         model->damping[k] = spring.damping;
     }
 
+    // each particle's springs in ascending order: a count per particle, then a running sum
+    model->springOffsets.assign(static_cast<std::size_t>(n) + 1, 0);
+    for (Eigen::Index k = 0; k < springs; ++k) {
+        ++model->springOffsets[static_cast<std::size_t>(model->springA[static_cast<std::size_t>(k)]) + 1];
+        ++model->springOffsets[static_cast<std::size_t>(model->springB[static_cast<std::size_t>(k)]) + 1];
+    }
+    for (std::size_t i = 1; i < model->springOffsets.size(); ++i)
+        model->springOffsets[i] += model->springOffsets[i - 1];
+    model->springEnds.resize(static_cast<std::size_t>(2 * springs));
+    std::vector<int> filled(model->springOffsets.begin(), model->springOffsets.end() - 1);
+    for (Eigen::Index k = 0; k < springs; ++k) {
+        const auto a = static_cast<std::size_t>(model->springA[static_cast<std::size_t>(k)]);
+        const auto b = static_cast<std::size_t>(model->springB[static_cast<std::size_t>(k)]);
+        model->springEnds[static_cast<std::size_t>(filled[a]++)] = static_cast<int>(2 * k);
+        model->springEnds[static_cast<std::size_t>(filled[b]++)] = static_cast<int>(2 * k + 1);
+    }
+
     // planes
     const auto planes = static_cast<Eigen::Index>(scene.planes.size());
     model->planeNormal.resize(3, planes);

@@ -47,6 +47,11 @@ struct Model {
     Eigen::VectorXd restLength;  // m
     Eigen::VectorXd stiffness;   // N/m
     Eigen::VectorXd damping;     // N·s/m
+    // each particle's springs, for gathering their forces: particle i's are
+    // springEnds[springOffsets[i] .. springOffsets[i + 1]), ascending, each 2 k for spring k's end a
+    // and 2 k + 1 for its end b
+    std::vector<int> springOffsets;
+    std::vector<int> springEnds;
 
     // planes n·p = offset, unit normals
     Eigen::Matrix3Xd planeNormal;

@@ -1,3 +1,4 @@
+#include "broad_phase.h"
 #include "passes.h"
 
 #include <cmath>
@@ -53,17 +54,23 @@ void resolvePair(const Model &model, State &state, int i, int j)
 
 }  // namespace
 
-// every pair i < j in a fixed order (brute force; the reference any broad phase must match),
-// then the planes once more: a pair pushed into a plane is put back in front of it, so the
-// floor holds a stack however tall (the pairs may then overlap a little, never the planes)
+// the pairs that overlap at the start of the pass, found by the grid (or by brute force, its
+// reference), resolved in lexicographic order: each is checked again when its turn comes, since
+// the pairs before it move particles. A pair that only comes into contact during the pass waits
+// for the next sub-step. Then the planes once more: a pair pushed into a plane is put back in
+// front of it, so the floor holds a stack however tall (the pairs may then overlap a little,
+// never the planes)
 void collideParticles(const Model &model, State &state)
 {
     if (!model.plan.particleCollisions)
         return;
-    const int n = model.particleCount();
-    for (int i = 0; i < n; ++i)
-        for (int j = i + 1; j < n; ++j)
-            resolvePair(model, state, i, j);
+    ContactGrid &contacts = state.contacts;
+    if (contacts.bruteForce)
+        findContactsBruteForce(model, state.position, contacts.pairs);
+    else
+        findContacts(model, state.position, contacts);
+    for (const ContactPair &pair : contacts.pairs)
+        resolvePair(model, state, pair.i, pair.j);
     collidePlanes(model, state);
 }
 

@@ -10,6 +10,7 @@ namespace core {
 void addGravity(const Model &model, State &state);               // gravity.cpp: m g
 void addDrag(const Model &model, State &state);                  // drag.cpp: -c v
 void addSprings(const Model &model, State &state);               // springs.cpp: damped springs
+void addSpringsReference(const Model &model, State &state);      // springs.cpp: the plain scatter loop
 void addApplied(const Model &model, State &state);               // forces.cpp: forces from outside
 void computeForces(const Model &model, State &state);            // forces.cpp: all of the above
 void accelerations(const Model &model, const State &state, Eigen::Matrix3Xd &out);  // forces.cpp: w F

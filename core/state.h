@@ -2,6 +2,7 @@
 // State: what changes as the simulation runs. Only the thread that steps touches it. Scratch
 // buffers live here so that a step allocates nothing.
 
+#include "contact_grid.h"
 #include "model.h"
 
 #include <Eigen/Core>
@@ -59,6 +60,10 @@ struct State {
 
     // scratch arrays of the integrators (state-sized, made on first use)
     std::array<Eigen::Matrix3Xd, 18> scratchArrays;
+    // scratch of the spring pass: each spring's force on its end a (made on first use)
+    Eigen::Matrix3Xd springForce;
+
+    ContactGrid contacts;  // scratch of the particle-pair pass: its grid and pairs (broad_phase.cpp)
 
     Profile profile;
     std::optional<Blowup> blowup;  // set once the run has blown up; stepping then stops

@@ -1,5 +1,9 @@
-// The damped spring force against values worked out by hand, and Newton's third law.
+// The damped spring force against values worked out by hand, and Newton's third law; the
+// gathered, threaded pass against the plain scatter loop.
+#include "core/generators.h"
 #include "core/passes.h"
+#include "core/step.h"
+#include "core/threads.h"
 #include "scene_builder.h"
 
 #include <QtTest>
@@ -13,6 +17,8 @@ private slots:
     void equalAndOpposite();
     void zeroLengthGivesNoNaN();
     void pinnedEndIsStillPulled();
+    void gatherEqualsThePlainLoopToTheBit();
+    void sameBitsOnOneAndTwoThreads();
 };
 
 void TestSprings::hookeAndDamperByHand_data()
@@ -97,6 +103,67 @@ void TestSprings::pinnedEndIsStillPulled()
     core::addSprings(*sim.model, sim.state);
     QCOMPARE(Eigen::Vector3d(sim.state.force.col(1)), Eigen::Vector3d(-10, 0, 0));
     QCOMPARE(Eigen::Vector3d(sim.state.force.col(0)), Eigen::Vector3d(10, 0, 0));
+}
+
+namespace {
+
+// a cloth of n × n with every spring kind, shuffled a little and moving: each spring stretched,
+// compressed or turning, so that every term of the force is exercised
+core::SceneDesc movingCloth(int n, std::uint32_t seed)
+{
+    core::ClothOptions options;
+    options.cols = options.rows = n;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.settings.particleCollisions = false;  // the springs are what is tested
+    scene.settings.substeps = 2;
+    for (core::ParticleDesc &p : scene.particles)
+        for (int axis = 0; axis < 3; ++axis) {
+            seed = seed * 1664525u + 1013904223u;
+            const double r = static_cast<double>(seed >> 8) / double(1u << 24) - 0.5;
+            p.position[axis] += 0.01 * r;
+            if (!p.pinned)
+                p.velocity[axis] = r;
+        }
+    return scene;
+}
+
+}  // namespace
+
+void TestSprings::gatherEqualsThePlainLoopToTheBit()
+{
+    // small (one thread) and large enough to be split across threads
+    for (int n : {7, 80}) {
+        test::Sim sim = test::compile(movingCloth(n, 11u));
+        sim.state.force.setRandom();  // on top of what is there, as in a step
+        const Eigen::Matrix3Xd start = sim.state.force;
+        core::addSprings(*sim.model, sim.state);
+        const Eigen::Matrix3Xd gathered = sim.state.force;
+        sim.state.force = start;
+        core::addSpringsReference(*sim.model, sim.state);
+        QVERIFY(gathered.cwiseNotEqual(start).any());
+        QVERIFY2(gathered.cwiseEqual(sim.state.force).all(), qPrintable(QString("n = %1").arg(n)));
+    }
+}
+
+void TestSprings::sameBitsOnOneAndTwoThreads()
+{
+    if (core::maxThreadCount() < 2)
+        QSKIP("one hardware thread: nothing to compare");
+    const core::SceneDesc scene = movingCloth(80, 5u);  // 6400 particles, ~38k springs: split
+    const int before = core::threadCount();
+    const auto run = [&](int threads) {
+        core::setThreadCount(threads);
+        test::Sim sim = test::compile(scene);
+        for (int i = 0; i < 20; ++i)
+            core::step(*sim.model, sim.state);
+        return sim.state;
+    };
+    const core::State one = run(1);
+    const core::State two = run(2);
+    core::setThreadCount(before);
+    QCOMPARE(core::threadCount(), before);
+    QVERIFY(one.position.cwiseEqual(two.position).all());
+    QVERIFY(one.velocity.cwiseEqual(two.velocity).all());
 }
 
 QTEST_APPLESS_MAIN(TestSprings)

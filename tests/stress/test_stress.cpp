@@ -274,8 +274,8 @@ void TestStress::pyramidStaysStacked()
     // a pyramid of 210 particles on a base of 20 between two walls: after 5 s every particle is
     // above the floor, between the walls and in its plane, nothing moves fast, the top stays
     // above half its height and over the base. Without friction and with one projection pass per
-    // sub-step the pyramid slumps and leans (the top settles near 2.0 m of 3.39 m, 0.5 m to one
-    // side; docs/physics.md), and its upper rows slide down past lower ones: that the rows stay
+    // sub-step the pyramid slumps and may lean (the top settles near 2.0 m of 3.39 m;
+    // docs/physics.md), and its upper rows slide down past lower ones: that the rows stay
     // in order (each row's mean height above the one below) is an expected failure until the
     // contacts are iterated
     test::Sim sim = test::compile(loadStressScene(QStringLiteral("pyramid-20")));

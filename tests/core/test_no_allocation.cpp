@@ -1,0 +1,141 @@
+// No heap allocation inside a step, once its scratch arrays exist: malloc itself is counted
+// (Eigen allocates through malloc, not operator new), for every integrator on a scene that runs
+// every pass, small and large enough to be split across threads.
+#include "core/generators.h"
+#include "core/integrator.h"
+#include "core/step.h"
+#include "scene_builder.h"
+
+#include <QtTest>
+#include <atomic>
+#include <cstdlib>
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define SPRINGLAB_SANITIZED 1  // the sanitizers own malloc: these counters cannot take it over
+#endif
+
+namespace {
+
+std::atomic<bool> g_counting{false};
+std::atomic<long> g_allocations{0};
+
+void count()
+{
+    if (g_counting.load(std::memory_order_relaxed))
+        g_allocations.fetch_add(1, std::memory_order_relaxed);
+}
+
+}  // namespace
+
+#ifndef SPRINGLAB_SANITIZED
+// glibc's own allocator under the usual names, counted: every allocation of the process (Eigen,
+// the standard library, OpenMP) goes through these
+extern "C" {
+void *__libc_malloc(std::size_t size);
+void *__libc_calloc(std::size_t count, std::size_t size);
+void *__libc_realloc(void *pointer, std::size_t size);
+void *__libc_memalign(std::size_t alignment, std::size_t size);
+
+void *malloc(std::size_t size)
+{
+    count();
+    return __libc_malloc(size);
+}
+void *calloc(std::size_t n, std::size_t size)
+{
+    count();
+    return __libc_calloc(n, size);
+}
+void *realloc(void *pointer, std::size_t size)
+{
+    count();
+    return __libc_realloc(pointer, size);
+}
+void *memalign(std::size_t alignment, std::size_t size)
+{
+    count();
+    return __libc_memalign(alignment, size);
+}
+void *aligned_alloc(std::size_t alignment, std::size_t size)
+{
+    count();
+    return __libc_memalign(alignment, size);
+}
+int posix_memalign(void **out, std::size_t alignment, std::size_t size)
+{
+    count();
+    *out = __libc_memalign(alignment, size);
+    return *out ? 0 : 12;  // ENOMEM
+}
+}
+#endif
+
+class TestNoAllocation : public QObject {
+    Q_OBJECT
+
+private slots:
+    void counterSeesAnAllocation();
+    void stepAllocatesNothing_data();
+    void stepAllocatesNothing();
+};
+
+void TestNoAllocation::counterSeesAnAllocation()
+{
+#ifdef SPRINGLAB_SANITIZED
+    QSKIP("built with a sanitizer that replaces malloc");
+#endif
+    // the check can fail: an Eigen array made while counting is seen
+    g_allocations = 0;
+    g_counting = true;
+    Eigen::Matrix3Xd made(3, 1000);
+    made.setZero();
+    g_counting = false;
+    QVERIFY(g_allocations.load() >= 1);
+    QCOMPARE(made.sum(), 0.0);
+}
+
+void TestNoAllocation::stepAllocatesNothing_data()
+{
+    QTest::addColumn<int>("integrator");
+    QTest::addColumn<int>("size");
+    for (core::Integrator integrator : core::kIntegrators)
+        for (int size : {6, 70}) {
+            const std::string_view name = core::integratorName(integrator);
+            QTest::addRow("%.*s, %d × %d", int(name.size()), name.data(), size, size) << int(integrator) << size;
+        }
+}
+
+void TestNoAllocation::stepAllocatesNothing()
+{
+#ifdef SPRINGLAB_SANITIZED
+    QSKIP("built with a sanitizer that replaces malloc");
+#endif
+    QFETCH(int, integrator);
+    QFETCH(int, size);
+    // a cloth over a floor with every pass on: gravity, drag, springs, an applied force, planes
+    // and particle contacts
+    core::ClothOptions options;
+    options.rows = options.cols = size;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.settings.integrator = static_cast<core::Integrator>(integrator);
+    scene.settings.viscosity = 0.01;
+    scene.settings.particleCollisions = size <= 6;  // all pairs at 4900 particles would be slow
+    scene.planes = {core::PlaneDesc{{0.0, 1.0, 0.0}, 0.99}};
+    test::Sim sim = test::compile(scene);
+    core::setAppliedForce(sim.state, 1, Eigen::Vector3d(0.0, 0.1, 0.0));
+
+    // the first steps make the scratch arrays; after that, nothing
+    for (int i = 0; i < 2; ++i)
+        QVERIFY(core::step(*sim.model, sim.state));
+    g_allocations = 0;
+    g_counting = true;
+    bool ok = true;
+    for (int i = 0; i < 2; ++i)
+        ok = core::step(*sim.model, sim.state) && ok;
+    g_counting = false;
+    QVERIFY(ok);
+    QCOMPARE(g_allocations.load(), 0L);
+}
+
+QTEST_APPLESS_MAIN(TestNoAllocation)
+#include "test_no_allocation.moc"
