@@ -5,7 +5,10 @@
 // indented style puts every number of every vector on a line of its own, which makes a cloth
 // unreadable. Numbers are written with std::to_chars, whose output is the shortest text that
 // reads back as the same double. Qt's parser also turns a "-0" literal into +0; json_scan.h
-// finds those literals so the Reader can give the sign back.
+// finds those literals so the Reader can give the sign back. The limits (io::LoadLimits) come first:
+// the size before the file is read, the nesting depth by one pass over the bytes before Qt parses
+// them, the item counts before any item is made, so a huge or hostile file gets a message instead
+// of exhausting memory.
 
 #include "scene_file.h"
 
@@ -20,6 +23,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
+#include <QLocale>
 #include <QSaveFile>
 
 #include <algorithm>
@@ -80,7 +84,8 @@ QString knownIntegrators()
 // walks a parsed document into a SceneDesc, stopping at the first problem
 class Reader {
 public:
-    Reader(const QString &source, const QByteArray &json) : m_source(source)
+    Reader(const QString &source, const QByteArray &json, const LoadLimits &limits)
+        : m_source(source), m_limits(limits)
     {
         // only a file with a "-0" in it can hold a negative zero
         if (json.contains("-0"))
@@ -98,6 +103,17 @@ private:
         if (m_error.isEmpty())
             m_error = path.isEmpty() ? m_source + u": "_s + reason : m_source + u": "_s + path + u": "_s + reason;
         return false;
+    }
+
+    // a list longer than its limit is refused before anything is made for it
+    bool withinLimit(const QJsonArray &array, const QString &path, qsizetype limit)
+    {
+        if (array.size() <= limit)
+            return true;
+        return fail(path, QStringLiteral("too many %1: %2, more than the limit of %3")
+                              .arg(path)
+                              .arg(array.size())
+                              .arg(limit));
     }
 
     bool expected(const QString &path, const QString &what, const QJsonValue &got)
@@ -202,6 +218,7 @@ private:
     bool readPlanes(const QJsonObject &root, std::vector<core::PlaneDesc> &planes);
 
     QString m_source;
+    LoadLimits m_limits;
     QString m_error;
     QStringList m_warnings;
     QSet<QString> m_negativeZeros;
@@ -274,7 +291,8 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
 bool Reader::readParticles(const QJsonObject &root, std::vector<core::ParticleDesc> &particles)
 {
     QJsonArray array;
-    if (!member(root, {}, QLatin1String("particles"), Need::Required, array))
+    if (!member(root, {}, QLatin1String("particles"), Need::Required, array) ||
+        !withinLimit(array, QStringLiteral("particles"), m_limits.particles))
         return false;
     particles.resize(static_cast<std::size_t>(array.size()));
     for (qsizetype i = 0; i < array.size(); ++i) {
@@ -298,7 +316,8 @@ bool Reader::readParticles(const QJsonObject &root, std::vector<core::ParticleDe
 bool Reader::readSprings(const QJsonObject &root, core::SceneDesc &scene)
 {
     QJsonArray array;
-    if (!member(root, {}, QLatin1String("springs"), Need::Required, array))
+    if (!member(root, {}, QLatin1String("springs"), Need::Required, array) ||
+        !withinLimit(array, QStringLiteral("springs"), m_limits.springs))
         return false;
     scene.springs.resize(static_cast<std::size_t>(array.size()));
     for (qsizetype i = 0; i < array.size(); ++i) {
@@ -338,7 +357,8 @@ bool Reader::readSprings(const QJsonObject &root, core::SceneDesc &scene)
 bool Reader::readPlanes(const QJsonObject &root, std::vector<core::PlaneDesc> &planes)
 {
     QJsonArray array;
-    if (!member(root, {}, QLatin1String("planes"), Need::Required, array))
+    if (!member(root, {}, QLatin1String("planes"), Need::Required, array) ||
+        !withinLimit(array, QStringLiteral("planes"), m_limits.planes))
         return false;
     planes.resize(static_cast<std::size_t>(array.size()));
     for (qsizetype i = 0; i < array.size(); ++i) {
@@ -385,6 +405,57 @@ bool isWordChar(char c)
            c == '.';
 }
 
+// "at byte 812, line 3, column 40" for an offset into the text
+QString location(const QByteArray &json, qsizetype offset)
+{
+    const qsizetype lineStart = json.lastIndexOf('\n', offset - 1) + 1;
+    return QStringLiteral("at byte %1, line %2, column %3")
+        .arg(offset)
+        .arg(json.left(offset).count('\n') + 1)
+        .arg(offset - lineStart + 1);
+}
+
+// the offset of the first bracket that has more than maxDepth arrays and objects open at once, or
+// -1; one pass over the bytes, so that a deep file is refused before Qt's parser recurses into it
+qsizetype tooDeepAt(const QByteArray &json, int maxDepth)
+{
+    const char *text = json.constData();
+    int depth = 0;
+    bool inString = false;
+    bool escaped = false;
+    for (qsizetype i = 0; i < json.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > maxDepth)
+                return i;
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return -1;
+}
+
+// "1073741824 bytes (1 GiB)"; the plain count alone when it is small
+QString byteCount(qint64 bytes)
+{
+    const QString plain = QString::number(bytes) + u" bytes"_s;
+    return bytes < 1024 ? plain : plain + u" ("_s + QLocale::c().formattedDataSize(bytes, 0) + u")"_s;
+}
+
+QString tooLarge(const QString &source, qint64 size, qint64 limit)
+{
+    return source + u": the file is too large: "_s + byteCount(size) + u", more than the limit of "_s + byteCount(limit);
+}
+
 // the message for text QJsonDocument could not parse, with the JSON path it broke off in
 QString syntaxError(const QByteArray &json, const QJsonParseError &error, const QString &source)
 {
@@ -392,12 +463,7 @@ QString syntaxError(const QByteArray &json, const QJsonParseError &error, const 
         return source + u": the file is empty (expected a JSON object)"_s;
 
     const qsizetype offset = std::clamp<qsizetype>(error.offset, 0, json.size());
-    const qsizetype lineStart = json.lastIndexOf('\n', offset - 1) + 1;
-    const QString where = QStringLiteral("%1 at byte %2, line %3, column %4")
-                              .arg(error.errorString())
-                              .arg(offset)
-                              .arg(json.left(offset).count('\n') + 1)
-                              .arg(offset - lineStart + 1);
+    const QString where = error.errorString() + u' ' + location(json, offset);
     QString reason = u"not valid JSON ("_s + where + u")"_s;
 
     // an illegal number: most often one too large for a double, or a NaN or infinity
@@ -510,9 +576,24 @@ void appendList(QByteArray &out, const char *key, const std::vector<T> &items, b
 
 }  // namespace
 
-LoadResult parseScene(const QByteArray &json, const QString &sourceName)
+LoadResult parseScene(const QByteArray &json, const QString &sourceName, const LoadLimits &limits)
 {
     LoadResult result;
+
+    // limits first: size, then depth, both before the parser builds anything
+    if (json.size() > limits.fileBytes) {
+        result.error = tooLarge(sourceName, json.size(), limits.fileBytes);
+        return result;
+    }
+    if (const qsizetype offset = tooDeepAt(json, limits.nestingDepth); offset >= 0) {
+        const QString path = scanJson(json, offset).pathAtStop;
+        const QString reason = QStringLiteral("nested too deeply: more than the limit of %1 levels of arrays and "
+                                              "objects (%2)")
+                                   .arg(limits.nestingDepth)
+                                   .arg(location(json, offset));
+        result.error = path.isEmpty() ? sourceName + u": "_s + reason : sourceName + u": "_s + path + u": "_s + reason;
+        return result;
+    }
 
     // syntax
     QJsonParseError parseError{};
@@ -528,7 +609,7 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName)
     }
 
     // structure, types and values; the scene is handed out only when all of it is right
-    Reader reader(sourceName, json);
+    Reader reader(sourceName, json, limits);
     core::SceneDesc scene;
     const bool ok = reader.readScene(document.object(), scene);
     result.warnings = reader.warnings();
@@ -539,7 +620,7 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName)
     return result;
 }
 
-LoadResult loadScene(const QString &path)
+LoadResult loadScene(const QString &path, const LoadLimits &limits)
 {
     const QString shown = QDir::toNativeSeparators(path);
     QFile file(path);
@@ -549,14 +630,39 @@ LoadResult loadScene(const QString &path)
         result.error = shown + u": cannot open: "_s + explainFailure(path, false, errno, file.errorString());
         return result;
     }
+
+    // a file over the size limit is refused unread
+    if (!file.isSequential() && file.size() > limits.fileBytes) {
+        LoadResult result;
+        result.error = tooLarge(shown, file.size(), limits.fileBytes);
+        return result;
+    }
+
+    // a device with no size (a pipe, /dev/zero) is read in pieces, stopping one byte past the limit
     errno = 0;
-    const QByteArray json = file.readAll();
+    QByteArray json;
+    if (file.isSequential()) {
+        constexpr qint64 kPiece = 1 << 16;
+        while (json.size() <= limits.fileBytes) {
+            const QByteArray piece = file.read(std::min(kPiece, limits.fileBytes + 1 - json.size()));
+            if (piece.isEmpty())
+                break;
+            json += piece;
+        }
+    } else {
+        json = file.readAll();
+    }
     if (file.error() != QFileDevice::NoError) {
         LoadResult result;
         result.error = shown + u": cannot read: "_s + explainFailure(path, false, errno, file.errorString());
         return result;
     }
-    return parseScene(json, shown);
+    if (file.isSequential() && json.size() > limits.fileBytes) {
+        LoadResult result;
+        result.error = shown + u": the file is too large: more than the limit of "_s + byteCount(limits.fileBytes);
+        return result;
+    }
+    return parseScene(json, shown, limits);
 }
 
 QByteArray sceneToJson(const core::SceneDesc &scene)

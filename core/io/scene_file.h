@@ -15,6 +15,23 @@ namespace io {
 
 inline constexpr int kSceneFormatVersion = 1;
 
+// what a scene file may hold before it is refused with a message, so that a huge or hostile file
+// cannot exhaust memory; generous for real scenes (docs/scene-format.md says why these numbers)
+inline constexpr qint64 kMaxSceneFileBytes = qint64(1) << 30;  // 1 GiB: about 5 million particles as saved
+inline constexpr qsizetype kMaxParticles = 10'000'000;
+inline constexpr qsizetype kMaxSprings = 100'000'000;          // room for a cloth's ~6 springs per particle
+inline constexpr qsizetype kMaxPlanes = 10'000;
+inline constexpr int kMaxNestingDepth = 32;  // arrays and objects open at once; the format itself needs 4
+
+// the limits a load checks; a caller (or a test) may pass smaller ones
+struct LoadLimits {
+    qint64 fileBytes = kMaxSceneFileBytes;
+    qsizetype particles = kMaxParticles;
+    qsizetype springs = kMaxSprings;
+    qsizetype planes = kMaxPlanes;
+    int nestingDepth = kMaxNestingDepth;
+};
+
 struct LoadResult {
     std::optional<core::SceneDesc> scene;  // set on success
     QString error;                         // set on failure: "FILE: particles[3].mass: must be ..."
@@ -28,10 +45,10 @@ struct SaveResult {
 };
 
 // reads and validates a scene file
-LoadResult loadScene(const QString &path);
+LoadResult loadScene(const QString &path, const LoadLimits &limits = {});
 
 // the same from bytes in memory; sourceName stands for the file in messages
-LoadResult parseScene(const QByteArray &json, const QString &sourceName);
+LoadResult parseScene(const QByteArray &json, const QString &sourceName, const LoadLimits &limits = {});
 
 // the scene as indented JSON with every key written out
 QByteArray sceneToJson(const core::SceneDesc &scene);

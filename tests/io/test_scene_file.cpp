@@ -1,6 +1,7 @@
 // Scene files: every bad-file case gives one message naming the file, the JSON path and the
 // reason; defaults and unknown keys; save then load gives back the same bits, for hand-made
-// scenes and for every example in resources/scenes; saving is atomic.
+// scenes and for every example in resources/scenes; saving is atomic; files past a size, count or
+// nesting limit are refused with the limit named, files at the limits load.
 
 #include "core/io/scene_file.h"
 #include "core/validate.h"
@@ -178,6 +179,24 @@ QByteArray readAll(const QString &path)
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
+// kBase with an unknown key whose value brings the document to `depth` arrays and objects open at
+// once (the top-level object is the first)
+QByteArray nestedTo(int depth)
+{
+    const QByteArray value = QByteArray(depth - 1, '[') + QByteArray(depth - 1, ']');
+    return QByteArray(kBase).replace("\"name\": \"base\",", "\"name\": \"base\", \"extra\": " + value + ',');
+}
+
+io::LoadLimits limitsWith(qint64 fileBytes, qsizetype particles, qsizetype springs, qsizetype planes)
+{
+    io::LoadLimits limits;
+    limits.fileBytes = fileBytes;
+    limits.particles = particles;
+    limits.springs = springs;
+    limits.planes = planes;
+    return limits;
+}
+
 bool writeAll(const QString &path, const QByteArray &data)
 {
     QFile file(path);
@@ -185,6 +204,8 @@ bool writeAll(const QString &path, const QByteArray &data)
 }
 
 }  // namespace
+
+Q_DECLARE_METATYPE(io::LoadLimits)
 
 class TestSceneFile : public QObject {
     Q_OBJECT
@@ -209,6 +230,10 @@ private slots:
     void saveWritesEveryKey();
     void saveFailureKeepsOldFile_data();
     void saveFailureKeepsOldFile();
+    void limits_data();
+    void limits();
+    void oversizedFileNotRead();
+    void endlessDeviceRefused();
 };
 
 void TestSceneFile::baseIsValid()
@@ -703,6 +728,97 @@ void TestSceneFile::saveFailureKeepsOldFile()
         QCOMPARE(readAll(path), old);
     if (QFileInfo(path).absoluteDir().exists())
         QCOMPARE(QDir(QFileInfo(path).absolutePath()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot), before);
+}
+
+void TestSceneFile::limits_data()
+{
+    // kBase holds 3 particles, 2 springs and 1 plane; "" for error: accepted
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<io::LoadLimits>("limits");
+    QTest::addColumn<QString>("error");
+
+    const qint64 size = kBase.size();
+    const QString over = QStringLiteral("dir/s.json: the file is too large: %1 bytes, more than the limit of %2 bytes");
+    QTest::newRow("size at the limit") << kBase << limitsWith(size, 3, 2, 1) << QString();
+    QTest::newRow("size one over") << kBase << limitsWith(size - 1, 3, 2, 1) << over.arg(size).arg(size - 1);
+
+    // counts, each exactly at its limit and one over
+    QTest::newRow("particles one over") << kBase << limitsWith(size, 2, 2, 1)
+                                        << QStringLiteral("dir/s.json: particles: too many particles: 3, more than the limit of 2");
+    QTest::newRow("springs one over") << kBase << limitsWith(size, 3, 1, 1)
+                                      << QStringLiteral("dir/s.json: springs: too many springs: 2, more than the limit of 1");
+    QTest::newRow("planes one over") << kBase << limitsWith(size, 3, 2, 0)
+                                     << QStringLiteral("dir/s.json: planes: too many planes: 1, more than the limit of 0");
+
+    // nesting, with the default limit; brackets inside strings do not count
+    const QString deep = QStringLiteral("nested too deeply: more than the limit of %1 levels of arrays and objects")
+                             .arg(io::kMaxNestingDepth);
+    QTest::newRow("depth at the limit") << nestedTo(io::kMaxNestingDepth) << io::LoadLimits{} << QString();
+    const QString deepError = u"dir/s.json: extra"_s + QString(u"[0]"_s).repeated(io::kMaxNestingDepth - 1) + u": "_s +
+                              deep + u" (at byte "_s;
+    QTest::newRow("depth one over") << nestedTo(io::kMaxNestingDepth + 1) << io::LoadLimits{} << deepError;
+    QTest::newRow("deeper than Qt's own limit") << nestedTo(100000) << io::LoadLimits{} << deepError;
+    QTest::newRow("brackets in a string") << QByteArray(kBase).replace("\"base\"", '"' + QByteArray(100, '[') + '"')
+                                          << io::LoadLimits{} << QString();
+}
+
+void TestSceneFile::limits()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(io::LoadLimits, limits);
+    QFETCH(QString, error);
+
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("dir/s.json"), limits);
+    if (error.isEmpty()) {
+        QVERIFY2(result.ok(), qPrintable(result.error));
+        return;
+    }
+    QVERIFY(!result.ok());
+    QVERIFY2(result.error.startsWith(error), qPrintable(result.error));
+}
+
+void TestSceneFile::oversizedFileNotRead()
+{
+    // a sparse file one byte over the default limit: refused from its size, so the test needs
+    // neither the disk nor the memory that reading it would
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("huge.json"));
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        if (!file.resize(io::kMaxSceneFileBytes + 1))
+            QSKIP("this file system cannot make a sparse file of the limit's size");
+    }
+    const io::LoadResult huge = io::loadScene(path);
+    QVERIFY(!huge.ok());
+    QCOMPARE(huge.error, QDir::toNativeSeparators(path) +
+                             u": the file is too large: 1073741825 bytes (1 GiB), more than the limit of "
+                             u"1073741824 bytes (1 GiB)"_s);
+
+    // a real file exactly at a limit loads; one byte under it does not
+    QVERIFY(writeAll(path, kBase));
+    io::LoadLimits limits;
+    limits.fileBytes = kBase.size();
+    const io::LoadResult atLimit = io::loadScene(path, limits);
+    QVERIFY2(atLimit.ok(), qPrintable(atLimit.error));
+    limits.fileBytes = kBase.size() - 1;
+    const io::LoadResult over = io::loadScene(path, limits);
+    QVERIFY(!over.ok());
+    QVERIFY2(over.error.contains(QStringLiteral("more than the limit of %1 bytes").arg(limits.fileBytes)),
+             qPrintable(over.error));
+}
+
+void TestSceneFile::endlessDeviceRefused()
+{
+    // a device with no size and no end is read only up to the limit
+    if (!QFile::exists(QStringLiteral("/dev/zero")))
+        QSKIP("no /dev/zero here");
+    io::LoadLimits limits;
+    limits.fileBytes = 1000;
+    const io::LoadResult result = io::loadScene(QStringLiteral("/dev/zero"), limits);
+    QVERIFY(!result.ok());
+    QCOMPARE(result.error, u"/dev/zero: the file is too large: more than the limit of 1000 bytes"_s);
 }
 
 QTEST_GUILESS_MAIN(TestSceneFile)

@@ -1,0 +1,136 @@
+// Determinism: a chaotic run (a net dropped onto a pile of balls on a floor: springs, particle and
+// plane contacts) hashed bit for bit after 1000 steps and compared with a fixed value.
+//
+// Changing kGoldenHash on purpose means updating it on purpose, in the same change that moves it,
+// saying why. What may legitimately move it: a change to the physics or its order of operations
+// (forces, integrators, collision response, the order pairs are found or resolved in), to the
+// generators or the defaults this scene uses, or to this scene. What must not: thread count,
+// build type, compiler flags, the machine, or running it again; the design keeps -ffast-math and
+// FMA contraction out so that none of those can.
+
+#include "core/generators.h"
+#include "core/step.h"
+#include "scene_builder.h"
+
+#include <QtTest>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+using namespace Qt::Literals::StringLiterals;
+
+namespace {
+
+// the expected hash of kSteps steps of goldenScene(); see the note at the top before changing it
+constexpr std::uint64_t kGoldenHash = 0xe656d096402a9836ULL;
+constexpr int kSteps = 1000;
+
+// a 10 × 10 net, free at every edge, falling onto a 5 × 4 × 5 pile of balls under its middle on the
+// floor y = 0
+core::SceneDesc goldenScene()
+{
+    core::NetOptions net;
+    net.rows = 10;
+    net.cols = 10;
+    net.spacing = 0.12;   // m
+    net.height = 1.0;     // m
+    net.mass = 0.05;      // kg
+    net.radius = 0.05;    // m
+    net.stiffness = 200;  // N/m
+    net.damping = 0.05;   // N·s/m
+    net.pinEdges = false;
+    core::SceneDesc scene = core::makeNet(net);
+    scene.name = "golden";
+    scene.settings.timeStep = 0.002;  // s
+    scene.settings.restitution = 0.8;
+    scene.settings.planeCollisions = true;
+    scene.settings.particleCollisions = true;
+    scene.planes = {core::PlaneDesc{Eigen::Vector3d(0.0, 1.0, 0.0), 0.0}};
+
+    // the pile, each ball offset by a few millimetres in a fixed pattern so that nothing is symmetric
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 4; ++j)
+            for (int k = 0; k < 5; ++k) {
+                const int n = (i * 4 + j) * 5 + k;
+                const Eigen::Vector3d jitter(0.001 * (n % 7), 0.0005 * (n % 3), 0.001 * (n % 5));
+                const Eigen::Vector3d at(-0.22 + 0.11 * i, 0.06 + 0.11 * j, -0.22 + 0.11 * k);
+                scene.particles.push_back(test::particle(at + jitter, Eigen::Vector3d::Zero(), 0.1, 0.05));
+            }
+    return scene;
+}
+
+// FNV-1a, 64 bits, over the bytes of every position and velocity component, least significant first
+std::uint64_t hashState(const core::State &state)
+{
+    std::uint64_t hash = 0xcbf29ce484222325ULL;
+    auto add = [&hash](double value) {
+        const auto bits = std::bit_cast<std::uint64_t>(value);
+        for (int byte = 0; byte < 8; ++byte) {
+            hash ^= (bits >> (8 * byte)) & 0xffU;
+            hash *= 0x100000001b3ULL;
+        }
+    };
+    for (Eigen::Index i = 0; i < state.position.size(); ++i)
+        add(state.position.data()[i]);
+    for (Eigen::Index i = 0; i < state.velocity.size(); ++i)
+        add(state.velocity.data()[i]);
+    return hash;
+}
+
+// the hash after kSteps steps, or 0 when the run blew up
+std::uint64_t runAndHash(const core::SceneDesc &scene)
+{
+    test::Sim sim = test::compile(scene);
+    for (int i = 0; i < kSteps; ++i)
+        if (!core::step(*sim.model, sim.state))
+            return 0;
+    return hashState(sim.state);
+}
+
+QString hex(std::uint64_t value)
+{
+    return QStringLiteral("0x%1").arg(value, 16, 16, QLatin1Char('0'));
+}
+
+}  // namespace
+
+class TestGoldenHash : public QObject {
+    Q_OBJECT
+
+private slots:
+    void matchesGolden();
+    void sameRunSameHash();
+    void oneUlpChangesHash();
+};
+
+void TestGoldenHash::matchesGolden()
+{
+    const std::uint64_t hash = runAndHash(goldenScene());
+    QVERIFY2(hash != 0, "the golden run blew up");
+    QVERIFY2(hash == kGoldenHash, qPrintable(u"got "_s + hex(hash) + u", expected "_s + hex(kGoldenHash)));
+}
+
+void TestGoldenHash::sameRunSameHash()
+{
+    const core::SceneDesc scene = goldenScene();
+    const std::uint64_t first = runAndHash(scene);
+    QVERIFY(first != 0);
+    QCOMPARE(runAndHash(scene), first);
+}
+
+void TestGoldenHash::oneUlpChangesHash()
+{
+    // one ulp on one ball's x: the hash sees it, so the golden comparison can fail
+    const core::SceneDesc scene = goldenScene();
+    core::SceneDesc nudged = scene;
+    double &x = nudged.particles.back().position.x();
+    x = std::nextafter(x, 1.0);
+    QVERIFY(nudged.particles.back().position.x() != scene.particles.back().position.x());
+    const std::uint64_t hash = runAndHash(nudged);
+    QVERIFY(hash != 0);
+    QVERIFY2(hash != runAndHash(scene), qPrintable(hex(hash)));
+}
+
+QTEST_GUILESS_MAIN(TestGoldenHash)
+#include "test_golden_hash.moc"
