@@ -38,14 +38,17 @@ int badArguments(QTextStream &err, const QString &message)
     return kExitBadArguments;
 }
 
-int accuracy(const QStringList &arguments, QTextStream &out, QTextStream &err)
+// a mode that takes --out DIR and --quick and nothing else: parses them and calls
+// run(outDir, quick)
+template <typename Run>
+int sweepMode(const QStringList &arguments, QTextStream &out, QTextStream &err, const QString &mode,
+              const QString &description, const QString &outHelp, const QString &quickHelp, Run run)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Error against run time for every integrator on the reference problems."));
+    parser.setApplicationDescription(description);
     parser.addHelpOption();
-    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Folder for the CSVs and plots (default: .)."),
-                                       QStringLiteral("DIR"), QStringLiteral("."));
-    const QCommandLineOption quickOption(QStringLiteral("quick"), QStringLiteral("A tiny sweep: a smoke test only."));
+    const QCommandLineOption outOption(QStringLiteral("out"), outHelp, QStringLiteral("DIR"), QStringLiteral("."));
+    const QCommandLineOption quickOption(QStringLiteral("quick"), quickHelp);
     parser.addOptions({outOption, quickOption});
     if (!parser.parse(arguments))
         return badArguments(err, parser.errorText());
@@ -54,50 +57,37 @@ int accuracy(const QStringList &arguments, QTextStream &out, QTextStream &err)
         return kExitOk;
     }
     if (!parser.positionalArguments().isEmpty())
-        return badArguments(err, QStringLiteral("accuracy takes no file names"));
-    return bench::runAccuracy({parser.value(outOption), parser.isSet(quickOption)}, out);
+        return badArguments(err, QStringLiteral("%1 takes no file names").arg(mode));
+    return run(parser.value(outOption), parser.isSet(quickOption));
+}
+
+int accuracy(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    return sweepMode(arguments, out, err, QStringLiteral("accuracy"),
+                     QStringLiteral("Error against run time for every integrator on the reference problems."),
+                     QStringLiteral("Folder for the CSVs and plots (default: .)."),
+                     QStringLiteral("A tiny sweep: a smoke test only."),
+                     [&](const QString &dir, bool quick) { return bench::runAccuracy({dir, quick}, out); });
 }
 
 int stability(const QStringList &arguments, QTextStream &out, QTextStream &err)
 {
-    QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QStringLiteral("Largest stable time step of the explicit integrators on spring chains, against theory."));
-    parser.addHelpOption();
-    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Folder for the CSV and plot (default: .)."),
-                                       QStringLiteral("DIR"), QStringLiteral("."));
-    const QCommandLineOption quickOption(QStringLiteral("quick"), QStringLiteral("A small grid, short trials: a smoke test only."));
-    parser.addOptions({outOption, quickOption});
-    if (!parser.parse(arguments))
-        return badArguments(err, parser.errorText());
-    if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
-        return kExitOk;
-    }
-    if (!parser.positionalArguments().isEmpty())
-        return badArguments(err, QStringLiteral("stability takes no file names"));
-    return bench::runStability({parser.value(outOption), parser.isSet(quickOption)}, out);
+    return sweepMode(
+        arguments, out, err, QStringLiteral("stability"),
+        QStringLiteral("Largest stable time step of the explicit integrators on spring chains, against theory."),
+        QStringLiteral("Folder for the CSV and plot (default: .)."),
+        QStringLiteral("A small grid, short trials: a smoke test only."),
+        [&](const QString &dir, bool quick) { return bench::runStability({dir, quick}, out); });
 }
 
 int throughput(const QStringList &arguments, QTextStream &out, QTextStream &err)
 {
-    QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
-        "Run time per step of the core against plain and naive references and the memory bandwidth bound."));
-    parser.addHelpOption();
-    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Folder for the CSV and plot (default: .)."),
-                                       QStringLiteral("DIR"), QStringLiteral("."));
-    const QCommandLineOption quickOption(QStringLiteral("quick"), QStringLiteral("The smallest scenes, short timings: a smoke test only."));
-    parser.addOptions({outOption, quickOption});
-    if (!parser.parse(arguments))
-        return badArguments(err, parser.errorText());
-    if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
-        return kExitOk;
-    }
-    if (!parser.positionalArguments().isEmpty())
-        return badArguments(err, QStringLiteral("throughput takes no file names"));
-    return bench::runThroughput({parser.value(outOption), parser.isSet(quickOption)}, out);
+    return sweepMode(
+        arguments, out, err, QStringLiteral("throughput"),
+        QStringLiteral("Run time per step of the core against plain and naive references and the memory bandwidth bound."),
+        QStringLiteral("Folder for the CSV and plot (default: .)."),
+        QStringLiteral("The smallest scenes, short timings: a smoke test only."),
+        [&](const QString &dir, bool quick) { return bench::runThroughput({dir, quick}, out); });
 }
 
 // every reference problem's scene, saved as DIR/<name>.json

@@ -7,6 +7,8 @@
 #include "core/io/scene_file.h"
 
 #include <QDir>
+#include "program_run.h"
+
 #include <QFile>
 #include <QImage>
 #include <QProcess>
@@ -24,26 +26,11 @@ const QStringList kProblems{u"oscillator"_s, u"bounce"_s, u"head-on"_s, u"chain"
 const QStringList kIntegrators{u"symplectic-euler"_s, u"explicit-euler"_s, u"velocity-verlet"_s,
                                u"rk4"_s,              u"implicit-euler"_s, u"adaptive-rk45"_s};
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
+using Run = test::ProgramRun;
 
 Run runBench(const QStringList &arguments)
 {
-    QProcess process;
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
-    process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(SPRINGLAB_BENCH), arguments);
-    Run run;
-    if (!process.waitForFinished(600000) || process.exitStatus() != QProcess::NormalExit)
-        return run;
-    run.exitCode = process.exitCode();
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
+    return test::runProgram(QStringLiteral(SPRINGLAB_BENCH), arguments);
 }
 
 QByteArray readAll(const QString &path)

@@ -6,6 +6,8 @@
 
 #include "bench/stability_plot.h"
 
+#include "program_run.h"
+
 #include <QFile>
 #include <QImage>
 #include <QProcess>
@@ -22,26 +24,11 @@ namespace {
 
 const QStringList kIntegrators{u"symplectic-euler"_s, u"explicit-euler"_s, u"velocity-verlet"_s, u"rk4"_s};
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
+using Run = test::ProgramRun;
 
 Run runBench(const QStringList &arguments)
 {
-    QProcess process;
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
-    process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(SPRINGLAB_BENCH), arguments);
-    Run run;
-    if (!process.waitForFinished(600000) || process.exitStatus() != QProcess::NormalExit)
-        return run;
-    run.exitCode = process.exitCode();
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
+    return test::runProgram(QStringLiteral(SPRINGLAB_BENCH), arguments);
 }
 
 double number(const QByteArray &text)

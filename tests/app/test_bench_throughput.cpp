@@ -6,6 +6,8 @@
 
 #include "bench/throughput_plot.h"
 
+#include "program_run.h"
+
 #include <QFile>
 #include <QImage>
 #include <QProcess>
@@ -21,26 +23,11 @@ namespace {
 
 const QList<QByteArray> kClothVariants{"springlab", "plain", "naive"};
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
+using Run = test::ProgramRun;
 
 Run runBench(const QStringList &arguments)
 {
-    QProcess process;
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.insert(u"QT_QPA_PLATFORM"_s, u"offscreen"_s);
-    process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(SPRINGLAB_BENCH), arguments);
-    Run run;
-    if (!process.waitForFinished(600000) || process.exitStatus() != QProcess::NormalExit)
-        return run;
-    run.exitCode = process.exitCode();
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
+    return test::runProgram(QStringLiteral(SPRINGLAB_BENCH), arguments);
 }
 
 double number(const QByteArray &text)

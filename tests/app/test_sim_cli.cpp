@@ -2,6 +2,7 @@
 // --output then resuming gives the same bits as a run that never stopped.
 
 #include "core/io/scene_file.h"
+#include "program_run.h"
 
 #include <QDir>
 #include <QFile>
@@ -17,23 +18,11 @@ using namespace Qt::Literals::StringLiterals;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
+using Run = test::ProgramRun;
 
 Run sim(const QStringList &arguments)
 {
-    QProcess process;
-    process.start(QStringLiteral(SPRINGLAB_SIM), arguments);
-    Run run;
-    if (!process.waitForFinished(120000) || process.exitStatus() != QProcess::NormalExit)
-        return run;
-    run.exitCode = process.exitCode();
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
+    return test::runProgram(QStringLiteral(SPRINGLAB_SIM), arguments, 120000);
 }
 
 QByteArray readAll(const QString &path)

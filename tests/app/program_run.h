@@ -1,0 +1,34 @@
+#pragma once
+// Runs one of Springlab's programs to completion for the end-to-end tests and keeps what it said.
+
+#include <QByteArray>
+#include <QProcess>
+#include <QStringList>
+
+namespace test {
+
+struct ProgramRun {
+    int exitCode = -1;  // -1: it did not finish in time, or crashed
+    QByteArray out;
+    QByteArray err;
+};
+
+// program with arguments, under the offscreen platform (the benchmarks draw their plots with
+// QPainter and need no display), waiting at most timeoutMs
+inline ProgramRun runProgram(const QString &program, const QStringList &arguments, int timeoutMs = 600000)
+{
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    process.setProcessEnvironment(environment);
+    process.start(program, arguments);
+    ProgramRun run;
+    if (!process.waitForFinished(timeoutMs) || process.exitStatus() != QProcess::NormalExit)
+        return run;
+    run.exitCode = process.exitCode();
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    return run;
+}
+
+}  // namespace test
