@@ -1,5 +1,7 @@
 #include "stability_plot.h"
 
+#include "plot_frame.h"
+
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
@@ -99,14 +101,7 @@ QImage drawStabilityMap(const QString &title, const std::vector<StabilityPoint> 
     const auto toX = [&](double step) { return plot.left() + (std::log10(step) - xLo) / (xHi - xLo) * plot.width(); };
     const auto toY = [&](double ratio) { return plot.bottom() - (ratio - yLo) / (yHi - yLo) * plot.height(); };
 
-    // title
-    QFont titleFont = font;
-    titleFont.setPointSizeF(15.0);
-    titleFont.setBold(true);
-    painter.setFont(titleFont);
-    painter.setPen(Qt::black);
-    painter.drawText(QRectF(0.0, 12.0, size.width(), 36.0), Qt::AlignCenter, title);
-    painter.setFont(font);
+    drawPlotTitle(painter, size, font, title);
 
     // grid: decades across, tenths up
     const QPen gridPen(QColor(0xDD, 0xDD, 0xDD), 1.0);
@@ -143,17 +138,8 @@ QImage drawStabilityMap(const QString &title, const std::vector<StabilityPoint> 
     painter.drawLine(QPointF(plot.left(), toY(1.0)), QPointF(plot.right(), toY(1.0)));
 
     // the frame and the axis labels, with units
-    painter.setPen(QPen(Qt::black, 1.2));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawRect(plot);
-    painter.drawText(QRectF(plot.left(), plot.bottom() + 38.0, plot.width(), 24.0), Qt::AlignCenter,
-                     QStringLiteral("theoretical stability limit (s), core/stability.h"));
-    painter.save();
-    painter.translate(26.0, plot.center().y());
-    painter.rotate(-90.0);
-    painter.drawText(QRectF(-plot.height() / 2.0, -12.0, plot.height(), 24.0), Qt::AlignCenter,
-                     QStringLiteral("measured largest stable step / theoretical limit"));
-    painter.restore();
+    drawPlotFrame(painter, plot, QStringLiteral("theoretical stability limit (s), core/stability.h"),
+                  QStringLiteral("measured largest stable step / theoretical limit"));
 
     // the cells, hollow ones first so the filled ones stay visible where they coincide
     painter.setClipRect(plot.adjusted(-8.0, -8.0, 8.0, 8.0));

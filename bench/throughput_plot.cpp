@@ -1,5 +1,7 @@
 #include "throughput_plot.h"
 
+#include "plot_frame.h"
+
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
@@ -111,14 +113,7 @@ QImage drawThroughput(const QString &title, const std::vector<ThroughputRow> &ro
     const auto toX = [&](double x) { return plot.left() + (std::log10(x) - xLo) / (xHi - xLo) * plot.width(); };
     const auto toY = [&](double y) { return plot.bottom() - (std::log10(y) - yLo) / (yHi - yLo) * plot.height(); };
 
-    // title
-    QFont titleFont = font;
-    titleFont.setPointSizeF(15.0);
-    titleFont.setBold(true);
-    painter.setFont(titleFont);
-    painter.setPen(Qt::black);
-    painter.drawText(QRectF(0.0, 12.0, size.width(), 36.0), Qt::AlignCenter, title);
-    painter.setFont(font);
+    drawPlotTitle(painter, size, font, title);
 
     // grid: decades both ways
     const QPen gridPen(QColor(0xDD, 0xDD, 0xDD), 1.0);
@@ -146,17 +141,8 @@ QImage drawThroughput(const QString &title, const std::vector<ThroughputRow> &ro
     }
 
     // the frame and the axis labels, with units
-    painter.setPen(QPen(Qt::black, 1.2));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawRect(plot);
-    painter.drawText(QRectF(plot.left(), plot.bottom() + 38.0, plot.width(), 24.0), Qt::AlignCenter,
-                     QStringLiteral("particles"));
-    painter.save();
-    painter.translate(26.0, plot.center().y());
-    painter.rotate(-90.0);
-    painter.drawText(QRectF(-plot.height() / 2.0, -12.0, plot.height(), 24.0), Qt::AlignCenter,
-                     QStringLiteral("run time per step (ms), one sub-step"));
-    painter.restore();
+    drawPlotFrame(painter, plot, QStringLiteral("particles"),
+                  QStringLiteral("run time per step (ms), one sub-step"));
 
     // the lines, bounds first so the measurements lie on top
     painter.setClipRect(plot.adjusted(-8.0, -8.0, 8.0, 8.0));

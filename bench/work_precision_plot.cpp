@@ -1,5 +1,7 @@
 #include "work_precision_plot.h"
 
+#include "plot_frame.h"
+
 #include <QFontMetrics>
 #include <QPainter>
 #include <QPainterPath>
@@ -154,14 +156,7 @@ QImage drawWorkPrecision(const QString &title, const std::vector<WorkPrecisionCu
         return plot.bottom() - (std::log10(error) - ys.lo) / (ys.hi - ys.lo) * plot.height();
     };
 
-    // title
-    QFont titleFont = font;
-    titleFont.setPointSizeF(15.0);
-    titleFont.setBold(true);
-    painter.setFont(titleFont);
-    painter.setPen(Qt::black);
-    painter.drawText(QRectF(0.0, 12.0, size.width(), 36.0), Qt::AlignCenter, title);
-    painter.setFont(font);
+    drawPlotTitle(painter, size, font, title);
 
     // grid: a line at each decade, short ticks at 2..9 times it
     const QPen gridPen(QColor(0xDD, 0xDD, 0xDD), 1.0);
@@ -199,17 +194,8 @@ QImage drawWorkPrecision(const QString &title, const std::vector<WorkPrecisionCu
             painter.drawLine(QPointF(plot.left(), toY(target)), QPointF(plot.right(), toY(target)));
 
     // the frame and the axis labels, with units
-    painter.setPen(QPen(Qt::black, 1.2));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawRect(plot);
-    painter.drawText(QRectF(plot.left(), plot.bottom() + 38.0, plot.width(), 24.0), Qt::AlignCenter,
-                     QStringLiteral("cost: CPU seconds per simulated second"));
-    painter.save();
-    painter.translate(28.0, plot.center().y());
-    painter.rotate(-90.0);
-    painter.drawText(QRectF(-plot.height() / 2.0, -12.0, plot.height(), 24.0), Qt::AlignCenter,
-                     QStringLiteral("error: RMS position error at the end time (m)"));
-    painter.restore();
+    drawPlotFrame(painter, plot, QStringLiteral("cost: CPU seconds per simulated second"),
+                  QStringLiteral("error: RMS position error at the end time (m)"), 28.0);
 
     // one line with markers per integrator, in sweep order, clipped to the frame
     painter.setClipRect(plot.adjusted(-8.0, -8.0, 8.0, 8.0));
