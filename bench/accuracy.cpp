@@ -17,6 +17,8 @@
 //   error is under 10 times that estimate is not reported at all (the reference cannot tell it).
 #include "accuracy.h"
 
+#include "bench_common.h"
+
 #include "reference_problems.h"
 #include "work_precision.h"
 #include "work_precision_plot.h"
@@ -48,20 +50,7 @@ constexpr double kTargetErrors[] = {1e-2, 1e-4, 1e-6};  // m, the errors the sum
 constexpr int kReferenceFactor = 1000;     // the reference step is the finest swept step over this
 constexpr int kQuickReferenceFactor = 10;  // --quick: cheap, and not to be trusted
 
-// an integrator's name as scene files spell it
-QString nameOf(core::Integrator integrator)
-{
-    const std::string_view name = core::integratorName(integrator);
-    return QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
-}
 
-// process CPU time, s
-double cpuSeconds()
-{
-    timespec now{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
 
 // what each problem's sweep covers
 struct Sweep {
@@ -357,19 +346,6 @@ double smallestError(const std::vector<WorkPrecisionCurve> &curves)
     return smallest;
 }
 
-// the machine, for the record: its CPU model and how many cores it offers
-QString machineDescription()
-{
-    QString model = QStringLiteral("unknown CPU");
-    QFile cpuinfo(QStringLiteral("/proc/cpuinfo"));
-    if (cpuinfo.open(QIODevice::ReadOnly | QIODevice::Text))
-        for (const QByteArray &line : cpuinfo.readAll().split('\n'))
-            if (line.startsWith("model name")) {
-                model = QString::fromUtf8(line.mid(line.indexOf(':') + 1).trimmed());
-                break;
-            }
-    return QStringLiteral("%1, %2 logical cores").arg(model).arg(QThread::idealThreadCount());
-}
 
 }  // namespace
 

@@ -11,6 +11,8 @@
 //   that step is allowed, for as many steps as a trial, and must stay stable.
 #include "stability.h"
 
+#include "bench_common.h"
+
 #include "stability_plot.h"
 #include "stability_sweep.h"
 
@@ -71,33 +73,7 @@ struct Row {
     double ratio() const { return measured / theory; }
 };
 
-QString nameOf(core::Integrator integrator)
-{
-    const std::string_view name = core::integratorName(integrator);
-    return QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
-}
 
-// process CPU time, s
-double cpuSeconds()
-{
-    timespec now{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
-
-// the machine, for the record
-QString machineDescription()
-{
-    QString model = QStringLiteral("unknown CPU");
-    QFile cpuinfo(QStringLiteral("/proc/cpuinfo"));
-    if (cpuinfo.open(QIODevice::ReadOnly | QIODevice::Text))
-        for (const QByteArray &line : cpuinfo.readAll().split('\n'))
-            if (line.startsWith("model name")) {
-                model = QString::fromUtf8(line.mid(line.indexOf(':') + 1).trimmed());
-                break;
-            }
-    return QStringLiteral("%1, %2 logical cores").arg(model).arg(QThread::idealThreadCount());
-}
 
 bool writeCsv(const QString &path, const std::vector<Row> &rows, QTextStream &out)
 {

@@ -1,5 +1,7 @@
 #include "stability_plot.h"
 
+#include "bench_common.h"
+
 #include "plot_frame.h"
 
 #include <QFontMetricsF>
@@ -50,12 +52,6 @@ QPainterPath markerOf(core::Integrator integrator, QPointF c, double r)
     default: path.addEllipse(c, r, r); break;
     }
     return path;
-}
-
-QString nameOf(core::Integrator integrator)
-{
-    const std::string_view name = core::integratorName(integrator);
-    return QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
 }
 
 // filled for the shortest chain, hollow (white inside) for the others

@@ -24,6 +24,8 @@
 // everything past 10k particles), so the mode runs to the end whatever the core's broad phase.
 #include "throughput.h"
 
+#include "bench_common.h"
+
 #include "bandwidth.h"
 #include "naive_cloth.h"
 #include "plain_cloth.h"
@@ -101,19 +103,6 @@ std::vector<int> threadCounts()
     return counts;
 }
 
-// the machine, for the record
-QString machineDescription()
-{
-    QString model = QStringLiteral("unknown CPU");
-    QFile cpuinfo(QStringLiteral("/proc/cpuinfo"));
-    if (cpuinfo.open(QIODevice::ReadOnly | QIODevice::Text))
-        for (const QByteArray &line : cpuinfo.readAll().split('\n'))
-            if (line.startsWith("model name")) {
-                model = QString::fromUtf8(line.mid(line.indexOf(':') + 1).trimmed());
-                break;
-            }
-    return QStringLiteral("%1, %2 logical cores").arg(model).arg(QThread::idealThreadCount());
-}
 
 // the load average over the last minute (/proc/loadavg), or -1 where it cannot be read: other work
 // on the machine slows every figure, so the run records it at its start and its end

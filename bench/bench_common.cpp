@@ -1,0 +1,36 @@
+#include "bench_common.h"
+
+#include <QByteArray>
+#include <QFile>
+#include <QThread>
+#include <ctime>
+
+namespace bench {
+
+QString machineDescription()
+{
+    QString model = QStringLiteral("unknown CPU");
+    QFile cpuinfo(QStringLiteral("/proc/cpuinfo"));
+    if (cpuinfo.open(QIODevice::ReadOnly | QIODevice::Text))
+        for (const QByteArray &line : cpuinfo.readAll().split('\n'))
+            if (line.startsWith("model name")) {
+                model = QString::fromUtf8(line.mid(line.indexOf(':') + 1).trimmed());
+                break;
+            }
+    return QStringLiteral("%1, %2 logical cores").arg(model).arg(QThread::idealThreadCount());
+}
+
+double cpuSeconds()
+{
+    timespec now{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+QString nameOf(core::Integrator integrator)
+{
+    const std::string_view name = core::integratorName(integrator);
+    return QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
+}
+
+}  // namespace bench
