@@ -13,26 +13,46 @@ Eigen::Matrix3Xd &scratch(State &state, int index)
 
 namespace {
 
+// one Euler update of the free particles [begin, end) of the list: the new velocity moves the
+// particle (symplectic) or the old one does (explicit). Flat arrays so that it vectorises; the same
+// IEEE operations in the same order as (h / m) f and h v written with Eigen columns.
+template <bool Symplectic>
+void eulerUpdate(int begin, int end, const int *__restrict free, const double *__restrict invMass,
+                 const double *__restrict force, double *__restrict x, double *__restrict v, double h)
+{
+#pragma omp simd
+    for (int f = begin; f < end; ++f) {
+        const int i = 3 * free[f];
+        const double kick = h * invMass[free[f]];
+        for (int axis = 0; axis < 3; ++axis) {
+            const double old = v[i + axis];
+            const double next = old + kick * force[i + axis];
+            v[i + axis] = next;
+            x[i + axis] += h * (Symplectic ? next : old);
+        }
+    }
+}
+
+template <bool Symplectic>
+void euler(const Model &model, State &state, double h)
+{
+    computeForces(model, state);
+    parallelChunks(static_cast<int>(model.freeParticles.size()), [&](int begin, int end) {
+        eulerUpdate<Symplectic>(begin, end, model.freeParticles.data(), model.invMass.data(), state.force.data(),
+                                state.position.data(), state.velocity.data(), h);
+    });
+}
+
 // the handout's scheme: the new velocity moves the particle
 void symplecticEuler(const Model &model, State &state, double h)
 {
-    computeForces(model, state);
-    parallelFor(static_cast<int>(model.freeParticles.size()), [&](int f) {
-        const int i = model.freeParticles[static_cast<std::size_t>(f)];
-        state.velocity.col(i) += (h * model.invMass[i]) * state.force.col(i);
-        state.position.col(i) += h * state.velocity.col(i);
-    });
+    euler<true>(model, state, h);
 }
 
 // forward Euler: position and velocity both advance from the old state
 void explicitEuler(const Model &model, State &state, double h)
 {
-    computeForces(model, state);
-    parallelFor(static_cast<int>(model.freeParticles.size()), [&](int f) {
-        const int i = model.freeParticles[static_cast<std::size_t>(f)];
-        state.position.col(i) += h * state.velocity.col(i);
-        state.velocity.col(i) += (h * model.invMass[i]) * state.force.col(i);
-    });
+    euler<false>(model, state, h);
 }
 
 // kick-drift-kick: half a velocity step, a full position step, half a velocity step with the

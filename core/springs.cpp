@@ -2,6 +2,16 @@
 #include "parallel.h"
 #include "passes.h"
 
+#include <cmath>
+
+// target clones where the compiler and CPU family support them (GCC on x86-64); elsewhere one
+// portable version
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define SPRINGLAB_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
+#else
+#define SPRINGLAB_SIMD_CLONES
+#endif
+
 namespace core {
 
 namespace {
@@ -21,6 +31,38 @@ Eigen::Vector3d springForce(const Model &model, const State &state, int k)
     return (-model.stiffness[k] * stretch - model.damping[k] * approach) * u;
 }
 
+// the handout's damped spring of springs [begin, end) on their end a, three values per spring into
+// out. Flat arrays and no calls, so the compiler vectorises it across springs; the clones let one
+// binary use AVX2 or AVX-512 where the CPU has them. Each value comes from the same IEEE adds,
+// multiplies, divides and square roots as springForce above, in the same order and never
+// contracted (cmake/springlab_flags.cmake), so every clone and the reference give the same bits.
+SPRINGLAB_SIMD_CLONES
+void springForces(int begin, int end, const int *__restrict springA, const int *__restrict springB,
+                  const double *__restrict restLength, const double *__restrict stiffness,
+                  const double *__restrict damping, const double *__restrict x, const double *__restrict v,
+                  double *__restrict out)
+{
+#pragma omp simd
+    for (int k = begin; k < end; ++k) {
+        const int a = 3 * springA[k];
+        const int b = 3 * springB[k];
+        const double dx = x[a] - x[b];
+        const double dy = x[a + 1] - x[b + 1];
+        const double dz = x[a + 2] - x[b + 2];
+        const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+        // coincident ends push along +y, as directionOr does
+        const bool apart = length > 0.0;
+        const double ux = apart ? dx / length : 0.0;
+        const double uy = apart ? dy / length : 1.0;
+        const double uz = apart ? dz / length : 0.0;
+        const double approach = (v[a] - v[b]) * ux + (v[a + 1] - v[b + 1]) * uy + (v[a + 2] - v[b + 2]) * uz;
+        const double magnitude = -stiffness[k] * (length - restLength[k]) - damping[k] * approach;
+        out[3 * k] = magnitude * ux;
+        out[3 * k + 1] = magnitude * uy;
+        out[3 * k + 2] = magnitude * uz;
+    }
+}
+
 }  // namespace
 
 // Two passes with no write shared between iterations, so both split across threads with the same
@@ -36,7 +78,11 @@ void addSprings(const Model &model, State &state)
     if (perSpring.cols() != springs)
         perSpring.resize(3, springs);  // once, on first use: later steps reuse it
 
-    parallelFor(springs, [&](int k) { perSpring.col(k) = springForce(model, state, k); });
+    parallelChunks(springs, [&](int begin, int end) {
+        springForces(begin, end, model.springA.data(), model.springB.data(), model.restLength.data(),
+                     model.stiffness.data(), model.damping.data(), state.position.data(), state.velocity.data(),
+                     perSpring.data());
+    });
 
     const int n = model.particleCount();
     const int *offsets = model.springOffsets.data();
