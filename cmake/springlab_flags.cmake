@@ -17,3 +17,17 @@ if(SPRINGLAB_SANITIZE)
   add_compile_options(-fsanitize=${SPRINGLAB_SANITIZE} -fno-omit-frame-pointer -fno-sanitize-recover=all)
   add_link_options(-fsanitize=${SPRINGLAB_SANITIZE})
 endif()
+
+# fuzzing (tests/fuzz): coverage for libFuzzer everywhere, and the sanitizers that turn a bad read
+# into a crash it can save; the fuzzer executables add libFuzzer's own main when they link
+if(SPRINGLAB_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "SPRINGLAB_FUZZ needs clang (libFuzzer), not ${CMAKE_CXX_COMPILER_ID}: configure a "
+                        "fresh build folder with CXX=clang++-14, or run tools/fuzz.sh, which does")
+  endif()
+  if(SPRINGLAB_SANITIZE)
+    message(FATAL_ERROR "SPRINGLAB_FUZZ already builds with address,undefined: leave SPRINGLAB_SANITIZE empty")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=address,undefined)
+endif()

@@ -31,6 +31,10 @@ constexpr double kE[kStages] = {71.0 / 57600,      0, -71.0 / 16695, 71.0 / 1920
 constexpr double kSafety = 0.9;
 constexpr double kMinShrink = 0.2;
 constexpr double kMaxGrow = 5.0;
+// trial steps one sub-step may take before the run stops as too stiff: far more than any scene
+// the scheme suits needs (those take a handful), few enough to stop in well under a second on a
+// small scene instead of shrinking the step for ever
+constexpr int kMaxTrialsPerSubStep = 100000;
 
 // scratch slots: x0, v0, the accelerations, then kx and kv per stage
 constexpr int kX0 = 0, kV0 = 1, kAcc = 2, kKx = 3, kKv = 3 + kStages;
@@ -79,7 +83,13 @@ void adaptiveRk45(const Model &model, State &state, double h)
     Eigen::Matrix3Xd &v0 = scratch(state, kV0);
     double dt = state.adaptiveStep > 0.0 ? std::min(state.adaptiveStep, h) : h;
     double covered = 0.0;
-    while (covered < h) {
+    for (int trials = 0; covered < h; ++trials) {
+        // a scene far too stiff for an explicit method (strong drag on a light particle) would
+        // otherwise shrink the step without end: stop and say so
+        if (trials == kMaxTrialsPerSubStep) {
+            state.blowup = Blowup{-1, Blowup::Quantity::StepSize, dt, 0, 0.0};
+            return;
+        }
         const bool last = dt >= h - covered;
         const double trial = last ? h - covered : dt;
         x0 = state.position;
@@ -87,13 +97,19 @@ void adaptiveRk45(const Model &model, State &state, double h)
         const double error = trialStep(model, state, trial);
         const double factor =
             error == 0.0 ? kMaxGrow : std::clamp(kSafety * std::pow(error, -0.2), kMinShrink, kMaxGrow);
-        // accept: within tolerance, or already so small that rounding, not truncation, dominates
-        // (an error that is not finite is never accepted unless nothing smaller can be tried)
+        // accept within tolerance; a step this small that still misses it means the scene is
+        // beyond the scheme (or the tolerance below rounding): stop and say so
         const bool tiny = trial <= 1e-12 * h;
+        if (tiny && !(error <= 1.0)) {
+            state.position = x0;
+            state.velocity = v0;
+            state.blowup = Blowup{-1, Blowup::Quantity::StepSize, trial, 0, 0.0};
+            return;
+        }
         if (error <= 1.0 || tiny) {
             covered = last ? h : covered + trial;
             if (!last || factor < 1.0)
-                dt = trial * factor;  // a shortened final step says nothing about the next one
+                dt = std::max(trial * factor, 1e-12 * h);  // a shortened final step says nothing about the next one
         } else {
             state.rejectedSteps += 1;
             state.position = x0;

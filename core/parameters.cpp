@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <charconv>
 #include <sstream>
 #include <string>
 
@@ -41,8 +42,11 @@ constexpr ParameterInfo kTable[] = {
 
 std::string formatValue(double value, std::string_view unit)
 {
+    // the shortest text that reads back as the same value: 2147483647 (not 2.14748e+09), 1e+09, 0.1
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, value).ptr;
     std::ostringstream out;
-    out << value;
+    out << std::string_view(text, std::size_t(end - text));
     if (!unit.empty())
         out << ' ' << unit;
     return out.str();
@@ -78,6 +82,9 @@ std::optional<std::string> checkParameter(Parameter parameter, double value)
     if (value > info.maximum)
         return "must be at most " + formatValue(info.maximum, info.unit) + " (got " +
                formatValue(value, info.unit) + ")";
+    // a mass so small that 1 / m overflows would make the particle's acceleration infinite
+    if (parameter == Parameter::Mass && !std::isfinite(1.0 / value))
+        return "is too small: 1 / mass is infinite (got " + formatValue(value, info.unit) + ")";
     return std::nullopt;
 }
 

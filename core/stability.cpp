@@ -170,6 +170,14 @@ int stableSubsteps(const StabilityLimit &limit, Integrator integrator, double ti
 std::string explainBlowup(const Model &model, const Blowup &blowup, const StabilityLimit &limit)
 {
     std::ostringstream out;
+    if (blowup.quantity == Blowup::Quantity::StepSize) {
+        out << integratorName(model.integrator) << " could not meet its tolerance " << format(model.tolerance)
+            << " within a sub-step at t = " << format(blowup.time) << " s (step " << blowup.step
+            << "): its trial steps shrank to " << format(blowup.value) << " s against a sub-step of "
+            << format(model.subStep()) << " s. The scene is too stiff for an explicit method (strong drag on a "
+            << "light particle, or very stiff springs): use the implicit-euler integrator or a looser tolerance.";
+        return out.str();
+    }
     out << "Particle " << blowup.particle << "'s "
         << (blowup.quantity == Blowup::Quantity::Velocity ? "velocity" : "position") << " became "
         << (std::isfinite(blowup.value) ? "too large (" + format(blowup.value) + ")" : std::string("infinite"))

@@ -29,12 +29,13 @@ struct Profile {
     StageTiming &operator[](Stage stage) { return stages[static_cast<int>(stage)]; }
 };
 
-// the first value that stopped being finite or bounded
+// the first value that stopped being finite or bounded, or (StepSize) an adaptive integrator that
+// could not cover a sub-step within its budget of trial steps
 struct Blowup {
-    enum class Quantity { Position, Velocity };
-    int particle = -1;
+    enum class Quantity { Position, Velocity, StepSize };
+    int particle = -1;        // -1 for StepSize
     Quantity quantity = Quantity::Position;
-    double value = 0.0;       // the offending component
+    double value = 0.0;       // the offending component; for StepSize, the last trial step, s
     std::uint64_t step = 0;   // the step it happened in (1 = the first step)
     double time = 0.0;        // s, the time at the start of that step
 };

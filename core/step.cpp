@@ -42,6 +42,11 @@ bool step(const Model &model, State &state)
         // 1 and 2. forces at (x, v) and integration of every free particle: the integrator
         // evaluates the forces as often as its scheme needs (once for the Euler schemes)
         integrateTimed(model, state, h);
+        if (state.blowup) {  // an adaptive integrator that could not cover the sub-step
+            state.blowup->step = state.step + 1;
+            state.blowup->time = state.time;
+            return false;
+        }
 
         // 3. contacts as projections: particles against planes, then pairs
         timed(state, Stage::PlaneCollisions, plan.planeCollisions, [&] { collidePlanes(model, state); });

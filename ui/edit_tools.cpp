@@ -163,6 +163,23 @@ void EditTools::apply(const QString &text, const std::function<void(core::SceneD
     m_document->undoStack()->push(new SceneCommand(*m_document, text, std::move(edited), mergeKey));
 }
 
+// The picture can be of an older scene than the one being edited for a frame or two after an edit
+// (the worker has not stepped the new one yet), so an index picked in it may be past the end of
+// the scene now (after a delete): such a pick picks nothing. Indices below the end stay valid
+// across every edit but a delete, after which a click within that frame may pick a neighbour, but
+// never a particle that is not there.
+int EditTools::particleUnder(const QPointF &pixel) const
+{
+    const int particle = m_viewport->particleAt(pixel);
+    return particle < int(m_document->scene().particles.size()) ? particle : -1;
+}
+
+int EditTools::springUnder(const QPointF &pixel) const
+{
+    const int spring = m_viewport->springAt(pixel);
+    return spring < int(m_document->scene().springs.size()) ? spring : -1;
+}
+
 Eigen::Vector3d EditTools::shownPosition(int i) const
 {
     const auto snapshot = m_viewport->snapshot();
@@ -223,13 +240,13 @@ bool EditTools::press(QMouseEvent *event)
     const QPointF pixel = event->position();
     const bool shift = event->modifiers().testFlag(Qt::ShiftModifier) ||
                        event->modifiers().testFlag(Qt::ControlModifier);
-    const int particle = m_viewport->particleAt(pixel);
+    const int particle = particleUnder(pixel);
     const core::SceneDesc &scene = m_document->scene();
     m_pressPixel = pixel;
 
     switch (m_tool) {
     case Tool::Select: {
-        const int spring = particle < 0 ? m_viewport->springAt(pixel) : -1;
+        const int spring = particle < 0 ? springUnder(pixel) : -1;
         if (particle < 0 && spring < 0) {
             if (event->modifiers().testFlag(Qt::ShiftModifier))
                 return false;  // pan
@@ -389,14 +406,14 @@ void EditTools::hover(const QPointF &pixel)
     int spring = -1;
     switch (m_tool) {
     case Tool::Select:
-        particle = m_viewport->particleAt(pixel);
+        particle = particleUnder(pixel);
         if (particle < 0)
-            spring = m_viewport->springAt(pixel);
+            spring = springUnder(pixel);
         break;
     case Tool::Pin:
     case Tool::Spring:
     case Tool::Drag:
-        particle = m_viewport->particleAt(pixel);
+        particle = particleUnder(pixel);
         break;
     case Tool::AddParticle:
         break;

@@ -111,6 +111,9 @@ private:
     std::optional<Eigen::Vector3d> onViewPlane(const QPointF &pixel, const Eigen::Vector3d &through) const;
     // where particle i is drawn now (the run's position, not the scene's initial one)
     Eigen::Vector3d shownPosition(int i) const;
+    // the particle or spring under the pixel, as an index into the document's scene (-1: none)
+    int particleUnder(const QPointF &pixel) const;
+    int springUnder(const QPointF &pixel) const;
     // how far a pasted or duplicated copy is moved so that it sits beside the original
     Eigen::Vector3d copyOffset(const Fragment &fragment) const;
 

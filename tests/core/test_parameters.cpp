@@ -38,6 +38,11 @@ void TestParameters::refusals_data()
     QTest::addColumn<QString>("reason");  // empty: accepted
     QTest::newRow("mass ok") << int(core::Parameter::Mass) << 2.5 << "";
     QTest::newRow("mass zero") << int(core::Parameter::Mass) << 0.0 << "must be greater than 0 kg (got 0 kg)";
+    // found by fuzzing: the smallest double is positive, but 1 / m overflows
+    QTest::newRow("mass denormal") << int(core::Parameter::Mass) << 5e-324
+                                   << "is too small: 1 / mass is infinite (got 5e-324 kg)";
+    QTest::newRow("substeps huge") << int(core::Parameter::Substeps) << 2147483647.0
+                                   << "must be at most 10000 (got 2147483647)";
     QTest::newRow("restitution 1") << int(core::Parameter::Restitution) << 1.0 << "";
     QTest::newRow("restitution 2") << int(core::Parameter::Restitution) << 2.0 << "must be at most 1 (got 2)";
     QTest::newRow("time step NaN") << int(core::Parameter::TimeStep) << std::numeric_limits<double>::quiet_NaN()

@@ -19,6 +19,7 @@ private slots:
     void measuredLimitMatchesTheory();
     void implicitAndAdaptiveHaveNoLimit();
     void blowupMessage();
+    void adaptiveStopsOnAHopelesslyStiffScene();
     void autoSubstepsKeepTheChainStable();
     void pairSpeedLimit();
 };
@@ -151,6 +152,38 @@ void TestStability::blowupMessage()
     QVERIFY2(text.contains("The time step 0.02 s is 3.2× the stability limit 0.0063 s"), message.c_str());
     QVERIFY2(text.contains("stiffness 1e+05 N/m with symplectic-euler"), message.c_str());
     QVERIFY2(text.contains("use ≥ 4 substeps or the implicit-euler integrator"), message.c_str());
+}
+
+void TestStability::adaptiveStopsOnAHopelesslyStiffScene()
+{
+    // found by fuzzing the loader: drag 1e6 kg/s on a 1e-9 kg particle is a time constant of
+    // 1e-15 s; adaptive-rk45 shrank its step for ever inside one 1 s step. It now stops, says why
+    core::SceneDesc scene;
+    scene.settings.integrator = core::Integrator::AdaptiveRk45;
+    scene.settings.timeStep = 1.0;
+    scene.settings.viscosity = 1e6;
+    scene.settings.gravity = Eigen::Vector3d::Zero();
+    core::ParticleDesc p;
+    p.position = {0.0, 1.0, 0.0};
+    p.velocity = {1.0, 0.0, 0.0};
+    p.mass = 1e-9;
+    p.radius = 0.1;
+    scene.particles = {p};
+    test::Sim sim = test::compile(scene);
+    const core::State start = sim.state;
+    QVERIFY(!core::step(*sim.model, sim.state));
+    QVERIFY(sim.state.blowup.has_value());
+    QCOMPARE(sim.state.blowup->quantity, core::Blowup::Quantity::StepSize);
+    QCOMPARE(sim.state.blowup->step, std::uint64_t(1));
+    QVERIFY(sim.state.blowup->value > 0.0 && sim.state.blowup->value < 1e-9);
+    const std::string message =
+        core::explainBlowup(*sim.model, *sim.state.blowup, core::stabilityLimit(*sim.model, start));
+    const QString text = QString::fromStdString(message);
+    QVERIFY2(text.startsWith("adaptive-rk45 could not meet its tolerance 1e-06 within a sub-step at t = 0 s (step 1)"),
+             message.c_str());
+    QVERIFY2(text.contains("use the implicit-euler integrator"), message.c_str());
+    // the step refuses to go on, as after any blow-up
+    QVERIFY(!core::step(*sim.model, sim.state));
 }
 
 void TestStability::autoSubstepsKeepTheChainStable()

@@ -68,6 +68,7 @@ private slots:
     void clickAndShiftClickSelect();
     void hoverShowsWhatAClickWouldPick();
     void deleteRemovesParticlesAndTheirSprings();
+    void clickBeforeThePictureCatchesUpPicksNothingGone();
     void copyPasteAndDuplicate();
     void dragWhilePausedMovesTheSelectionAsOneStep();
     void dragWhileRunningPullsTheParticleAndLetsGo();
@@ -332,6 +333,38 @@ void TestEditing::deleteRemovesParticlesAndTheirSprings()
     settle();
     QCOMPARE(viewport()->snapshot()->particleCount(), 2);
     QCOMPARE(viewport()->snapshot()->springCount(), 1);
+}
+
+void TestEditing::clickBeforeThePictureCatchesUpPicksNothingGone()
+{
+    // found by the monkey: a click right after a delete, before the worker's next frame, picked
+    // from the old picture an index past the end of the scene, and the Pin tool read past it
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({-1.0, 0.0, 0.0}), particle({0.0, 0.0, 0.0}), particle({1.0, 0.0, 0.0})};
+    s.springs = {{0, 1, 10.0, 0.0, 1.0}, {1, 2, 20.0, 0.0, 1.0}};
+    open(s);
+    key(Qt::Key_1);
+    click(pixelOf(s.particles[2].position));
+    key(Qt::Key_Delete);
+    QCOMPARE(scene().particles.size(), std::size_t(2));
+    // no events processed since: the picture still shows three particles and two springs
+    QCOMPARE(viewport()->snapshot()->particleCount(), 3);
+    QCOMPARE(viewport()->particleAt(pixelOf(s.particles[2].position)), 2);
+    const int steps = undo()->count();
+    key(Qt::Key_3);  // Pin
+    click(pixelOf(s.particles[2].position));
+    QCOMPARE(undo()->count(), steps);  // no edit made
+    QCOMPARE(scene().particles.size(), std::size_t(2));
+    QVERIFY(!scene().particles[0].pinned && !scene().particles[1].pinned);
+    // Select, on the deleted particle's spring: nothing selected either
+    key(Qt::Key_1);
+    click(pixelOf(0.5 * (s.particles[1].position + s.particles[2].position)));
+    QVERIFY(tools()->selection().empty());
+    // once it has caught up, a click picks again
+    settle();
+    key(Qt::Key_3);
+    click(pixelOf(s.particles[1].position));
+    QVERIFY(scene().particles[1].pinned);
 }
 
 void TestEditing::copyPasteAndDuplicate()

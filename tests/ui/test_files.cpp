@@ -31,22 +31,17 @@
 #include <QUrl>
 #include <QtTest>
 
+#include "frame_wait.h"
+
+#include <csignal>
+#include <linux/capability.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 namespace {
 
-// the newest frame once the worker has applied every edit made so far, or null after 10 s
-std::shared_ptr<const ui::SimulationFrame> settledFrame(ui::SimulationController &controller)
-{
-    const std::uint64_t sequence = controller.sync();
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 10000) {
-        const auto frame = controller.frame();
-        if (frame && frame->appliedEdit >= sequence)
-            return frame;
-        QTest::qWait(5);
-    }
-    return nullptr;
-}
+using test::settledFrame;
 
 bool writeFile(const QString &path, const QByteArray &bytes)
 {
@@ -61,6 +56,68 @@ struct Question {
     QString text;
     QMessageBox::StandardButtons buttons;
 };
+
+// While it lives, the calling thread's effective capabilities lack the two that let root ignore
+// permission bits (CI runs the tests as root), so a read-only folder binds it as it binds a user.
+// Capabilities are per thread on Linux; saving happens on this (the GUI) thread.
+class WithoutPermissionOverride {
+public:
+    WithoutPermissionOverride()
+    {
+        if (syscall(SYS_capget, &m_header, m_saved) != 0)
+            return;
+        __user_cap_data_struct reduced[2] = {m_saved[0], m_saved[1]};
+        reduced[0].effective &= ~((1u << CAP_DAC_OVERRIDE) | (1u << CAP_DAC_READ_SEARCH));
+        m_changed = syscall(SYS_capset, &m_header, reduced) == 0;
+    }
+    ~WithoutPermissionOverride()
+    {
+        if (m_changed)
+            syscall(SYS_capset, &m_header, m_saved);
+    }
+    WithoutPermissionOverride(const WithoutPermissionOverride &) = delete;
+    WithoutPermissionOverride &operator=(const WithoutPermissionOverride &) = delete;
+
+private:
+    __user_cap_header_struct m_header{_LINUX_CAPABILITY_VERSION_3, 0};
+    __user_cap_data_struct m_saved[2]{};
+    bool m_changed = false;
+};
+
+// While it lives, no file this process writes may grow past `bytes`: a write beyond fails with
+// EFBIG, as one fails with ENOSPC on a full disk (making a real full disk needs a mount, which the
+// tests cannot count on). SIGXFSZ, which would otherwise kill the process, is ignored meanwhile.
+class FileSizeLimit {
+public:
+    explicit FileSizeLimit(rlim_t bytes)
+    {
+        m_oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+        m_set = getrlimit(RLIMIT_FSIZE, &m_saved) == 0;
+        rlimit limit = m_saved;
+        limit.rlim_cur = bytes;
+        m_set = m_set && setrlimit(RLIMIT_FSIZE, &limit) == 0;
+    }
+    ~FileSizeLimit()
+    {
+        if (m_set)
+            setrlimit(RLIMIT_FSIZE, &m_saved);
+        std::signal(SIGXFSZ, m_oldHandler);
+    }
+    FileSizeLimit(const FileSizeLimit &) = delete;
+    FileSizeLimit &operator=(const FileSizeLimit &) = delete;
+    bool active() const { return m_set; }
+
+private:
+    rlimit m_saved{};
+    bool m_set = false;
+    void (*m_oldHandler)(int) = SIG_DFL;
+};
+
+QByteArray readAll(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
 
 }  // namespace
 
@@ -85,6 +142,8 @@ private slots:
     void recentFilesKeepOrderStopAtTenAndForgetMissingOnes();
     void revertReloadsTheSavedFile();
     void corruptFileShowsTheErrorAndKeepsTheDocument();
+    void saveIntoAReadOnlyFolderFailsAndKeepsTheChanges();
+    void saveOntoAFullDiskFailsAndKeepsTheOldFile();
     void unsavedChangesAreAskedAbout();
     void autosaveWritesARecoveryFileAndRemovesIt();
     void autosaveIsConfigured();
@@ -375,6 +434,73 @@ void TestFiles::corruptFileShowsTheErrorAndKeepsTheDocument()
     QCOMPARE(document().undoStack()->count(), 1);
     QVERIFY(document().filePath().isEmpty());
     QVERIFY(!m_window->recentFiles()->paths().contains(QFileInfo(path).absoluteFilePath()));
+}
+
+void TestFiles::saveIntoAReadOnlyFolderFailsAndKeepsTheChanges()
+{
+    // a scene saved in a folder that then becomes read-only, and changed
+    const QString folder = m_files.filePath(QStringLiteral("read-only"));
+    QVERIFY(QDir().mkpath(folder));
+    const QString path = QDir(folder).filePath(QStringLiteral("scene.json"));
+    QString error;
+    QVERIFY2(m_window->saveTo(path, &error), qPrintable(error));
+    const QByteArray before = readAll(path);
+    edit();
+    QVERIFY(QFile::setPermissions(folder, QFileDevice::ReadOwner | QFileDevice::ExeOwner));
+    {
+        const WithoutPermissionOverride asAUser;
+        // the folder really is closed to this thread now, root or not
+        QFile probe(QDir(folder).filePath(QStringLiteral("probe")));
+        QVERIFY2(!probe.open(QIODevice::WriteOnly), "the read-only folder still takes new files");
+
+        // Ctrl+S: the error is shown, naming the file and why; the changes stay unsaved
+        m_questions.clear();
+        press(Qt::Key_S, Qt::ControlModifier);
+    }
+    QVERIFY(QFile::setPermissions(folder, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner));
+    QCOMPARE(m_questions.size(), 1);
+    QCOMPARE(m_questions.front().icon, QMessageBox::Warning);
+    const QString &message = m_questions.front().text;
+    QVERIFY2(message.contains(QDir::toNativeSeparators(path)) && message.contains(QStringLiteral("cannot save")) &&
+                 message.contains(QStringLiteral("ermission denied")),
+             qPrintable(message));
+    QVERIFY(document().isModified());
+    QVERIFY(m_window->isWindowModified());
+    QCOMPARE(readAll(path), before);
+    QCOMPARE(QDir(folder).entryList(QDir::Files), QStringList{QStringLiteral("scene.json")});
+
+    // with the folder writable again, the same Ctrl+S saves
+    press(Qt::Key_S, Qt::ControlModifier);
+    QCOMPARE(m_questions.size(), 1);
+    QVERIFY(!document().isModified());
+    QVERIFY(readAll(path) != before);
+}
+
+void TestFiles::saveOntoAFullDiskFailsAndKeepsTheOldFile()
+{
+    // a large scene saved, then changed; the disk then fills: no file may grow past 4 KiB
+    QString error;
+    QVERIFY2(m_window->openExample(QStringLiteral("cloth"), &error), qPrintable(error));
+    const QString path = m_files.filePath(QStringLiteral("full.json"));
+    QVERIFY2(m_window->saveTo(path, &error), qPrintable(error));
+    const QByteArray before = readAll(path);
+    QVERIFY(before.size() > 4096);
+    edit();
+    m_questions.clear();
+    {
+        const FileSizeLimit full(4096);
+        QVERIFY(full.active());
+        press(Qt::Key_S, Qt::ControlModifier);
+    }
+    QCOMPARE(m_questions.size(), 1);
+    QCOMPARE(m_questions.front().icon, QMessageBox::Warning);
+    const QString &message = m_questions.front().text;
+    QVERIFY2(message.contains(QDir::toNativeSeparators(path)) && message.contains(QStringLiteral("cannot save")),
+             qPrintable(message));
+    QVERIFY(document().isModified());
+    QCOMPARE(readAll(path), before);  // the old file, whole
+    const QStringList left = QDir(m_files.path()).entryList({QStringLiteral("full.json*")}, QDir::Files);
+    QCOMPARE(left, QStringList{QStringLiteral("full.json")});  // and no half-written temporary beside it
 }
 
 void TestFiles::unsavedChangesAreAskedAbout()

@@ -32,28 +32,12 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "frame_wait.h"
+
 namespace {
 
-// the newest frame once the worker has applied edit `sequence`, or null after 10 s
-std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::SimulationController &controller,
-                                                      std::uint64_t sequence)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 10000) {
-        const auto frame = controller.frame();
-        if (frame && frame->appliedEdit >= sequence)
-            return frame;
-        QTest::qWait(5);
-    }
-    return nullptr;
-}
-
-// the frame after every edit made so far
-std::shared_ptr<const ui::SimulationFrame> settledFrame(ui::SimulationController &controller)
-{
-    return frameAfter(controller, controller.sync());
-}
+using test::frameAfter;
+using test::settledFrame;
 
 // how far apart two colours are, per channel
 int colourDistance(QRgb a, QRgb b)

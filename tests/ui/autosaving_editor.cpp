@@ -1,0 +1,86 @@
+// The editor's main window in a process of its own, for test_crash_recovery to kill: it opens a
+// scene, changes it twice through the undo stack as the editor's commands do, waits for autosave
+// to write the recovery file, saves the scene it expects to be recovered, prints "autosaved" and
+// then runs until it is killed.
+//
+//   autosaving_editor SETTINGS_DIR SCENE.json EXPECTED.json
+
+#include "ui/autosave.h"
+#include "ui/main_window.h"
+#include "ui/scene_commands.h"
+#include "ui/scene_document.h"
+#include "ui/viewport.h"
+
+#include "core/io/scene_file.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QSettings>
+#include <QSurfaceFormat>
+#include <QTimer>
+#include <cstdio>
+
+namespace {
+
+// waits (running the event loop) until done() or timeoutMs; false on timeout
+template <typename Done>
+bool waitFor(Done &&done, int timeoutMs)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (!done()) {
+        if (clock.elapsed() > timeoutMs)
+            return false;
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    }
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char *argv[])
+{
+    QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
+    QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    QApplication app(argc, argv);
+    if (argc != 4) {
+        std::fprintf(stderr, "usage: autosaving_editor SETTINGS_DIR SCENE.json EXPECTED.json\n");
+        return 2;
+    }
+    // the settings the test wrote: its recovery folder and a one-second autosave
+    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("test_crash_recovery"));
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, QString::fromLocal8Bit(argv[1]));
+
+    ui::MainWindow window;
+    window.show();
+    QString error;
+    if (!window.start(QString::fromLocal8Bit(argv[2]), &error)) {
+        std::fprintf(stderr, "autosaving_editor: %s\n", qPrintable(error));
+        return 1;
+    }
+
+    // two changes, as the parameters panel makes them
+    ui::SceneDocument &document = *window.document();
+    for (double viscosity : {0.5, 0.75}) {
+        core::Settings settings = document.scene().settings;
+        settings.viscosity = viscosity;
+        document.undoStack()->push(
+            new ui::SettingsCommand(document, QStringLiteral("viscosity"), QString(), settings));
+    }
+    const QString recovery = window.autosave()->recoveryPath();
+    if (!waitFor([&] { return QFileInfo::exists(recovery); }, 30000)) {
+        std::fprintf(stderr, "autosaving_editor: no recovery file after 30 s\n");
+        return 1;
+    }
+    const io::SaveResult saved = io::saveScene(QString::fromLocal8Bit(argv[3]), document.scene());
+    if (!saved.ok()) {
+        std::fprintf(stderr, "autosaving_editor: %s\n", qPrintable(saved.error));
+        return 1;
+    }
+    std::printf("autosaved %s\n", qPrintable(recovery));
+    std::fflush(stdout);
+    return app.exec();
+}

@@ -1,0 +1,35 @@
+#pragma once
+// What the editor's UI tests share: waiting for the worker's frame that includes every edit made
+// so far. The wait polls with a deadline, never a fixed sleep.
+
+#include "ui/simulation_controller.h"
+#include "ui/simulation_frame.h"
+
+#include <QElapsedTimer>
+#include <QtTest>
+#include <memory>
+
+namespace test {
+
+// the newest frame once the worker has applied edit `sequence`, or null after timeoutMs
+inline std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::SimulationController &controller,
+                                                             std::uint64_t sequence, int timeoutMs = 10000)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < timeoutMs) {
+        const auto frame = controller.frame();
+        if (frame && frame->appliedEdit >= sequence)
+            return frame;
+        QTest::qWait(5);
+    }
+    return nullptr;
+}
+
+// the newest frame once the worker has applied every edit made so far, or null after 10 s
+inline std::shared_ptr<const ui::SimulationFrame> settledFrame(ui::SimulationController &controller)
+{
+    return frameAfter(controller, controller.sync());
+}
+
+}  // namespace test

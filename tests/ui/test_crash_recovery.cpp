@@ -1,0 +1,125 @@
+// Autosave and recovery end to end: an editor in a process of its own (autosaving_editor) changes
+// its scene, autosaves, and is killed with SIGKILL, as a crash or a power cut would end it. A new
+// editor in this process then starts on the same settings: recovery is offered, the recovery file
+// is still there while the question is open and after Cancel, and Yes restores exactly the scene
+// the killed editor had, after which the old files are gone.
+
+#include "ui/autosave.h"
+#include "ui/main_window.h"
+#include "ui/scene_document.h"
+#include "ui/viewport.h"
+
+#include "core/io/scene_file.h"
+
+#include <QDir>
+#include <QProcess>
+#include <QSettings>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QtTest>
+
+class TestCrashRecovery : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain()
+    {
+        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
+        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    }
+
+private slots:
+    void initTestCase();
+    void killedEditorIsRecoveredOnTheNextStart();
+
+private:
+    QTemporaryDir m_settings;
+    QTemporaryDir m_files;
+};
+
+void TestCrashRecovery::initTestCase()
+{
+    // this process and the child share throwaway settings: the recovery folder, autosave every second
+    QVERIFY(m_settings.isValid() && m_files.isValid());
+    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("test_crash_recovery"));
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    QSettings settings;
+    settings.setValue(QStringLiteral("autosave/directory"), m_files.filePath(QStringLiteral("recovery")));
+    settings.setValue(QStringLiteral("autosave/intervalSeconds"), 1);
+}
+
+void TestCrashRecovery::killedEditorIsRecoveredOnTheNextStart()
+{
+    // the user's file, as last saved
+    const QString scenePath = m_files.filePath(QStringLiteral("work.json"));
+    const io::LoadResult example = io::loadScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/cloth.json"));
+    QVERIFY2(example.ok(), qPrintable(example.error));
+    QVERIFY(io::saveScene(scenePath, *example.scene).ok());
+    const QString expectedPath = m_files.filePath(QStringLiteral("expected.json"));
+
+    // an editor changes it, autosaves and is killed
+    QProcess editor;
+    editor.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    editor.start(QStringLiteral(SPRINGLAB_AUTOSAVING_EDITOR), {m_settings.path(), scenePath, expectedPath});
+    QVERIFY2(editor.waitForStarted(10000), qPrintable(editor.errorString()));
+    QElapsedTimer clock;
+    clock.start();
+    QByteArray said;
+    while (!said.contains('\n') && editor.state() == QProcess::Running && clock.elapsed() < 60000) {
+        editor.waitForReadyRead(100);
+        said += editor.readAllStandardOutput();
+    }
+    QVERIFY2(said.startsWith("autosaved "), said.constData());
+    const QString recovery = QString::fromLocal8Bit(said.mid(10).trimmed());
+    QVERIFY(QFileInfo::exists(recovery));
+    editor.kill();  // SIGKILL: no destructor, no clean-up, the lock file stays behind
+    QVERIFY(editor.waitForFinished(10000));
+    QCOMPARE(editor.exitStatus(), QProcess::CrashExit);
+    QVERIFY2(QFileInfo::exists(recovery), "the killed editor's recovery file must survive it");
+
+    const io::LoadResult expected = io::loadScene(expectedPath);
+    QVERIFY2(expected.ok(), qPrintable(expected.error));
+    QVERIFY(!(*expected.scene == *example.scene));  // the killed editor's changes are real changes
+
+    // the next start asks; Cancel keeps the files for another start
+    int asked = 0;
+    bool recoveryThereWhenAsked = false;
+    QMessageBox::StandardButton answer = QMessageBox::Cancel;
+    const auto makeWindow = [&] {
+        auto *window = new ui::MainWindow;
+        window->setMessageBoxFunction([&](QMessageBox::Icon icon, const QString &, const QString &text,
+                                          QMessageBox::StandardButtons buttons, QMessageBox::StandardButton) {
+            if (icon == QMessageBox::Question && text.contains(QStringLiteral("did not close properly"))) {
+                ++asked;
+                recoveryThereWhenAsked = QFileInfo::exists(recovery);
+            }
+            return buttons.testFlag(answer) ? answer : QMessageBox::Ok;
+        });
+        return std::unique_ptr<ui::MainWindow>(window);
+    };
+    {
+        auto window = makeWindow();
+        QVERIFY(window->start());
+        QCOMPARE(asked, 1);
+        QVERIFY(recoveryThereWhenAsked);
+        QVERIFY(QFileInfo::exists(recovery));
+        QVERIFY(!window->document()->isModified());
+    }
+
+    // Yes: the killed editor's scene, as its file with unsaved changes; the old files go
+    answer = QMessageBox::Yes;
+    auto window = makeWindow();
+    QVERIFY(window->start());
+    QCOMPARE(asked, 2);
+    QVERIFY(recoveryThereWhenAsked);
+    QVERIFY(window->document()->scene() == *expected.scene);
+    QCOMPARE(window->document()->filePath(), QFileInfo(scenePath).absoluteFilePath());
+    QVERIFY(window->document()->isModified());
+    QVERIFY(!QFileInfo::exists(recovery));
+    QCOMPARE(ui::Autosave::findRecoveries(window->autosave()->directory()).size(), 0);
+}
+
+QTEST_MAIN(TestCrashRecovery)
+#include "test_crash_recovery.moc"

@@ -1,0 +1,298 @@
+// The monkey: seeded random user input on every example, 10 000 events each: clicks and drags on
+// the viewport with any button and modifier, wheel turns, the editor's keys, slider keys, typed
+// values (numbers, garbage, NaN, huge) in the docks' fields, and every menu action, with every
+// question and file dialog answered at random and any other modal dialog closed. Afterwards the
+// editor must still be alive (the worker publishes a frame for the latest edit) and the document
+// must hold a valid scene. The events come from the seed alone (std::mt19937 with a fixed
+// seed per example); a failure names the seed and the event, and SPRINGLAB_MONKEY_SEED and
+// SPRINGLAB_MONKEY_EVENTS rerun one case. With the simulation paused and each event waiting for
+// the worker, two runs of one seed end in the same scene (reproducibleFromTheSeed).
+
+#include "ui/main_window.h"
+#include "ui/scene_document.h"
+#include "ui/viewport.h"
+
+#include "core/validate.h"
+
+#include <QAbstractSlider>
+#include <QAbstractSpinBox>
+#include <QDialog>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSettings>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QUndoStack>
+#include <QWheelEvent>
+#include <QtTest>
+
+#include "frame_wait.h"
+
+#include <random>
+
+namespace {
+
+constexpr int kEvents = 10000;
+constexpr int kEventsPerFrame = 20;
+
+// what the monkey may press: the editor's keys, with and without modifiers
+struct KeyPress {
+    Qt::Key key;
+    Qt::KeyboardModifiers modifiers;
+};
+const KeyPress kKeys[] = {
+    {Qt::Key_1, {}}, {Qt::Key_2, {}}, {Qt::Key_3, {}}, {Qt::Key_4, {}}, {Qt::Key_5, {}},
+    {Qt::Key_F4, {}}, {Qt::Key_F5, {}}, {Qt::Key_T, {}}, {Qt::Key_A, {}}, {Qt::Key_P, {}}, {Qt::Key_F, {}},
+    {Qt::Key_Home, {}}, {Qt::Key_Escape, {}}, {Qt::Key_Delete, {}}, {Qt::Key_Backspace, {}},
+    {Qt::Key_Left, {}}, {Qt::Key_Right, {}}, {Qt::Key_Up, {}}, {Qt::Key_Down, {}},
+    {Qt::Key_A, Qt::ControlModifier}, {Qt::Key_D, Qt::ControlModifier}, {Qt::Key_C, Qt::ControlModifier},
+    {Qt::Key_V, Qt::ControlModifier}, {Qt::Key_Z, Qt::ControlModifier},
+    {Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier}, {Qt::Key_S, Qt::ControlModifier},
+    {Qt::Key_N, Qt::ControlModifier}, {Qt::Key_O, Qt::ControlModifier},
+};
+// what the monkey may type into a field
+const char *const kTyped[] = {"0", "1", "-1", "0.5", "1e3", "1e300", "-1e300", "nan", "inf", "-0", "abc", "", "2.5e-7",
+                              "99999999999999999999", "1,5", " 3 "};
+
+// F4 and Step run the simulation: the reproducible run leaves them out
+bool runsTheSimulation(const KeyPress &press)
+{
+    return press.key == Qt::Key_F4 && press.modifiers == Qt::NoModifier;
+}
+
+}  // namespace
+
+class TestMonkey : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain()
+    {
+        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
+        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    }
+
+private slots:
+    void initTestCase();
+    void survivesRandomInput_data();
+    void survivesRandomInput();
+    void reproducibleFromTheSeed();
+
+private:
+    struct Outcome {
+        core::SceneDesc scene;
+        int undoSteps = 0;
+        int edits = 0;  // changes the document announced
+        QString failure;  // empty when the editor survived with a valid scene
+    };
+    // `events` seeded events on a fresh window opened on `example`; `paused`: the simulation
+    // never runs and each event waits for the worker, so that nothing depends on timing
+    Outcome run(const QString &example, std::uint32_t seed, int events, bool paused);
+
+    QTemporaryDir m_settings;
+    QTemporaryDir m_files;
+};
+
+void TestMonkey::initTestCase()
+{
+    QVERIFY(m_settings.isValid() && m_files.isValid());
+    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("test_monkey"));
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    // copies of the examples to open: a Save after Open must never write into the source tree
+    for (const QString &example : ui::MainWindow::exampleNames())
+        QVERIFY(QFile::copy(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/%1.json").arg(example),
+                            m_files.filePath(example + QStringLiteral(".json"))));
+    QSettings settings;
+    settings.setValue(QStringLiteral("autosave/directory"), m_files.filePath(QStringLiteral("recovery")));
+    settings.setValue(QStringLiteral("autosave/intervalSeconds"), 0);
+    settings.setValue(QStringLiteral("screenshots/directory"), m_files.filePath(QStringLiteral("shots")));
+}
+
+TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, int events, bool paused)
+{
+    std::mt19937 random(seed);
+    const auto below = [&random](int n) { return static_cast<int>(random() % static_cast<std::uint32_t>(n)); };
+
+    const QStringList examples = ui::MainWindow::exampleNames();
+    auto window = std::make_unique<ui::MainWindow>();
+    // questions: any of the offered buttons; file dialogs: an example, a file of our own, or Cancel
+    window->setMessageBoxFunction([&](QMessageBox::Icon, const QString &, const QString &,
+                                      QMessageBox::StandardButtons buttons, QMessageBox::StandardButton) {
+        QList<QMessageBox::StandardButton> offered;
+        for (int bit = 0; bit < 32; ++bit)
+            if (buttons.testFlag(static_cast<QMessageBox::StandardButton>(1u << bit)))
+                offered << static_cast<QMessageBox::StandardButton>(1u << bit);
+        return offered.isEmpty() ? QMessageBox::Ok : offered[below(int(offered.size()))];
+    });
+    window->setFileDialogFunction([&](ui::MainWindow::FileDialogMode mode, const QString &, const QString &) {
+        switch (below(3)) {
+        case 0: return QString();
+        case 1:
+            return mode == ui::MainWindow::FileDialogMode::Open
+                       ? m_files.filePath(examples[below(int(examples.size()))] + QStringLiteral(".json"))
+                       : m_files.filePath(QStringLiteral("monkey.json"));
+        default: return m_files.filePath(QStringLiteral("monkey.json"));
+        }
+    });
+    window->resize(800, 600);  // small: software GL draws every pixel
+    window->show();
+    window->activateWindow();
+    if (!QTest::qWaitForWindowActive(window.get()))
+        return {{}, 0, 0, QStringLiteral("the window never became active")};
+    QString error;
+    if (!window->openExample(example, &error))
+        return {{}, 0, 0, error};
+    int edits = 0;
+    QObject::connect(window->document(), &ui::SceneDocument::sceneChanged, window.get(), [&edits] { ++edits; });
+    if (paused && window->controller()->isRunning())
+        QTest::keyClick(window.get(), Qt::Key_F4);
+
+    // any modal dialog the window opens itself (help, about, a folder chooser) is closed at once
+    QTimer closer;
+    QObject::connect(&closer, &QTimer::timeout, [] {
+        if (QWidget *modal = QApplication::activeModalWidget()) {
+            if (auto *dialog = qobject_cast<QDialog *>(modal))
+                dialog->reject();
+            else
+                modal->close();
+        }
+    });
+    closer.start(5);
+
+    // the menu actions, except Quit (which would end the test, not test the editor)
+    QList<QAction *> actions;
+    for (QMenu *menu : window->menuBar()->findChildren<QMenu *>())
+        for (QAction *action : menu->actions())
+            if (!action->isSeparator() && !action->menu() && action->objectName() != QStringLiteral("actionQuit"))
+                actions << action;
+    const auto isPlay = [](const QAction *action) {
+        return action->objectName() == QStringLiteral("actionPlay") || action->objectName() == QStringLiteral("actionStep");
+    };
+
+    ui::Viewport *viewport = window->viewport();
+    const auto somewhere = [&] { return QPoint(below(viewport->width()), below(viewport->height())); };
+    for (int e = 0; e < events; ++e) {
+        const int kind = below(100);
+        if (kind < 30) {
+            // click or drag on the viewport
+            const Qt::MouseButton buttons[] = {Qt::LeftButton, Qt::LeftButton, Qt::LeftButton, Qt::RightButton,
+                                               Qt::MiddleButton};
+            const Qt::KeyboardModifiers modifiers[] = {Qt::NoModifier, Qt::NoModifier, Qt::ShiftModifier,
+                                                       Qt::ControlModifier};
+            const Qt::MouseButton button = buttons[below(5)];
+            const Qt::KeyboardModifiers modifier = modifiers[below(4)];
+            const QPoint from = somewhere();
+            QTest::mousePress(viewport, button, modifier, from);
+            for (int m = below(4); m > 0; --m)
+                QTest::mouseMove(viewport, somewhere());
+            QTest::mouseRelease(viewport, button, modifier, somewhere());
+        } else if (kind < 38) {
+            const QPoint at = somewhere();
+            QWheelEvent wheel(at, viewport->mapToGlobal(at), QPoint(), QPoint(0, below(2) ? 120 : -120), Qt::NoButton,
+                              Qt::NoModifier, Qt::NoScrollPhase, false);
+            QCoreApplication::sendEvent(viewport, &wheel);
+        } else if (kind < 63) {
+            const KeyPress &press = kKeys[below(int(std::size(kKeys)))];
+            if (!(paused && runsTheSimulation(press)))
+                QTest::keyClick(window.get(), press.key, press.modifiers);
+        } else if (kind < 75) {
+            // a slider, moved by its own keys
+            const QList<QAbstractSlider *> sliders = window->findChildren<QAbstractSlider *>();
+            QList<QAbstractSlider *> usable;
+            for (QAbstractSlider *slider : sliders)
+                if (slider->isVisible() && slider->isEnabled())
+                    usable << slider;
+            if (!usable.isEmpty()) {
+                const Qt::Key keys[] = {Qt::Key_PageUp, Qt::Key_PageDown, Qt::Key_Home, Qt::Key_End, Qt::Key_Left,
+                                        Qt::Key_Right};
+                QTest::keyClick(usable[below(int(usable.size()))], keys[below(6)]);
+            }
+        } else if (kind < 87) {
+            // a value typed into a field of a dock, then Enter
+            QList<QWidget *> fields;
+            for (QAbstractSpinBox *box : window->findChildren<QAbstractSpinBox *>())
+                if (box->isVisible() && box->isEnabled())
+                    fields << box;
+            for (QLineEdit *line : window->findChildren<QLineEdit *>())
+                if (line->isVisible() && line->isEnabled() && !qobject_cast<QAbstractSpinBox *>(line->parentWidget()))
+                    fields << line;
+            if (!fields.isEmpty()) {
+                QWidget *field = fields[below(int(fields.size()))];
+                field->setFocus();
+                QTest::keyClick(field, Qt::Key_A, Qt::ControlModifier);
+                QTest::keyClicks(field, QString::fromLatin1(kTyped[below(int(std::size(kTyped)))]));
+                QTest::keyClick(field, Qt::Key_Return);
+            }
+        } else {
+            QAction *action = actions[below(int(actions.size()))];
+            if (action->isEnabled() && !(paused && isPlay(action)))
+                action->trigger();
+        }
+        if (paused) {
+            if (!test::settledFrame(*window->controller()))
+                return {{}, 0, 0, QStringLiteral("seed %1, event %2: the worker stopped answering").arg(seed).arg(e)};
+        } else if (e % kEventsPerFrame == 0) {
+            // let the window catch up (draw, take the worker's frame) every few events, as a
+            // user's events arrive between frames; drawing after every one would only be slow
+            QCoreApplication::processEvents();
+        }
+        if (window->isHidden())
+            return {{}, 0, 0, QStringLiteral("seed %1, event %2: the window closed").arg(seed).arg(e)};
+    }
+    closer.stop();
+
+    // alive: the worker answers with a frame of the latest scene; valid: the validator accepts it
+    Outcome outcome;
+    outcome.scene = window->document()->scene();
+    outcome.undoSteps = window->document()->undoStack()->count();
+    outcome.edits = edits;
+    const auto frame = test::settledFrame(*window->controller());
+    if (!frame)
+        outcome.failure = QStringLiteral("seed %1: no frame from the worker after the events").arg(seed);
+    else if (const auto problem = core::findProblem(outcome.scene))
+        outcome.failure = QStringLiteral("seed %1: the scene is not valid: %2").arg(seed).arg(QString::fromStdString(problem->message));
+    return outcome;
+}
+
+void TestMonkey::survivesRandomInput_data()
+{
+    QTest::addColumn<QString>("example");
+    QTest::addColumn<std::uint32_t>("seed");
+    const QByteArray only = qgetenv("SPRINGLAB_MONKEY_SEED");
+    const QStringList examples = ui::MainWindow::exampleNames();
+    for (int i = 0; i < examples.size(); ++i) {
+        const std::uint32_t seed = only.isEmpty() ? 1000u + static_cast<std::uint32_t>(i) : only.toUInt();
+        QTest::newRow(qPrintable(examples[i])) << examples[i] << seed;
+    }
+}
+
+void TestMonkey::survivesRandomInput()
+{
+    QFETCH(QString, example);
+    QFETCH(std::uint32_t, seed);
+    const int events = qEnvironmentVariableIsSet("SPRINGLAB_MONKEY_EVENTS")
+                           ? qEnvironmentVariableIntValue("SPRINGLAB_MONKEY_EVENTS")
+                           : kEvents;
+    const Outcome outcome = run(example, seed, events, false);
+    QVERIFY2(outcome.failure.isEmpty(), qPrintable(outcome.failure));
+    QVERIFY(outcome.edits > 0);  // the monkey did edit
+}
+
+void TestMonkey::reproducibleFromTheSeed()
+{
+    const Outcome first = run(QStringLiteral("springs"), 77u, 400, true);
+    QVERIFY2(first.failure.isEmpty(), qPrintable(first.failure));
+    const Outcome second = run(QStringLiteral("springs"), 77u, 400, true);
+    QVERIFY2(second.failure.isEmpty(), qPrintable(second.failure));
+    QCOMPARE(second.undoSteps, first.undoSteps);
+    QVERIFY(second.scene == first.scene);
+    QVERIFY(first.edits > 0);
+    QCOMPARE(second.edits, first.edits);
+}
+
+QTEST_MAIN(TestMonkey)
+#include "test_monkey.moc"
