@@ -1,7 +1,9 @@
 // springlab-sim: runs a scene with no window (issue 2, docs/scene-format.md).
 //   springlab-sim SCENE.json [--duration SECONDS | --steps N] [--time-step H] [--substeps S]
 //                 [--integrator NAME] [--tolerance TOL] [--output FINAL.json] [--trace TRACE.csv [--every K]] [--quiet]
-// Exit code 0 done, 2 bad file or argument, 3 the simulation blew up.
+//        springlab-sim --replay SESSION.json [--output FINAL.json] [--quiet]
+// Exit code 0 done, 2 bad file or argument, 3 the simulation blew up, 4 a replay did not end with
+// the recorded state.
 
 #include "sim_options.h"
 #include "trace_writer.h"
@@ -12,6 +14,8 @@
 #include "core/state.h"
 #include "core/stability.h"
 #include "core/step.h"
+
+#include "ui/session_file.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -26,6 +30,7 @@ namespace {
 constexpr int kExitOk = 0;
 constexpr int kExitBadInput = 2;
 constexpr int kExitBlewUp = 3;
+constexpr int kExitReplayDiffers = 4;
 
 int failWith(const QString &message)
 {
@@ -45,6 +50,36 @@ QString energyRow(const char *label, const core::Energies &e)
                              e.total());
 }
 
+// --replay: the recording run again from its start; its final state must hash as recorded
+int replaySession(const app::SimOptions &options)
+{
+    const ui::RecordingLoad loaded = ui::loadRecording(options.scenePath);
+    if (!loaded.recording)
+        return failWith(loaded.error);
+    const ui::SessionRecording &recording = *loaded.recording;
+    QElapsedTimer clock;
+    clock.start();
+    const ui::ReplayResult replayed = ui::replay(recording);
+    if (!replayed.error.empty()) {
+        failWith(options.scenePath + u": "_s + QString::fromStdString(replayed.error));
+        return kExitReplayDiffers;
+    }
+    if (!options.outputPath.isEmpty()) {
+        core::SceneDesc final = *recording.scene;
+        core::storeState(replayed.state, final);
+        if (const io::SaveResult saved = io::saveScene(options.outputPath, final); !saved.ok())
+            return failWith(saved.error);
+    }
+    const auto hex = [](std::uint64_t hash) { return QString::number(hash, 16).rightJustified(16, u'0'); };
+    const bool same = replayed.hash == recording.finalHash;
+    QTextStream out(same ? stdout : stderr);
+    if (!options.quiet || !same)
+        out << (same ? u""_s : u"springlab-sim: "_s) << options.scenePath << u": "_s << recording.entries.size()
+            << u" edits over "_s << recording.steps << u" steps replayed in "_s << clock.elapsed() << u" ms; final state "_s
+            << hex(replayed.hash) << (same ? u", as recorded\n"_s : u", but the recording ended with "_s + hex(recording.finalHash) + u'\n');
+    return same ? kExitOk : kExitReplayDiffers;
+}
+
 }  // namespace
 
 int main(int argc, char *argv[])
@@ -62,6 +97,8 @@ int main(int argc, char *argv[])
     if (!parsed.options)
         return failWith(parsed.error + u"\n  (springlab-sim --help lists the options)"_s);
     const app::SimOptions &options = *parsed.options;
+    if (options.replay)
+        return replaySession(options);
 
     // the scene, with the command line's settings over the file's
     const io::LoadResult loaded = io::loadScene(options.scenePath);

@@ -82,6 +82,17 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
     }
     options.scenePath = positional.first();
 
+    // a replay runs the recording as it was: nothing may change it
+    options.replay = parser.isSet(u"replay"_s);
+    if (options.replay) {
+        for (const QString &name : {u"duration"_s, u"steps"_s, u"time-step"_s, u"substeps"_s, u"integrator"_s,
+                                   u"tolerance"_s, u"trace"_s, u"every"_s})
+            if (parser.isSet(name)) {
+                error = u"--replay runs the recording as it was recorded: --%1 cannot change it"_s.arg(name);
+                return false;
+            }
+    }
+
     // how long
     if (parser.isSet(u"steps"_s) && parser.isSet(u"duration"_s)) {
         error = u"--steps and --duration cannot be used together"_s;
@@ -186,6 +197,8 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
         {u"trace"_s, u"Write positions and velocities as CSV: step,time,particle,x,y,z,vx,vy,vz."_s, u"TRACE.csv"_s},
         {u"every"_s, u"With --trace: one set of rows every K steps (default 1), step 0 included."_s, u"K"_s},
         {u"quiet"_s, u"Print nothing but errors."_s},
+        {u"replay"_s, u"The file is a session recorded in the editor (Simulation > Record Session): replay it "
+                      "and check that it ends with the recorded state, bit for bit (exit 4 if not)."_s},
     });
 
     ParsedOptions parsed;

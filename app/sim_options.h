@@ -29,6 +29,7 @@ struct SimOptions {
     QString tracePath;        // --trace TRACE.csv; empty: none
     std::uint64_t every = 1;  // --every K: a trace row set every K steps
     bool quiet = false;
+    bool replay = false;  // --replay: scenePath is a session recording (ui/session_file.h)
 };
 
 struct ParsedOptions {

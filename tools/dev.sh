@@ -3,7 +3,8 @@
 # builds, then either launches the editor or runs the whole test suite.
 #
 #   tools/dev.sh run [SCENE.json]   build in Release and open the editor (default: the springs example)
-#   tools/dev.sh test               build with warnings as errors and run every test
+#   tools/dev.sh test               build with warnings as errors and run every test, then the unit
+#                                   tests under AddressSanitizer + UBSan, and a minute of fuzzing
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -44,6 +45,11 @@ case "${1:-}" in
     install_missing
     build ci
     ctest --preset ci
+    # the unit tests again under AddressSanitizer and UndefinedBehaviorSanitizer (leaks included)
+    build asan
+    ctest --preset asan -L unit
+    # the scene loader fuzzed for a minute (installs clang-14 and libFuzzer if missing)
+    bash tools/fuzz.sh 60
     ;;
   *)
     echo "usage: tools/dev.sh run [SCENE.json] | tools/dev.sh test" >&2

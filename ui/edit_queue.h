@@ -57,8 +57,14 @@ struct CaptureStateEdit {
     std::uint64_t request = 0;  // the controller's number for this request
 };
 
+// session recording (session_recording.h): start, and stop handing the recording back in the
+// frames, tagged with the request's number
+struct StartRecordingEdit {};
+struct StopRecordingEdit {
+    std::uint64_t request = 0;
+};
 using Edit = std::variant<SetSceneEdit, PlayEdit, PauseEdit, StepOnceEdit, ResetEdit, TiltEdit, SteerEdit, SyncEdit,
-                          PlanAccuracyEdit, GrabEdit, CaptureStateEdit>;
+                          PlanAccuracyEdit, GrabEdit, CaptureStateEdit, StartRecordingEdit, StopRecordingEdit>;
 
 // a thread-safe first-in first-out queue of edits, numbered in the order they were pushed
 class EditQueue {

@@ -10,6 +10,7 @@
 #include "recent_files.h"
 #include "scene_commands.h"
 #include "scene_document.h"
+#include "session_file.h"
 #include "simulation_controller.h"
 #include "status_text.h"
 #include "viewport.h"
@@ -141,6 +142,14 @@ void MainWindow::createActions()
            "to them"));
     connect(m_captureAction, &QAction::triggered, this, &MainWindow::useCurrentStateAsInitial);
 
+    m_recordAction = new QAction(tr("&Record Session"), this);
+    m_recordAction->setObjectName(QStringLiteral("actionRecordSession"));
+    m_recordAction->setCheckable(true);
+    m_recordAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_recordAction->setStatusTip(tr("Record the run and every edit from now on; unchecking saves the recording, which "
+                                    "springlab-sim --replay runs again to the same bits"));
+    connect(m_recordAction, &QAction::toggled, this, &MainWindow::setRecording);
+
     m_tiltAction = new QAction(tr("&Tilt"), this);
     m_tiltAction->setObjectName(QStringLiteral("actionTilt"));
     m_tiltAction->setShortcut(Qt::Key_T);
@@ -201,6 +210,7 @@ void MainWindow::createMenus()
     simulation->addAction(m_stepAction);
     simulation->addAction(m_resetAction);
     simulation->addAction(m_captureAction);
+    simulation->addAction(m_recordAction);
     simulation->addSeparator();
     simulation->addAction(m_tiltAction);
     simulation->addAction(m_collisionsAction);
@@ -470,6 +480,11 @@ void MainWindow::frameChanged()
         applyPlan(*frame->accuracyPlan);
     }
     // so has the state asked for by Use Current State as Initial
+    if (m_recordingRequest != 0 && frame->recordingRequest >= m_recordingRequest) {
+        m_recordingRequest = 0;
+        if (frame->recording)
+            saveSessionRecording(*frame->recording);
+    }
     if (m_captureRequest != 0 && frame->captureRequest >= m_captureRequest && frame->capturedState) {
         m_captureRequest = 0;
         applyCapturedState(*frame->capturedState);
@@ -610,6 +625,34 @@ void MainWindow::applyPlan(const core::AccuracyPlan &plan)
     statusBar()->showMessage(summary, kPlanMessageMs);
     if (m_accuracy)
         m_accuracy->showPlan(plan, summary);
+}
+
+void MainWindow::setRecording(bool on)
+{
+    if (on) {
+        m_controller->startRecording();
+        statusBar()->showMessage(tr("Recording the session; Ctrl+R again to stop and save it"));
+    } else {
+        // the worker hands the recording over in a frame
+        m_recordingRequest = m_controller->stopRecording();
+    }
+}
+
+void MainWindow::saveSessionRecording(const SessionRecording &recording)
+{
+    const QString suggested = QDir::home().filePath(m_document->displayName() + QStringLiteral(".replay.json"));
+    const QString path = chooseFile(FileDialogMode::Save, tr("Save session recording"), suggested);
+    if (path.isEmpty())
+        return;
+    if (const QString error = saveRecording(path, recording); !error.isEmpty()) {
+        ask(QMessageBox::Warning, tr("Save session recording"), error);
+        return;
+    }
+    statusBar()->showMessage(tr("Saved the recording of %1 steps and %2 edits to %3; springlab-sim --replay runs it")
+                                 .arg(recording.steps)
+                                 .arg(recording.entries.size())
+                                 .arg(QDir::toNativeSeparators(path)),
+                             10000);
 }
 
 void MainWindow::useCurrentStateAsInitial()

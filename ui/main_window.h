@@ -37,6 +37,7 @@ class Autosave;
 class ParametersPanel;
 class RecentFiles;
 struct CapturedState;
+struct SessionRecording;
 class SceneDocument;
 class SimulationController;
 class Viewport;
@@ -108,6 +109,8 @@ public:
     // Simulation › Use Current State as Initial: asks the worker for its positions and
     // velocities; they become the scene's initial conditions, as one undo step, once they arrive
     void useCurrentStateAsInitial();
+    // Simulation > Record Session: on starts recording, off saves the recording (a file dialog)
+    void setRecording(bool on);
 
     SceneDocument *document() const { return m_document; }
     // the editing tools and their selection (main_window_editing.cpp)
@@ -167,6 +170,7 @@ private:
     void setAutosaveInterval(int seconds);
     static QString droppedScenePath(const QMimeData *mime);
     void applyCapturedState(const CapturedState &state);
+    void saveSessionRecording(const SessionRecording &recording);
 
     void chooseScreenshotDirectory();
     void showHelp();
@@ -183,7 +187,8 @@ private:
     Autosave *m_autosave = nullptr;
     MessageBoxFunction m_messageBox;
     FileDialogFunction m_fileDialog;
-    std::uint64_t m_captureRequest = 0;  // the captured state awaited from the worker; 0: none
+    std::uint64_t m_captureRequest = 0;
+    std::uint64_t m_recordingRequest = 0;  // the recording awaited from the worker; 0: none  // the captured state awaited from the worker; 0: none
     bool m_pairSpeedWarned = false;      // the latest frame's particles were past the pair speed limit
     Viewport *m_viewport = nullptr;
     EditTools *m_tools = nullptr;
@@ -207,6 +212,7 @@ private:
     QAction *m_collisionsAction = nullptr;
     QAction *m_accuracyAction = nullptr;
     QAction *m_captureAction = nullptr;
+    QAction *m_recordAction = nullptr;
     QList<QAction *> m_steerActions;
     QAction *m_revertAction = nullptr;
     QMenu *m_recentMenu = nullptr;

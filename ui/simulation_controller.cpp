@@ -126,6 +126,18 @@ std::uint64_t SimulationController::planAccuracy(double tolerance)
     return request;
 }
 
+std::uint64_t SimulationController::startRecording()
+{
+    return post(StartRecordingEdit{});
+}
+
+std::uint64_t SimulationController::stopRecording()
+{
+    const std::uint64_t request = ++m_recordingRequests;
+    post(StopRecordingEdit{request});
+    return request;
+}
+
 std::uint64_t SimulationController::captureState()
 {
     const std::uint64_t request = ++m_captureRequests;

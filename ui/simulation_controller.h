@@ -48,6 +48,10 @@ public:
     // asks the worker for a copy of its positions and velocities; returns the request's number,
     // which frame()->captureRequest reaches with the captured state
     std::uint64_t captureState();
+    // starts recording the session; stopRecording() ends it and returns the request's number,
+    // which frame()->recordingRequest reaches with the recording
+    std::uint64_t startRecording();
+    std::uint64_t stopRecording();
 
     // tilts are drawn from this seed: the n-th tilt after setTiltSeed(s) is the same every time
     void setTiltSeed(std::uint64_t seed);
@@ -77,6 +81,7 @@ private:
 
     EditQueue m_edits;
     LatestMailbox<SimulationFrame> m_mailbox;
+    std::uint64_t m_recordingRequests = 0;
     QThread *m_thread = nullptr;
     SimulationWorker *m_worker = nullptr;
     std::shared_ptr<const SimulationFrame> m_frame;

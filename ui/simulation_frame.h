@@ -4,6 +4,7 @@
 // latest accuracy plan and captured state asked for. Immutable once published.
 
 #include "captured_state.h"
+#include "session_recording.h"
 
 #include "core/accuracy_planner.h"
 #include "core/diagnostics.h"
@@ -45,6 +46,10 @@ struct SimulationFrame {
     // the latest state captured on request (null before the first) and the request it answers
     std::shared_ptr<const CapturedState> capturedState;
     std::uint64_t captureRequest = 0;
+    // the session recording the latest stop request ended (null if none was running) and that
+    // request's number
+    std::shared_ptr<const SessionRecording> recording;
+    std::uint64_t recordingRequest = 0;
 
     // the explicit integrators' stability limit for the model (nullopt before the first scene)
     std::optional<core::StabilityLimit> stability;

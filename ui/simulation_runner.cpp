@@ -1,10 +1,13 @@
 #include "simulation_runner.h"
 
+#include "core/state_hash.h"
+
 #include "core/step.h"
 
 #include <chrono>
 #include <cstdio>
 #include <random>
+#include <utility>
 
 namespace ui {
 
@@ -36,6 +39,11 @@ Overloaded(Handlers...) -> Overloaded<Handlers...>;
 
 void SimulationRunner::apply(const Edit &edit)
 {
+    // what changes the run goes into the recording; requests for copies and plans do not
+    if (m_recording && !std::holds_alternative<SyncEdit>(edit) && !std::holds_alternative<PlanAccuracyEdit>(edit) &&
+        !std::holds_alternative<CaptureStateEdit>(edit) && !std::holds_alternative<StartRecordingEdit>(edit) &&
+        !std::holds_alternative<StopRecordingEdit>(edit))
+        m_recording->entries.push_back({m_stepsTaken - m_recordingFrom, edit});
     std::visit(Overloaded{
                    [this](const SetSceneEdit &e) { setScene(e); },
                    [this](const PlayEdit &) { m_running = hasScene(); },
@@ -44,7 +52,8 @@ void SimulationRunner::apply(const Edit &edit)
                        m_running = false;
                        if (hasScene()) {
                            m_lastGood = m_state;
-                           stepOnce();
+                           if (stepOnce())
+                               ++m_stepsTaken;
                            m_estimateStale = true;
                        }
                    },
@@ -55,6 +64,11 @@ void SimulationRunner::apply(const Edit &edit)
                    [this](const PlanAccuracyEdit &e) { planAccuracy(e); },
                    [this](const CaptureStateEdit &e) { captureState(e); },
                    [this](const GrabEdit &e) { grab(e); },
+                   [this](const StartRecordingEdit &) { startRecording(); },
+                   [this](const StopRecordingEdit &e) {
+                       m_finishedRecording = stopRecording();
+                       m_recordingRequest = e.request;
+                   },
                },
                edit);
 }
@@ -256,10 +270,12 @@ SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double b
     while (m_owed >= h) {
         if (!stepOnce()) {
             blewUp = true;
+            m_stepsTaken -= static_cast<std::uint64_t>(result.steps);  // back at the tick's start
             break;
         }
         m_owed -= h;
         ++result.steps;
+        ++m_stepsTaken;
         // out of time for this tick: give up what is still owed
         if (secondsSince(start) > budgetSeconds) {
             result.droppedSeconds = m_owed;
@@ -355,6 +371,61 @@ bool SimulationRunner::updateStability()
         return false;
     m_stabilityStale = false;
     m_stability = core::stabilityLimit(*m_model, m_state);
+    return true;
+}
+
+void SimulationRunner::startRecording()
+{
+    if (!hasScene())
+        return;
+    auto recording = std::make_shared<SessionRecording>();
+    recording->scene = m_scene;
+    recording->position = m_state.position;
+    recording->velocity = m_state.velocity;
+    recording->time = m_state.time;
+    recording->step = m_state.step;
+    recording->adaptiveStep = m_state.adaptiveStep;
+    // forces held on from before the start
+    if (m_steerParticle >= 0)
+        recording->entries.push_back({0, SteerEdit{m_steerParticle, m_steerForce}});
+    if (m_grabParticle >= 0)
+        recording->entries.push_back({0, GrabEdit{m_grabParticle, m_grabTarget}});
+    m_recording = std::move(recording);
+    m_recordingFrom = m_stepsTaken;
+}
+
+std::shared_ptr<const SessionRecording> SimulationRunner::stopRecording()
+{
+    if (!m_recording)
+        return nullptr;
+    m_recording->steps = m_stepsTaken - m_recordingFrom;
+    m_recording->finalHash = core::stateHash(m_state);
+    return std::exchange(m_recording, nullptr);
+}
+
+bool SimulationRunner::restoreRecordedStart(const SessionRecording &recording)
+{
+    if (!hasScene() || recording.position.cols() != m_state.position.cols() ||
+        recording.velocity.cols() != m_state.velocity.cols())
+        return false;
+    m_state.position = recording.position;
+    m_state.velocity = recording.velocity;
+    m_state.time = recording.time;
+    m_state.step = recording.step;
+    m_state.adaptiveStep = recording.adaptiveStep;
+    m_stepsTaken = 0;
+    m_estimateStale = true;
+    return true;
+}
+
+bool SimulationRunner::stepForReplay()
+{
+    if (!hasScene())
+        return false;
+    m_lastGood = m_state;
+    if (!stepOnce())
+        return false;
+    ++m_stepsTaken;
     return true;
 }
 

@@ -14,6 +14,7 @@
 
 #include "captured_state.h"
 #include "edit_queue.h"
+#include "session_recording.h"
 
 #include "core/accuracy_planner.h"
 #include "core/diagnostics.h"
@@ -44,6 +45,23 @@ public:
 
     // applies one edit between two steps
     void apply(const Edit &edit);
+
+    // recording (session_recording.h): from startRecording() on, every edit that changes the run
+    // is kept with the steps taken before it; stopRecording() ends it and hands it over (null when
+    // none was started or there is no scene)
+    void startRecording();
+    std::shared_ptr<const SessionRecording> stopRecording();
+    bool isRecording() const { return m_recording != nullptr; }
+    // the recording the latest StopRecordingEdit ended (null if none was running) and its request
+    std::shared_ptr<const SessionRecording> finishedRecording() const { return m_finishedRecording; }
+    std::uint64_t recordingRequest() const { return m_recordingRequest; }
+    // steps that stuck since the first scene: a tick that blows up goes back to its start, and
+    // its steps are taken back from the count too
+    std::uint64_t stepsTaken() const { return m_stepsTaken; }
+    // for replays: the recording's starting state in place of the scene's initial one (false if
+    // it does not fit the scene), and one step as a run takes it (false if it blew up)
+    bool restoreRecordedStart(const SessionRecording &recording);
+    bool stepForReplay();
 
     // advances simulated time by wallSeconds (already capped by the caller) in whole steps; the
     // remainder is owed to the next call. Stops early when the steps have taken budgetSeconds of
@@ -145,6 +163,12 @@ private:
     // the mouse spring: the particle held (-1: none) and where the cursor holds it
     int m_grabParticle = -1;
     Eigen::Vector3d m_grabTarget = Eigen::Vector3d::Zero();
+
+    std::uint64_t m_stepsTaken = 0;
+    std::shared_ptr<SessionRecording> m_recording;  // while recording
+    std::uint64_t m_recordingFrom = 0;              // m_stepsTaken when it started
+    std::shared_ptr<const SessionRecording> m_finishedRecording;
+    std::uint64_t m_recordingRequest = 0;
 
     // the steering force, kept across resets and parameter changes
     int m_steerParticle = -1;

@@ -111,6 +111,8 @@ void SimulationWorker::publish()
     frame->accuracyRequest = m_runner.accuracyRequest();
     frame->capturedState = m_runner.capturedState();
     frame->captureRequest = m_runner.captureRequest();
+    frame->recording = m_runner.finishedRecording();
+    frame->recordingRequest = m_runner.recordingRequest();
     frame->stability = m_runner.stability();
     frame->pairSpeedWarning = m_runner.pairSpeedWarning();
     if (m_mailbox.publish(std::move(frame)))

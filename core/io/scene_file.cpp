@@ -38,14 +38,6 @@
 
 namespace io {
 
-namespace {
-
-using namespace Qt::Literals::StringLiterals;
-
-constexpr QLatin1String kFormatName("springlab-scene");
-
-enum class Need { Required, Optional };
-
 // the shortest text that reads back as the same double; JSON has no NaN or infinity, so a
 // non-finite value (which a valid scene never holds) is written as null and refused on load
 QByteArray formatNumber(double value)
@@ -56,6 +48,14 @@ QByteArray formatNumber(double value)
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     return QByteArray(buffer.data(), result.ptr - buffer.data());
 }
+
+namespace {
+
+using namespace Qt::Literals::StringLiterals;
+
+constexpr QLatin1String kFormatName("springlab-scene");
+
+enum class Need { Required, Optional };
 
 QString describe(const QJsonValue &value)
 {

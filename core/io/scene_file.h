@@ -50,6 +50,10 @@ LoadResult loadScene(const QString &path, const LoadLimits &limits = {});
 // the same from bytes in memory; sourceName stands for the file in messages
 LoadResult parseScene(const QByteArray &json, const QString &sourceName, const LoadLimits &limits = {});
 
+// the shortest text that reads back as the same double, sign of zero included (QJsonDocument
+// writes -0.0 as 0); null for a value that is not finite
+QByteArray formatNumber(double value);
+
 // the scene as indented JSON with every key written out
 QByteArray sceneToJson(const core::SceneDesc &scene);
 

@@ -3,6 +3,8 @@
 
 #include "core/io/scene_file.h"
 #include "program_run.h"
+#include "ui/session_file.h"
+#include "ui/simulation_runner.h"
 
 #include <QDir>
 #include <QFile>
@@ -119,6 +121,7 @@ private slots:
     void overridesReachTheOutput();
     void resumeEqualsUninterrupted_data();
     void resumeEqualsUninterrupted();
+    void replayRunsARecordingToItsBits();
 
 private:
     QString path(const QString &name) const { return m_dir.filePath(name); }
@@ -369,6 +372,52 @@ void TestSimCli::resumeEqualsUninterrupted()
     if (readAll(initial) != expected)
         QVERIFY(readAll(half) != expected);  // a moving scene: the halfway state differs from the end
     QCOMPARE(readAll(resumed), expected);
+}
+
+void TestSimCli::replayRunsARecordingToItsBits()
+{
+    // a session of the editor's runner: a tilt and a parameter change while it runs
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{std::make_shared<const core::SceneDesc>(testScene()), ui::SceneChange::Replace});
+    runner.apply(ui::StartRecordingEdit{});
+    runner.apply(ui::PlayEdit{});
+    runner.advance(0.2, 1e9);
+    runner.apply(ui::TiltEdit{7, 1.0});
+    auto changed = std::make_shared<core::SceneDesc>(*runner.scene());
+    changed->settings.viscosity = 0.3;
+    runner.apply(ui::SetSceneEdit{changed, ui::SceneChange::Parameters});
+    runner.advance(0.2, 1e9);
+    runner.apply(ui::StopRecordingEdit{1});
+    const auto recording = runner.finishedRecording();
+    QVERIFY(recording && recording->steps > 0);
+    const QString session = path(u"session.replay.json"_s);
+    QCOMPARE(ui::saveRecording(session, *recording), QString());
+
+    // replayed: the recorded bits, and its final state written as a scene to run on from
+    const Run replayed = sim({session, u"--replay"_s, u"--output"_s, path(u"replayed.json"_s)});
+    QCOMPARE(replayed.exitCode, 0);
+    const QString hash = QString::number(recording->finalHash, 16).rightJustified(16, u'0');
+    QVERIFY2(replayed.out.contains(("final state " + hash + ", as recorded").toUtf8()), replayed.out.constData());
+    const io::LoadResult final = io::loadScene(path(u"replayed.json"_s));
+    QVERIFY2(final.ok(), qPrintable(final.error));
+    core::SceneDesc expected = *changed;
+    core::storeState(runner.state(), expected);
+    QVERIFY(final.scene->particles == expected.particles);
+
+    // a recording whose end does not match: exit 4, both hashes named
+    QByteArray tampered = readAll(session);
+    tampered.replace(hash.toUtf8(), QByteArray("0123456789abcdef"));
+    QFile file(path(u"tampered.replay.json"_s));
+    QVERIFY(file.open(QIODevice::WriteOnly) && file.write(tampered) == tampered.size());
+    file.close();
+    const Run differs = sim({path(u"tampered.replay.json"_s), u"--replay"_s});
+    QCOMPARE(differs.exitCode, 4);
+    QVERIFY2(differs.err.contains("but the recording ended with 0123456789abcdef"), differs.err.constData());
+
+    // nothing may change a replay
+    const Run refused = sim({session, u"--replay"_s, u"--steps"_s, u"5"_s});
+    QCOMPARE(refused.exitCode, 2);
+    QVERIFY2(refused.err.contains("--steps cannot change it"), refused.err.constData());
 }
 
 QTEST_GUILESS_MAIN(TestSimCli)

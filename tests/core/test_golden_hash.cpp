@@ -9,6 +9,7 @@
 // FMA contraction out so that none of those can.
 
 #include "core/generators.h"
+#include "core/state_hash.h"
 #include "core/step.h"
 #include "scene_builder.h"
 
@@ -60,23 +61,7 @@ core::SceneDesc goldenScene()
     return scene;
 }
 
-// FNV-1a, 64 bits, over the bytes of every position and velocity component, least significant first
-std::uint64_t hashState(const core::State &state)
-{
-    std::uint64_t hash = 0xcbf29ce484222325ULL;
-    auto add = [&hash](double value) {
-        const auto bits = std::bit_cast<std::uint64_t>(value);
-        for (int byte = 0; byte < 8; ++byte) {
-            hash ^= (bits >> (8 * byte)) & 0xffU;
-            hash *= 0x100000001b3ULL;
-        }
-    };
-    for (Eigen::Index i = 0; i < state.position.size(); ++i)
-        add(state.position.data()[i]);
-    for (Eigen::Index i = 0; i < state.velocity.size(); ++i)
-        add(state.velocity.data()[i]);
-    return hash;
-}
+using core::stateHash;
 
 // the hash after kSteps steps, or 0 when the run blew up
 std::uint64_t runAndHash(const core::SceneDesc &scene)
@@ -85,7 +70,7 @@ std::uint64_t runAndHash(const core::SceneDesc &scene)
     for (int i = 0; i < kSteps; ++i)
         if (!core::step(*sim.model, sim.state))
             return 0;
-    return hashState(sim.state);
+    return stateHash(sim.state);
 }
 
 QString hex(std::uint64_t value)

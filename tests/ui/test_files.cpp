@@ -13,6 +13,7 @@
 #include "ui/recent_files.h"
 #include "ui/scene_commands.h"
 #include "ui/scene_document.h"
+#include "ui/session_file.h"
 #include "ui/simulation_controller.h"
 #include "ui/viewport.h"
 
@@ -153,6 +154,7 @@ private slots:
     void useCurrentStateAsInitialThenResetAndUndo();
     void undoHistoryAndRedoKeys();
     void helpListsTheFileKeys();
+    void recordedSessionReplaysToTheSameBits();
 
 private:
     ui::SimulationController &controller() { return *m_window->controller(); }
@@ -836,6 +838,42 @@ void TestFiles::helpListsTheFileKeys()
                               "Ctrl+Shift+S\tFile › Save As", "Ctrl+Q\tFile › Quit", "Ctrl+Z\tEdit › Undo",
                               "Ctrl+Shift+Z", "Drop a .json file", "springlab SCENE.json", "Undo History"})
         QVERIFY2(all.contains(QString::fromUtf8(entry)), entry);
+}
+
+void TestFiles::recordedSessionReplaysToTheSameBits()
+{
+    // Ctrl+R records while the scene runs and is edited: a tilt, a slider's worth of viscosity
+    QString error;
+    QVERIFY2(m_window->openExample(QStringLiteral("cloth"), &error), qPrintable(error));
+    QVERIFY(settledFrame(controller()));
+    if (!controller().isRunning())
+        press(Qt::Key_F4);
+    QVERIFY(action("actionRecordSession"));
+    press(Qt::Key_R, Qt::ControlModifier);
+    QVERIFY(action("actionRecordSession")->isChecked());
+    QTRY_VERIFY_WITH_TIMEOUT(controller().frame()->snapshot->time > 0.05, 10000);
+    press(Qt::Key_T);
+    edit();
+    const double timeAtEdit = controller().frame()->snapshot->time;
+    QTRY_VERIFY_WITH_TIMEOUT(controller().frame()->snapshot->time > timeAtEdit + 0.05, 10000);
+
+    // Ctrl+R again: the recording comes back from the worker and is saved where the user says
+    const QString path = m_files.filePath(QStringLiteral("cloth.replay.json"));
+    m_chosenPath = path;
+    m_dialogs.clear();
+    press(Qt::Key_R, Qt::ControlModifier);
+    QVERIFY(!action("actionRecordSession")->isChecked());
+    QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(path), 10000);
+    QCOMPARE(m_dialogs, QList<ui::MainWindow::FileDialogMode>{ui::MainWindow::FileDialogMode::Save});
+
+    // replayed on its own, it ends with the bits the editor's run ended with
+    const ui::RecordingLoad loaded = ui::loadRecording(path);
+    QVERIFY2(loaded.recording, qPrintable(loaded.error));
+    QVERIFY(loaded.recording->steps > 0);
+    QVERIFY(loaded.recording->entries.size() >= 2);  // the tilt and the viscosity
+    const ui::ReplayResult replayed = ui::replay(*loaded.recording);
+    QVERIFY2(replayed.error.empty(), replayed.error.c_str());
+    QCOMPARE(replayed.hash, loaded.recording->finalHash);
 }
 
 QTEST_MAIN(TestFiles)

@@ -1,0 +1,24 @@
+#include "state_hash.h"
+
+#include <bit>
+
+namespace core {
+
+std::uint64_t stateHash(const State &state)
+{
+    std::uint64_t hash = 0xcbf29ce484222325ULL;
+    const auto add = [&hash](double value) {
+        const auto bits = std::bit_cast<std::uint64_t>(value);
+        for (int byte = 0; byte < 8; ++byte) {
+            hash ^= (bits >> (8 * byte)) & 0xffU;
+            hash *= 0x100000001b3ULL;
+        }
+    };
+    for (Eigen::Index i = 0; i < state.position.size(); ++i)
+        add(state.position.data()[i]);
+    for (Eigen::Index i = 0; i < state.velocity.size(); ++i)
+        add(state.velocity.data()[i]);
+    return hash;
+}
+
+}  // namespace core

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The runs too long for CI (docs/reliability.md says what each proves). Run tools/dev.sh test
+# first: it installs the packages these need.
+#
+#   tools/long_tests.sh
+#
+# 1. ThreadSanitizer build (build/tsan): every ui test, and the live-edit stress for 60 s.
+# 2. AddressSanitizer + UBSan build (build/asan), leak checking on: 1000 cycles of start, run,
+#    load another scene and close while running; the monkey's 10 000 events per example.
+# 3. The scene loader fuzzed for an hour.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+export QT_QPA_PLATFORM=xcb
+# the worker and Qt's own threads: report every race, stop at the first
+export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
+export ASAN_OPTIONS="detect_leaks=1 ${ASAN_OPTIONS:-}"
+
+cmake --preset tsan >/dev/null
+cmake --build --preset tsan
+ctest --preset tsan -L ui
+SPRINGLAB_STRESS_SECONDS=60 ctest --preset tsan -R '^test_live_edit_stress$'
+
+cmake --preset asan >/dev/null
+cmake --build --preset asan
+SPRINGLAB_LIFECYCLE_CYCLES=1000 ctest --preset asan --timeout 7200 -R '^test_lifecycle$'
+ctest --preset asan --timeout 7200 -R '^test_monkey$'
+
+bash tools/fuzz.sh 3600

@@ -1,0 +1,325 @@
+#include "session_file.h"
+
+#include "core/io/scene_file.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+
+#include <charconv>
+#include <variant>
+
+namespace ui {
+
+namespace {
+
+using namespace Qt::Literals::StringLiterals;
+
+constexpr QLatin1String kFormat("springlab-replay");
+constexpr int kVersion = 1;
+
+// a JSON string: the scene file's text, quotes, backslashes and control characters escaped
+QByteArray quoted(const QByteArray &text)
+{
+    QByteArray out = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\')
+            out += '\\';
+        if (c == '\n')
+            out += "\\n";
+        else if (static_cast<unsigned char>(c) < 0x20)
+            out += "\\u00" + QByteArray::number(static_cast<unsigned char>(c), 16).rightJustified(2, '0');
+        else
+            out += c;
+    }
+    return out + '"';
+}
+
+QByteArray vector(const Eigen::Vector3d &v)
+{
+    return '[' + io::formatNumber(v.x()) + ", " + io::formatNumber(v.y()) + ", " + io::formatNumber(v.z()) + ']';
+}
+
+QByteArray matrix(const Eigen::Matrix3Xd &m)
+{
+    QByteArray out = "[";
+    for (Eigen::Index i = 0; i < m.size(); ++i)
+        out += (i ? ", " : "") + io::formatNumber(m.data()[i]);
+    return out + ']';
+}
+
+const char *changeName(SceneChange change)
+{
+    switch (change) {
+    case SceneChange::Replace: return "replace";
+    case SceneChange::Structure: return "structure";
+    case SceneChange::Parameters: return "parameters";
+    }
+    return "replace";
+}
+
+QByteArray editJson(const Edit &edit)
+{
+    return std::visit(
+        [](const auto &e) -> QByteArray {
+            using E = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<E, SetSceneEdit>)
+                return "\"edit\": \"set-scene\", \"change\": \"" + QByteArray(changeName(e.change)) +
+                       "\", \"scene\": " + quoted(io::sceneToJson(*e.scene));
+            else if constexpr (std::is_same_v<E, PlayEdit>)
+                return "\"edit\": \"play\"";
+            else if constexpr (std::is_same_v<E, PauseEdit>)
+                return "\"edit\": \"pause\"";
+            else if constexpr (std::is_same_v<E, StepOnceEdit>)
+                return "\"edit\": \"step-once\"";
+            else if constexpr (std::is_same_v<E, ResetEdit>)
+                return "\"edit\": \"reset\"";
+            else if constexpr (std::is_same_v<E, TiltEdit>)
+                return "\"edit\": \"tilt\", \"seed\": \"" + QByteArray::number(e.seed) +
+                       "\", \"speed\": " + io::formatNumber(e.speed);
+            else if constexpr (std::is_same_v<E, SteerEdit>)
+                return "\"edit\": \"steer\", \"particle\": " + QByteArray::number(e.particle) +
+                       ", \"force\": " + vector(e.force);
+            else if constexpr (std::is_same_v<E, GrabEdit>)
+                return "\"edit\": \"grab\", \"particle\": " + QByteArray::number(e.particle) +
+                       ", \"target\": " + vector(e.target);
+            else
+                return "\"edit\": \"none\"";  // requests that change nothing are never recorded
+        },
+        edit);
+}
+
+// reads one recording, stopping at the first problem with its JSON path
+class Reader {
+public:
+    explicit Reader(QString source) : m_source(std::move(source)) {}
+    QString error;
+
+    bool fail(const QString &path, const QString &reason)
+    {
+        if (error.isEmpty())
+            error = m_source + u": "_s + (path.isEmpty() ? QString() : path + u": "_s) + reason;
+        return false;
+    }
+    bool number(const QJsonValue &value, const QString &path, double &out)
+    {
+        if (!value.isDouble())
+            return fail(path, u"expected a number"_s);
+        out = value.toDouble();
+        return true;
+    }
+    bool count(const QJsonValue &value, const QString &path, std::uint64_t &out)
+    {
+        double d = 0.0;
+        if (!number(value, path, d))
+            return false;
+        if (!(d >= 0.0 && d <= 9007199254740992.0 && d == std::floor(d)))
+            return fail(path, u"expected a whole number of at least 0"_s);
+        out = static_cast<std::uint64_t>(d);
+        return true;
+    }
+    bool vector3(const QJsonValue &value, const QString &path, Eigen::Vector3d &out)
+    {
+        const QJsonArray array = value.toArray();
+        if (!value.isArray() || array.size() != 3)
+            return fail(path, u"expected 3 numbers"_s);
+        for (int axis = 0; axis < 3; ++axis)
+            if (!number(array[axis], path + u"[%1]"_s.arg(axis), out[axis]))
+                return false;
+        return true;
+    }
+    bool matrix(const QJsonValue &value, const QString &path, qsizetype columns, Eigen::Matrix3Xd &out)
+    {
+        const QJsonArray array = value.toArray();
+        if (!value.isArray() || array.size() != 3 * columns)
+            return fail(path, u"expected %1 numbers (3 per particle)"_s.arg(3 * columns));
+        out.resize(3, columns);
+        for (qsizetype i = 0; i < array.size(); ++i)
+            if (!number(array[i], path + u"[%1]"_s.arg(i), out.data()[i]))
+                return false;
+        return true;
+    }
+    bool scene(const QJsonValue &value, const QString &path, std::shared_ptr<const core::SceneDesc> &out)
+    {
+        if (!value.isString())
+            return fail(path, u"expected the text of a scene file"_s);
+        const io::LoadResult loaded = io::parseScene(value.toString().toUtf8(), m_source + u" "_s + path);
+        if (!loaded.ok()) {
+            if (error.isEmpty())
+                error = loaded.error;
+            return false;
+        }
+        out = std::make_shared<const core::SceneDesc>(*loaded.scene);
+        return true;
+    }
+    bool particle(const QJsonValue &value, const QString &path, const core::SceneDesc &scene, int &out)
+    {
+        double d = 0.0;
+        if (!number(value, path, d))
+            return false;
+        if (!(d >= -1.0 && d < double(scene.particles.size()) && d == std::floor(d)))
+            return fail(path, u"expected -1 or a particle of the scene (0 to %1)"_s.arg(scene.particles.size() - 1));
+        out = int(d);
+        return true;
+    }
+
+    bool edit(const QJsonObject &object, const QString &path, const core::SceneDesc &current, Edit &out)
+    {
+        const QString kind = object.value(u"edit"_s).toString();
+        if (kind == u"set-scene"_s) {
+            SetSceneEdit e;
+            const QString change = object.value(u"change"_s).toString();
+            if (change == u"replace"_s)
+                e.change = SceneChange::Replace;
+            else if (change == u"structure"_s)
+                e.change = SceneChange::Structure;
+            else if (change == u"parameters"_s)
+                e.change = SceneChange::Parameters;
+            else
+                return fail(path + u".change"_s, u"expected \"replace\", \"structure\" or \"parameters\""_s);
+            if (!scene(object.value(u"scene"_s), path + u".scene"_s, e.scene))
+                return false;
+            out = e;
+        } else if (kind == u"play"_s) {
+            out = PlayEdit{};
+        } else if (kind == u"pause"_s) {
+            out = PauseEdit{};
+        } else if (kind == u"step-once"_s) {
+            out = StepOnceEdit{};
+        } else if (kind == u"reset"_s) {
+            out = ResetEdit{};
+        } else if (kind == u"tilt"_s) {
+            TiltEdit e;
+            bool ok = false;
+            e.seed = object.value(u"seed"_s).toString().toULongLong(&ok);
+            if (!ok)
+                return fail(path + u".seed"_s, u"expected a seed as a string of digits"_s);
+            if (!number(object.value(u"speed"_s), path + u".speed"_s, e.speed))
+                return false;
+            out = e;
+        } else if (kind == u"steer"_s) {
+            SteerEdit e;
+            if (!particle(object.value(u"particle"_s), path + u".particle"_s, current, e.particle) ||
+                !vector3(object.value(u"force"_s), path + u".force"_s, e.force))
+                return false;
+            out = e;
+        } else if (kind == u"grab"_s) {
+            GrabEdit e;
+            if (!particle(object.value(u"particle"_s), path + u".particle"_s, current, e.particle) ||
+                !vector3(object.value(u"target"_s), path + u".target"_s, e.target))
+                return false;
+            out = e;
+        } else {
+            return fail(path + u".edit"_s, u"unknown edit \"%1\""_s.arg(kind));
+        }
+        return true;
+    }
+
+private:
+    QString m_source;
+};
+
+}  // namespace
+
+QByteArray recordingToJson(const SessionRecording &r)
+{
+    QByteArray out = "{\n    \"format\": \"springlab-replay\",\n    \"version\": " + QByteArray::number(kVersion) + ",\n";
+    out += "    \"scene\": " + quoted(io::sceneToJson(*r.scene)) + ",\n";
+    out += "    \"start\": {\"time\": " + io::formatNumber(r.time) + ", \"step\": " + QByteArray::number(r.step) +
+           ", \"adaptiveStep\": " + io::formatNumber(r.adaptiveStep) + ",\n        \"positions\": " + matrix(r.position) +
+           ",\n        \"velocities\": " + matrix(r.velocity) + "},\n";
+    out += "    \"edits\": [";
+    for (std::size_t i = 0; i < r.entries.size(); ++i)
+        out += QByteArray(i ? ",\n" : "\n") + "        {\"steps\": " + QByteArray::number(r.entries[i].steps) + ", " +
+               editJson(r.entries[i].edit) + '}';
+    out += r.entries.empty() ? "],\n" : "\n    ],\n";
+    out += "    \"steps\": " + QByteArray::number(r.steps) + ",\n";
+    out += "    \"hash\": \"" + QByteArray::number(r.finalHash, 16).rightJustified(16, '0') + "\"\n}\n";
+    return out;
+}
+
+RecordingLoad parseRecording(const QByteArray &json, const QString &sourceName)
+{
+    RecordingLoad result;
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+    Reader reader(sourceName);
+    if (document.isNull()) {
+        result.error = sourceName + u": not JSON: "_s + parseError.errorString();
+        return result;
+    }
+    const QJsonObject root = document.object();
+    if (root.value(u"format"_s).toString() != kFormat) {
+        result.error = sourceName + u": not a Springlab replay (format must be \"springlab-replay\")"_s;
+        return result;
+    }
+    if (root.value(u"version"_s).toInt() != kVersion) {
+        result.error = sourceName + u": version %1 is not supported (this Springlab reads %2)"_s
+                                        .arg(root.value(u"version"_s).toInt())
+                                        .arg(kVersion);
+        return result;
+    }
+    auto r = std::make_shared<SessionRecording>();
+    const QJsonObject start = root.value(u"start"_s).toObject();
+    bool ok = reader.scene(root.value(u"scene"_s), u"scene"_s, r->scene) &&
+              reader.number(start.value(u"time"_s), u"start.time"_s, r->time) &&
+              reader.count(start.value(u"step"_s), u"start.step"_s, r->step) &&
+              reader.number(start.value(u"adaptiveStep"_s), u"start.adaptiveStep"_s, r->adaptiveStep);
+    ok = ok && reader.matrix(start.value(u"positions"_s), u"start.positions"_s, qsizetype(r->scene->particles.size()), r->position) &&
+         reader.matrix(start.value(u"velocities"_s), u"start.velocities"_s, qsizetype(r->scene->particles.size()), r->velocity);
+    // each edit is checked against the scene it applies to
+    std::shared_ptr<const core::SceneDesc> current = r->scene;
+    const QJsonArray edits = root.value(u"edits"_s).toArray();
+    if (ok && !root.value(u"edits"_s).isArray())
+        ok = reader.fail(u"edits"_s, u"expected an array"_s);
+    std::uint64_t previous = 0;
+    for (qsizetype i = 0; ok && i < edits.size(); ++i) {
+        const QString path = u"edits[%1]"_s.arg(i);
+        SessionRecording::Entry entry;
+        ok = reader.count(edits[i].toObject().value(u"steps"_s), path + u".steps"_s, entry.steps) &&
+             reader.edit(edits[i].toObject(), path, *current, entry.edit);
+        if (ok && entry.steps < previous)
+            ok = reader.fail(path + u".steps"_s, u"goes back in time (%1 after %2)"_s.arg(entry.steps).arg(previous));
+        if (!ok)
+            break;
+        previous = entry.steps;
+        if (const auto *set = std::get_if<SetSceneEdit>(&entry.edit))
+            current = set->scene;
+        r->entries.push_back(std::move(entry));
+    }
+    ok = ok && reader.count(root.value(u"steps"_s), u"steps"_s, r->steps);
+    if (ok && r->steps < previous)
+        ok = reader.fail(u"steps"_s, u"fewer than the last edit's (%1)"_s.arg(previous));
+    if (ok) {
+        r->finalHash = root.value(u"hash"_s).toString().toULongLong(&ok, 16);
+        if (!ok)
+            reader.fail(u"hash"_s, u"expected 16 hexadecimal digits"_s);
+    }
+    if (!ok) {
+        result.error = reader.error;
+        return result;
+    }
+    result.recording = std::move(r);
+    return result;
+}
+
+RecordingLoad loadRecording(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {nullptr, path + u": cannot open: "_s + file.errorString()};
+    return parseRecording(file.readAll(), path);
+}
+
+QString saveRecording(const QString &path, const SessionRecording &recording)
+{
+    QSaveFile file(path);
+    const QByteArray json = recordingToJson(recording);
+    if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit())
+        return path + u": cannot save: "_s + file.errorString();
+    return {};
+}
+
+}  // namespace ui

@@ -1,0 +1,26 @@
+#pragma once
+// Session files: a SessionRecording as JSON (format "springlab-replay", version 1), documented in
+// docs/scene-format.md. Scenes go in as the text of a scene file (a JSON string), and every
+// number as the shortest text that reads back as the same double, so that a replay starts from
+// the very bits recorded.
+
+#include "session_recording.h"
+
+#include <QByteArray>
+#include <QString>
+
+namespace ui {
+
+QByteArray recordingToJson(const SessionRecording &recording);
+
+struct RecordingLoad {
+    std::shared_ptr<const SessionRecording> recording;  // set on success
+    QString error;                                       // "FILE: edits[3].particle: ..." on failure
+};
+RecordingLoad parseRecording(const QByteArray &json, const QString &sourceName);
+RecordingLoad loadRecording(const QString &path);
+
+// writes atomically (QSaveFile); empty on success, else why not
+QString saveRecording(const QString &path, const SessionRecording &recording);
+
+}  // namespace ui

@@ -1,0 +1,49 @@
+#pragma once
+// SessionRecording: a run as the worker lived it, to replay bit for bit: the scene and the state
+// when recording started, then every edit that changes the run, each stamped with the number of
+// steps taken before it, and the steps taken in all. Replaying it on a fresh SimulationRunner
+// (replay()) applies the same edits after the same steps, so it ends with the same bits; the
+// recording keeps the hash of the state it ended with to prove it. Qt-free.
+
+#include "edit_queue.h"
+
+#include "core/scene.h"
+#include "core/state.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ui {
+
+struct SessionRecording {
+    // the scene the runner had at the start (its initial conditions stay the scene's own, so that
+    // a reset during the replay goes where the recorded one went)
+    std::shared_ptr<const core::SceneDesc> scene;
+    // the state at the start: positions, velocities, time, step and the adaptive step size
+    Eigen::Matrix3Xd position;
+    Eigen::Matrix3Xd velocity;
+    double time = 0.0;
+    std::uint64_t step = 0;
+    double adaptiveStep = 0.0;
+
+    struct Entry {
+        std::uint64_t steps = 0;  // steps taken since the start before this edit
+        Edit edit;
+    };
+    std::vector<Entry> entries;
+    std::uint64_t steps = 0;      // steps taken from the start to the end
+    std::uint64_t finalHash = 0;  // core::stateHash of the state at the end
+};
+
+struct ReplayResult {
+    std::uint64_t hash = 0;  // core::stateHash at the end
+    core::State state;       // the state at the end
+    std::string error;       // empty when the replay ran to the end
+};
+
+// replays a recording on a fresh runner
+ReplayResult replay(const SessionRecording &recording);
+
+}  // namespace ui
