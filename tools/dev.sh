@@ -12,19 +12,7 @@ cd "$(dirname "$0")/.."
 packages=(g++ cmake ninja-build qt6-base-dev libqt6opengl6-dev libeigen3-dev
           xvfb xauth libgl1-mesa-dri libegl-mesa0)
 
-install_missing() {
-  local missing=()
-  for p in "${packages[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
-  done
-  [ ${#missing[@]} -eq 0 ] && return 0
-  local sudo=()
-  [ "$(id -u)" -ne 0 ] && sudo=(sudo)
-  echo "Installing ${missing[*]} ..."
-  "${sudo[@]}" apt-get update -qq
-  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-    "${missing[@]}" >/dev/null
-}
+source tools/install_missing.sh
 
 build() {
   cmake --preset "$1" >/dev/null
@@ -34,7 +22,7 @@ build() {
 case "${1:-}" in
   run)
     shift
-    install_missing
+    install_missing "${packages[@]}"
     build release
     if [ -x build/release/app/springlab ]; then
       exec build/release/app/springlab "$@"
@@ -42,7 +30,7 @@ case "${1:-}" in
     exec build/release/app/springlab-sim "${@:-resources/scenes/springs.json}"
     ;;
   test)
-    install_missing
+    install_missing "${packages[@]}"
     build ci
     ctest --preset ci
     # the unit tests again under AddressSanitizer and UndefinedBehaviorSanitizer (leaks included)

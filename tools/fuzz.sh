@@ -13,21 +13,9 @@ seconds="${1:-60}"
 build=build/fuzz
 packages=(clang-14 libfuzzer-14-dev)
 
-install_missing() {
-  local missing=()
-  for p in "${packages[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
-  done
-  [ ${#missing[@]} -eq 0 ] && return 0
-  local sudo=()
-  [ "$(id -u)" -ne 0 ] && sudo=(sudo)
-  echo "Installing ${missing[*]} ..."
-  "${sudo[@]}" apt-get update -qq
-  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-    "${missing[@]}" >/dev/null
-}
+source tools/install_missing.sh
 
-install_missing
+install_missing "${packages[@]}"
 # OpenMP off: one input is small, and threads would only blur the coverage signal
 CC=clang-14 CXX=clang++-14 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DSPRINGLAB_FUZZ=ON -DSPRINGLAB_BUILD_BENCH=OFF -DSPRINGLAB_OPENMP=OFF >/dev/null

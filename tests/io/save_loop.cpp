@@ -1,5 +1,5 @@
 // save_loop OUT: saves two different scenes to OUT, one after the other, for ever, printing
-// "saving" once before the first save. test_atomic_save kills it (SIGKILL) at random moments and
+// "saving" once before the first save and "saved" after each. test_atomic_save kills it (SIGKILL) at random moments and
 // checks what it left behind.
 #include "core/generators.h"
 #include "core/io/scene_file.h"
@@ -30,5 +30,7 @@ int main(int argc, char *argv[])
             std::fprintf(stderr, "save_loop: %s\n", qPrintable(saved.error));
             return 1;
         }
+        std::printf("saved\n");
+        std::fflush(stdout);
     }
 }

@@ -5,9 +5,11 @@
 #include "core/io/scene_file.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+#include <algorithm>
 #include <random>
 
 class TestAtomicSave : public QObject {
@@ -31,8 +33,32 @@ void TestAtomicSave::killedSaveLeavesAWholeScene()
     const core::SceneDesc second = core::makeCloth(options);
     QVERIFY(io::saveScene(path, first).ok());
 
+    // how long one save takes on this machine and build (a sanitizer's is several times slower):
+    // the kills then spread over about four saves
+    qint64 saveMs = 0;
+    {
+        QProcess saver;
+        saver.start(QStringLiteral(SPRINGLAB_SAVE_LOOP), {path});
+        QVERIFY(saver.waitForStarted());
+        QVERIFY(saver.waitForReadyRead(10000));
+        QVERIFY(saver.readLine().startsWith("saving"));
+        QElapsedTimer clock;
+        clock.start();
+        int saves = 0;
+        while (saves < 2 && clock.elapsed() < 60000)
+            if (saver.canReadLine() || saver.waitForReadyRead(1000))
+                while (saver.canReadLine())
+                    saves += saver.readLine().startsWith("saved");
+        saveMs = clock.elapsed() / 2;
+        saver.kill();
+        QVERIFY(saver.waitForFinished(10000));
+        QCOMPARE(saves, 2);
+    }
+    qInfo("one save takes about %lld ms", static_cast<long long>(saveMs));
+    QVERIFY(io::saveScene(path, first).ok());
+
     std::mt19937 random(20261123u);
-    std::uniform_int_distribution<int> delayMs(0, 120);
+    std::uniform_int_distribution<int> delayMs(0, static_cast<int>(std::max<qint64>(4 * saveMs, 20)));
     int sawFirst = 0, sawSecond = 0;
     constexpr int kKills = 40;
     for (int kill = 0; kill < kKills; ++kill) {

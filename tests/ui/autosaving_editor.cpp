@@ -21,6 +21,8 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "editor_test_setup.h"
+
 namespace {
 
 // waits (running the event loop) until done() or timeoutMs; false on timeout
@@ -41,18 +43,14 @@ bool waitFor(Done &&done, int timeoutMs)
 
 int main(int argc, char *argv[])
 {
-    QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
-    QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    test::prepareOpenGL();
     QApplication app(argc, argv);
     if (argc != 4) {
         std::fprintf(stderr, "usage: autosaving_editor SETTINGS_DIR SCENE.json EXPECTED.json\n");
         return 2;
     }
     // the settings the test wrote: its recovery folder and a one-second autosave
-    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_crash_recovery"));
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, QString::fromLocal8Bit(argv[1]));
+    test::useSettingsIn(QString::fromLocal8Bit(argv[1]), QStringLiteral("test_crash_recovery"));
 
     ui::MainWindow window;
     window.show();

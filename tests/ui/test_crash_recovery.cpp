@@ -18,15 +18,13 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "editor_test_setup.h"
+
 class TestCrashRecovery : public QObject {
     Q_OBJECT
 
 public:
-    static void initMain()
-    {
-        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
-        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
-    }
+    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
@@ -41,10 +39,7 @@ void TestCrashRecovery::initTestCase()
 {
     // this process and the child share throwaway settings: the recovery folder, autosave every second
     QVERIFY(m_settings.isValid() && m_files.isValid());
-    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_crash_recovery"));
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    test::useSettingsIn(m_settings.path(), QStringLiteral("test_crash_recovery"));
     QSettings settings;
     settings.setValue(QStringLiteral("autosave/directory"), m_files.filePath(QStringLiteral("recovery")));
     settings.setValue(QStringLiteral("autosave/intervalSeconds"), 1);

@@ -15,6 +15,8 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "editor_test_setup.h"
+
 namespace {
 
 // a particle of radius r at p
@@ -49,11 +51,7 @@ class TestEditing : public QObject {
     Q_OBJECT
 
 public:
-    static void initMain()
-    {
-        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
-        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
-    }
+    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
@@ -128,10 +126,7 @@ private:
 void TestEditing::initTestCase()
 {
     QVERIFY(m_settings.isValid());
-    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_editing"));
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    test::useSettingsIn(m_settings.path(), QStringLiteral("test_editing"));
 }
 
 void TestEditing::init()

@@ -32,6 +32,8 @@
 #include <QUrl>
 #include <QtTest>
 
+#include "editor_test_setup.h"
+
 #include "frame_wait.h"
 
 #include <csignal>
@@ -127,11 +129,7 @@ class TestFiles : public QObject {
 
 public:
     // OpenGL settings before the QApplication exists
-    static void initMain()
-    {
-        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
-        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
-    }
+    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
@@ -196,10 +194,7 @@ void TestFiles::initTestCase()
 {
     // settings and recovery files go to throwaway folders, never the user's
     QVERIFY(m_settings.isValid() && m_files.isValid());
-    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_files"));
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    test::useSettingsIn(m_settings.path(), QStringLiteral("test_files"));
     m_recoveryDirectory = m_files.filePath(QStringLiteral("recovery"));
 }
 

@@ -23,6 +23,8 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "editor_test_setup.h"
+
 #include <cmath>
 #include <limits>
 
@@ -73,11 +75,7 @@ class TestInspectorPanel : public QObject {
 
 public:
     // the viewport the tools need is a QOpenGLWidget: OpenGL settings before the QApplication exists
-    static void initMain()
-    {
-        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
-        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
-    }
+    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void init();

@@ -15,17 +15,15 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "editor_test_setup.h"
+
 #include "frame_wait.h"
 
 class TestLifecycle : public QObject {
     Q_OBJECT
 
 public:
-    static void initMain()
-    {
-        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
-        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
-    }
+    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
@@ -38,10 +36,7 @@ private:
 void TestLifecycle::initTestCase()
 {
     QVERIFY(m_settings.isValid());
-    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_lifecycle"));
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    test::useSettingsIn(m_settings.path(), QStringLiteral("test_lifecycle"));
     QSettings settings;
     settings.setValue(QStringLiteral("autosave/directory"), m_settings.filePath(QStringLiteral("recovery")));
     settings.setValue(QStringLiteral("autosave/intervalSeconds"), 0);

@@ -21,6 +21,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "editor_test_setup.h"
+
 #include "frame_wait.h"
 
 #include <algorithm>
@@ -53,11 +55,7 @@ class TestLiveEditStress : public QObject {
     Q_OBJECT
 
 public:
-    static void initMain()
-    {
-        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
-        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
-    }
+    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
@@ -70,10 +68,7 @@ private:
 void TestLiveEditStress::initTestCase()
 {
     QVERIFY(m_files.isValid());
-    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_live_edit_stress"));
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_files.filePath(QStringLiteral("settings")));
+    test::useSettingsIn(m_files.filePath(QStringLiteral("settings")), QStringLiteral("test_live_edit_stress"));
     QSettings settings;
     settings.setValue(QStringLiteral("autosave/directory"), m_files.filePath(QStringLiteral("recovery")));
     settings.setValue(QStringLiteral("autosave/intervalSeconds"), 0);

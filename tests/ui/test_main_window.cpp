@@ -32,6 +32,8 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "editor_test_setup.h"
+
 #include "frame_wait.h"
 
 namespace {
@@ -52,11 +54,7 @@ class TestMainWindow : public QObject {
 
 public:
     // OpenGL settings before the QApplication exists
-    static void initMain()
-    {
-        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
-        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
-    }
+    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
@@ -101,10 +99,7 @@ void TestMainWindow::initTestCase()
 {
     // settings go to a throwaway folder, never the user's
     QVERIFY(m_settings.isValid() && m_files.isValid());
-    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_main_window"));
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    test::useSettingsIn(m_settings.path(), QStringLiteral("test_main_window"));
 }
 
 void TestMainWindow::init()

@@ -28,6 +28,8 @@
 #include <QWheelEvent>
 #include <QtTest>
 
+#include "editor_test_setup.h"
+
 #include "frame_wait.h"
 
 #include <random>
@@ -68,11 +70,7 @@ class TestMonkey : public QObject {
     Q_OBJECT
 
 public:
-    static void initMain()
-    {
-        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
-        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
-    }
+    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
@@ -98,10 +96,7 @@ private:
 void TestMonkey::initTestCase()
 {
     QVERIFY(m_settings.isValid() && m_files.isValid());
-    QCoreApplication::setOrganizationName(QStringLiteral("SpringlabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_monkey"));
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    test::useSettingsIn(m_settings.path(), QStringLiteral("test_monkey"));
     // copies of the examples to open: a Save after Open must never write into the source tree
     for (const QString &example : ui::MainWindow::exampleNames())
         QVERIFY(QFile::copy(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/%1.json").arg(example),

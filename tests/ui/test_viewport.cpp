@@ -12,6 +12,8 @@
 #include <QVBoxLayout>
 #include <QtTest>
 
+#include "editor_test_setup.h"
+
 #include <cmath>
 
 namespace {
@@ -78,11 +80,7 @@ class TestViewport : public QObject {
 
 public:
     // GL has to be set up before the QApplication exists
-    static void initMain()
-    {
-        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
-        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
-    }
+    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void init();
