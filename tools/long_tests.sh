@@ -15,6 +15,7 @@ export QT_QPA_PLATFORM=xcb
 # the worker and Qt's own threads: report every race, stop at the first
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
 export ASAN_OPTIONS="detect_leaks=1 ${ASAN_OPTIONS:-}"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp ${LSAN_OPTIONS:-}"
 
 cmake --preset tsan >/dev/null
 cmake --build --preset tsan

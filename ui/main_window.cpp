@@ -103,6 +103,12 @@ MainWindow::MainWindow(QWidget *parent)
 
 MainWindow::~MainWindow()
 {
+    // the worker stops first, and nothing the children say while they are torn down may reach
+    // this window's slots: by then it is only a QWidget (UBSan's vptr check once caught a signal
+    // reaching a MainWindow slot of a window being destroyed while a scene was still loading)
+    m_controller->shutDown();
+    for (QObject *child : findChildren<QObject *>())
+        child->disconnect(this);
     // the tools filter the viewport's events and read the document: they go first, before the
     // children are torn down in creation order (the document before the viewport); the
     // inspector reads the tools, so it goes before them

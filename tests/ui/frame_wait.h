@@ -26,10 +26,11 @@ inline std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::Simulatio
     return nullptr;
 }
 
-// the newest frame once the worker has applied every edit made so far, or null after 10 s
-inline std::shared_ptr<const ui::SimulationFrame> settledFrame(ui::SimulationController &controller)
+// the newest frame once the worker has applied every edit made so far, or null after timeoutMs
+inline std::shared_ptr<const ui::SimulationFrame> settledFrame(ui::SimulationController &controller,
+                                                               int timeoutMs = 10000)
 {
-    return frameAfter(controller, controller.sync());
+    return frameAfter(controller, controller.sync(), timeoutMs);
 }
 
 }  // namespace test

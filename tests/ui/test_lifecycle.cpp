@@ -15,9 +15,17 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+
 #include "editor_test_setup.h"
 
 #include "frame_wait.h"
+
+namespace {
+
+// under the sanitizers a scene loads and steps many times slower than in a release build
+constexpr int kFrameWaitMs = 60000;
+
+}  // namespace
 
 class TestLifecycle : public QObject {
     Q_OBJECT
@@ -61,15 +69,15 @@ void TestLifecycle::startRunLoadAndCloseWhileRunning()
         controller.play();
 
         // the first scene steps: a frame of it with time past zero
-        auto frame = test::settledFrame(controller);
+        auto frame = test::settledFrame(controller, kFrameWaitMs);
         QVERIFY2(frame && frame->scene == window->document()->sharedScene(), qPrintable(first));
-        QTRY_VERIFY_WITH_TIMEOUT(controller.frame()->snapshot && controller.frame()->snapshot->time > 0.0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(controller.frame()->snapshot && controller.frame()->snapshot->time > 0.0, kFrameWaitMs);
         QVERIFY(controller.isRunning());
 
         // another scene while it runs, then close while that one runs
         QVERIFY2(window->openExample(second, &error), qPrintable(error));
         controller.play();
-        frame = test::settledFrame(controller);
+        frame = test::settledFrame(controller, kFrameWaitMs);
         QVERIFY2(frame && frame->scene == window->document()->sharedScene(), qPrintable(second));
         QVERIFY(controller.isRunning());
         window->close();
