@@ -155,8 +155,9 @@ int main(int argc, char *argv[])
 
     // the final state as a scene to run on from; a blown-up state is not worth saving
     if (!options.outputPath.isEmpty() && !blewUp) {
-        core::storeState(state, scene);
-        if (const io::SaveResult saved = io::saveScene(options.outputPath, scene); !saved.ok())
+        core::SceneDesc final = scene;
+        core::storeState(state, final);
+        if (const io::SaveResult saved = io::saveScene(options.outputPath, final); !saved.ok())
             return failWith(saved.error);
     }
 
@@ -177,6 +178,12 @@ int main(int argc, char *argv[])
             out << QString::asprintf(" (%.4g steps/s)", static_cast<double>(state.step) / seconds);
         out << "\n  energy (J) kinetic        gravitational  spring         total\n"
             << energyRow("start", start) << energyRow("end", end);
+        if (!state.breaks.empty()) {
+            const core::SpringBreak &first = state.breaks.front();
+            out << QString::asprintf("  breaks     %zu of %zu springs broke, the first in step %llu (t = %.6g s)\n",
+                                     state.breaks.size(), state.springBroken.size(),
+                                     static_cast<unsigned long long>(first.step), first.time);
+        }
         out << "  warnings   "
             << (loaded.warnings.isEmpty() ? u"none"_s : QString::number(loaded.warnings.size()) + u" (above)"_s)
             << '\n';

@@ -15,6 +15,8 @@ Energies energies(const Model &model, const State &state)
 
     // elastic: ½ k (l - l0)²
     for (int k = 0; k < model.springCount(); ++k) {
+        if (state.isBroken(k))
+            continue;
         const int a = model.springA[static_cast<std::size_t>(k)];
         const int b = model.springB[static_cast<std::size_t>(k)];
         const double stretch = (state.position.col(a) - state.position.col(b)).norm() - model.restLength[k];

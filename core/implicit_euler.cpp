@@ -60,6 +60,8 @@ void implicitEuler(const Model &model, State &state, double h)
     for (int i = 0; i < model.particleCount(); ++i)
         diagonal.col(i).setConstant(model.isPinned(i) ? 1.0 : model.mass[i] + h * model.viscosity);
     for (int k = 0; k < model.springCount(); ++k) {
+        if (state.isBroken(k))
+            continue;
         const double share = h * h * model.stiffness[k] + h * model.damping[k];
         for (int end : {model.springA[static_cast<std::size_t>(k)], model.springB[static_cast<std::size_t>(k)]})
             if (!model.isPinned(end))

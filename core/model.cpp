@@ -45,6 +45,7 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
     model->restLength.resize(springs);
     model->stiffness.resize(springs);
     model->damping.resize(springs);
+    model->breakStrain.resize(springs);
     for (Eigen::Index k = 0; k < springs; ++k) {
         const SpringDesc &spring = scene.springs[static_cast<std::size_t>(k)];
         model->springA.push_back(spring.a);
@@ -52,6 +53,7 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
         model->restLength[k] = spring.restLength;
         model->stiffness[k] = spring.stiffness;
         model->damping[k] = spring.damping;
+        model->breakStrain[k] = spring.breakStrain;
     }
 
     // each particle's springs in ascending order: a count per particle, then a running sum
@@ -87,6 +89,7 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
     plan.gravity = anythingFree && !model->gravity.isZero(0.0);
     plan.drag = anythingFree && model->viscosity > 0.0;
     plan.springs = springs > 0;
+    plan.springBreaks = springs > 0 && model->breakStrain.maxCoeff() > 0.0;
     plan.planeCollisions = anythingFree && s.planeCollisions && planes > 0;
     plan.particleCollisions = anythingFree && s.particleCollisions && n >= 2;
 

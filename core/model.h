@@ -18,6 +18,7 @@ struct StepPlan {
     bool springs = false;             // at least one spring
     bool planeCollisions = false;     // switched on, a plane, and something free
     bool particleCollisions = false;  // switched on, two particles, one of them free
+    bool springBreaks = false;        // a spring with a breaking strain
 
     bool operator==(const StepPlan &) const = default;
 };
@@ -47,6 +48,7 @@ struct Model {
     Eigen::VectorXd restLength;  // m
     Eigen::VectorXd stiffness;   // N/m
     Eigen::VectorXd damping;     // N·s/m
+    Eigen::VectorXd breakStrain;  // (l - l0) / l0 past which the spring breaks; 0: never
     // each particle's springs, for gathering their forces: particle i's are
     // springEnds[springOffsets[i] .. springOffsets[i + 1]), ascending, each 2 k for spring k's end a
     // and 2 k + 1 for its end b

@@ -38,6 +38,8 @@ constexpr ParameterInfo kTable[] = {
      "A velocity component", -100.0, 100.0},
     {Parameter::Tolerance, "tolerance", "Tolerance", "", 1e-12, 1.0, false, Scale::Log, 1e-6,
      "Local error per step (m, m/s) the adaptive integrator keeps under", 1e-10, 1e-2},
+    {Parameter::BreakStrain, "breakStrain", "Breaking strain", "", 0.0, 1.0e6, false, Scale::Linear, 0.0,
+     "Stretch (l - l0) / l0 at which the spring breaks, live; 0 never breaks", 0.0, 2.0},
 };
 
 std::string formatValue(double value, std::string_view unit)

@@ -23,8 +23,9 @@ enum class Parameter {
     Coordinate,  // a position component or a plane offset
     Speed,       // a velocity component
     Tolerance,   // adaptive-rk45's local error target
+    BreakStrain,  // (l - l0) / l0 at which a spring breaks; 0: never
 };
-inline constexpr int kParameterCount = static_cast<int>(Parameter::Tolerance) + 1;
+inline constexpr int kParameterCount = static_cast<int>(Parameter::BreakStrain) + 1;
 
 enum class Scale { Linear, Log };
 

@@ -33,6 +33,7 @@ inline double contactRestitution(const Model &model, double normalSpeed)
 Eigen::Matrix3Xd &scratch(State &state, int index);
 void collidePlanes(const Model &model, State &state);            // plane_collisions.cpp
 void collideParticles(const Model &model, State &state);         // particle_collisions.cpp
+void breakSprings(const Model &model, State &state);             // spring_breaks.cpp
 bool checkFinite(const Model &model, State &state);              // checks.cpp
 
 }  // namespace core

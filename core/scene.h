@@ -43,6 +43,8 @@ struct SpringDesc {
     double stiffness = 0.0;   // N/m, k
     double damping = 0.0;     // N·s/m, kc
     double restLength = 0.0;  // m, l0
+    // the strain (l - l0) / l0 past which the spring breaks for good during a run; 0: never
+    double breakStrain = 0.0;
 
     bool operator==(const SpringDesc &) const = default;
 };

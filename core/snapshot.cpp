@@ -37,6 +37,9 @@ std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &st
         snapshot->springStrain[at] = rest > 0.0 ? static_cast<float>(((a - b).norm() - rest) / rest) : 0.0f;
     }
 
+    snapshot->springBroken = state.springBroken;
+    snapshot->breakCount = state.breaks.size();
+
     // diagnostics
     snapshot->energies = energies(model, state);
     snapshot->momentum = momentum(model, state);

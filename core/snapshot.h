@@ -23,6 +23,9 @@ struct Snapshot {
     std::vector<std::uint8_t> pinned;  // 1 per pinned particle
     std::vector<float> springEnds;     // xyz of end a, then xyz of end b, per spring
     std::vector<float> springStrain;   // (l - l0) / l0 per spring (0 when l0 = 0)
+    // 1 per broken spring (drawn as nothing); empty when no spring of the scene can break
+    std::vector<std::uint8_t> springBroken;
+    std::uint64_t breakCount = 0;  // springs broken so far
 
     Energies energies;
     Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
@@ -30,6 +33,10 @@ struct Snapshot {
 
     int particleCount() const { return static_cast<int>(radii.size()); }
     int springCount() const { return static_cast<int>(springStrain.size()); }
+    bool isBroken(int spring) const
+    {
+        return !springBroken.empty() && springBroken[static_cast<std::size_t>(spring)] != 0;
+    }
 };
 
 // fills a snapshot of the state (the model gives radii, pins and spring ends)

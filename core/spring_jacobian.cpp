@@ -10,6 +10,8 @@ void addSpringJacobians(const Model &model, const State &state, const Eigen::Mat
                         double dampingScale, Eigen::Matrix3Xd &out)
 {
     for (int k = 0; k < model.springCount(); ++k) {
+        if (state.isBroken(k))
+            continue;
         const int a = model.springA[static_cast<std::size_t>(k)];
         const int b = model.springB[static_cast<std::size_t>(k)];
         // the spring's direction and transverse stiffness (per k) at the current positions

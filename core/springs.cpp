@@ -3,6 +3,7 @@
 #include "passes.h"
 
 #include <cmath>
+#include <cstdint>
 
 // target clones where the compiler and CPU family support them (GCC on x86-64); elsewhere one
 // portable version
@@ -36,11 +37,14 @@ Eigen::Vector3d springForce(const Model &model, const State &state, int k)
 // binary use AVX2 or AVX-512 where the CPU has them. Each value comes from the same IEEE adds,
 // multiplies, divides and square roots as springForce above, in the same order and never
 // contracted (cmake/springlab_flags.cmake), so every clone and the reference give the same bits.
-SPRINGLAB_SIMD_CLONES
-void springForces(int begin, int end, const int *__restrict springA, const int *__restrict springB,
-                  const double *__restrict restLength, const double *__restrict stiffness,
-                  const double *__restrict damping, const double *__restrict x, const double *__restrict v,
-                  double *__restrict out)
+// Breakable scenes pass their broken flags: a broken spring's force is a select to zero, which
+// keeps the loop vectorised; the others build without the flags and pay nothing for them.
+template <bool Breakable>
+SPRINGLAB_SIMD_CLONES void springForces(int begin, int end, const int *__restrict springA,
+                                        const int *__restrict springB, const double *__restrict restLength,
+                                        const double *__restrict stiffness, const double *__restrict damping,
+                                        const std::uint8_t *__restrict broken, const double *__restrict x,
+                                        const double *__restrict v, double *__restrict out)
 {
 #pragma omp simd
     for (int k = begin; k < end; ++k) {
@@ -56,7 +60,9 @@ void springForces(int begin, int end, const int *__restrict springA, const int *
         const double uy = apart ? dy / length : 1.0;
         const double uz = apart ? dz / length : 0.0;
         const double approach = (v[a] - v[b]) * ux + (v[a + 1] - v[b + 1]) * uy + (v[a + 2] - v[b + 2]) * uz;
-        const double magnitude = -stiffness[k] * (length - restLength[k]) - damping[k] * approach;
+        double magnitude = -stiffness[k] * (length - restLength[k]) - damping[k] * approach;
+        if constexpr (Breakable)
+            magnitude = broken[k] != 0 ? 0.0 : magnitude;
         out[3 * k] = magnitude * ux;
         out[3 * k + 1] = magnitude * uy;
         out[3 * k + 2] = magnitude * uz;
@@ -78,10 +84,12 @@ void addSprings(const Model &model, State &state)
     if (perSpring.cols() != springs)
         perSpring.resize(3, springs);  // once, on first use: later steps reuse it
 
+    const bool breakable = !state.springBroken.empty();
     parallelChunks(springs, [&](int begin, int end) {
-        springForces(begin, end, model.springA.data(), model.springB.data(), model.restLength.data(),
-                     model.stiffness.data(), model.damping.data(), state.position.data(), state.velocity.data(),
-                     perSpring.data());
+        const auto kernel = breakable ? springForces<true> : springForces<false>;
+        kernel(begin, end, model.springA.data(), model.springB.data(), model.restLength.data(),
+               model.stiffness.data(), model.damping.data(), state.springBroken.data(), state.position.data(),
+               state.velocity.data(), perSpring.data());
     });
 
     const int n = model.particleCount();
@@ -107,6 +115,8 @@ void addSpringsReference(const Model &model, State &state)
     if (!model.plan.springs)
         return;
     for (int k = 0; k < model.springCount(); ++k) {
+        if (state.isBroken(k))
+            continue;
         const Eigen::Vector3d fa = springForce(model, state, k);
         state.force.col(model.springA[static_cast<std::size_t>(k)]) += fa;
         state.force.col(model.springB[static_cast<std::size_t>(k)]) -= fa;

@@ -14,6 +14,7 @@ std::string_view stageName(Stage stage)
     case Stage::Integrate: return "integrate";
     case Stage::PlaneCollisions: return "plane collisions";
     case Stage::ParticleCollisions: return "particle collisions";
+    case Stage::Breaks: return "spring breaks";
     case Stage::Check: return "check";
     }
     return "unknown";
@@ -28,6 +29,7 @@ State makeState(const Model &model, const SceneDesc &scene)
     state.velocity.resize(3, n);
     state.force.setZero(3, n);
     state.applied.setZero(3, n);
+    fitSpringBreaks(model, state);
     for (Eigen::Index i = 0; i < n; ++i) {
         const ParticleDesc &p = scene.particles[static_cast<std::size_t>(i)];
         state.position.col(i) = p.position;
@@ -35,6 +37,22 @@ State makeState(const Model &model, const SceneDesc &scene)
         state.velocity.col(i) = p.pinned ? Eigen::Vector3d::Zero() : p.velocity;
     }
     return state;
+}
+
+void fitSpringBreaks(const Model &model, State &state)
+{
+    const auto springs = static_cast<std::size_t>(model.springCount());
+    if (!model.plan.springBreaks) {
+        // nothing can break: an unbroken state needs no flags (a broken one keeps them)
+        if (state.breaks.empty())
+            state.springBroken.clear();
+        return;
+    }
+    if (state.springBroken.size() != springs) {
+        state.springBroken.assign(springs, 0);
+        state.breaks.clear();
+    }
+    state.breaks.reserve(springs);
 }
 
 void setAppliedForce(State &state, int particle, const Eigen::Vector3d &force)
@@ -54,6 +72,14 @@ void storeState(const State &state, SceneDesc &scene)
         scene.particles[i].position = state.position.col(column);
         scene.particles[i].velocity = state.velocity.col(column);
     }
+    if (state.breaks.empty())
+        return;
+    assert(state.springBroken.size() == scene.springs.size());
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < scene.springs.size(); ++k)
+        if (state.springBroken[k] == 0)
+            scene.springs[kept++] = scene.springs[k];
+    scene.springs.resize(kept);
 }
 
 }  // namespace core

@@ -10,12 +10,13 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace core {
 
 // the passes of one sub-step, in the order they run
-enum class Stage { Gravity, Drag, Springs, Applied, Integrate, PlaneCollisions, ParticleCollisions, Check };
-inline constexpr int kStageCount = 8;
+enum class Stage { Gravity, Drag, Springs, Applied, Integrate, PlaneCollisions, ParticleCollisions, Breaks, Check };
+inline constexpr int kStageCount = 9;
 std::string_view stageName(Stage stage);
 
 struct StageTiming {
@@ -38,6 +39,13 @@ struct Blowup {
     double value = 0.0;       // the offending component; for StepSize, the last trial step, s
     std::uint64_t step = 0;   // the step it happened in (1 = the first step)
     double time = 0.0;        // s, the time at the start of that step
+};
+
+// a spring that broke: which, and when
+struct SpringBreak {
+    int spring = -1;
+    std::uint64_t step = 0;  // the step it broke in (1 = the first step)
+    double time = 0.0;       // s, the time at the end of that step's sub-step
 };
 
 struct State {
@@ -64,6 +72,16 @@ struct State {
     // scratch of the spring pass: each spring's force on its end a (made on first use)
     Eigen::Matrix3Xd springForce;
 
+    // breakable springs (the plan's springBreaks): 1 per spring once broken, for good; a broken
+    // spring exerts no force and stores no energy. Empty when no spring can break. breaks lists
+    // them in the order they broke, its capacity reserved so that a break allocates nothing
+    std::vector<std::uint8_t> springBroken;
+    std::vector<SpringBreak> breaks;
+    bool isBroken(int spring) const
+    {
+        return !springBroken.empty() && springBroken[static_cast<std::size_t>(spring)] != 0;
+    }
+
     ContactGrid contacts;  // scratch of the particle-pair pass: its grid and pairs (broad_phase.cpp)
 
     Profile profile;
@@ -73,10 +91,15 @@ struct State {
 // the initial state of a scene (pinned particles start, and stay, at rest)
 State makeState(const Model &model, const SceneDesc &scene);
 
+// sizes the breakable springs' flags to the model, when it has springs that can break: kept as they
+// are for the same number of springs (a parameter change), all whole again for another number
+void fitSpringBreaks(const Model &model, State &state);
+
 // sets (or, with a zero force, clears) the force applied from outside to one particle
 void setAppliedForce(State &state, int particle, const Eigen::Vector3d &force);
 
-// writes the state's positions and velocities into the scene as its new initial conditions
+// writes the state's positions and velocities into the scene as its new initial conditions, and
+// leaves out the springs that broke, so that a run from it goes on as this one would
 void storeState(const State &state, SceneDesc &scene);
 
 }  // namespace core

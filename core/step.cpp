@@ -52,6 +52,9 @@ bool step(const Model &model, State &state)
         timed(state, Stage::PlaneCollisions, plan.planeCollisions, [&] { collidePlanes(model, state); });
         timed(state, Stage::ParticleCollisions, plan.particleCollisions, [&] { collideParticles(model, state); });
 
+        // springs stretched past their breaking strain break, for good
+        timed(state, Stage::Breaks, plan.springBreaks, [&] { breakSprings(model, state); });
+
         // 4. every value finite and bounded, else stop here and say where
         bool finite = true;
         timed(state, Stage::Check, true, [&] { finite = checkFinite(model, state); });

@@ -83,8 +83,13 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
                                 "joins particle " + std::to_string(spring.a) + " to itself"};
         if (!check(Parameter::Stiffness, spring.stiffness, indexed("springs", i, "stiffness"), problem) ||
             !check(Parameter::Damping, spring.damping, indexed("springs", i, "damping"), problem) ||
-            !check(Parameter::RestLength, spring.restLength, indexed("springs", i, "restLength"), problem))
+            !check(Parameter::RestLength, spring.restLength, indexed("springs", i, "restLength"), problem) ||
+            !check(Parameter::BreakStrain, spring.breakStrain, indexed("springs", i, "breakStrain"), problem))
             return problem;
+        // a strain is measured against the rest length
+        if (spring.breakStrain > 0.0 && !(spring.restLength > 0.0))
+            return SceneProblem{indexed("springs", i, "breakStrain"),
+                                "needs a rest length greater than 0 m: a strain is a share of the rest length"};
     }
 
     // planes

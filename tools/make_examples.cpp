@@ -13,6 +13,10 @@ using core::ParticleDesc;
 using core::PlaneDesc;
 using Eigen::Vector3d;
 
+// the tearable cloth's springs break at this strain, (l - l0) / l0; its ball's mass, kg
+constexpr double kTearStrain = 0.15;
+constexpr double kBallMass = 4.0;
+
 // the handout's first scene: two particles under gravity, no contacts, a fine time step
 core::SceneDesc particlesScene()
 {
@@ -73,6 +77,30 @@ core::SceneDesc clothScene()
     return scene;
 }
 
+// a 24 × 24 sheet held along two opposite edges, its springs breakable, and a heavy ball dropped
+// onto its middle: the sheet stretches under the ball until it tears
+core::SceneDesc tearableClothScene()
+{
+    core::ClothOptions options;
+    options.rows = 24;
+    options.cols = 24;
+    options.pinCorners = false;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.name = "tearable-cloth";
+    for (int c = 0; c < options.cols; ++c) {
+        scene.particles[static_cast<std::size_t>(c)].pinned = true;
+        scene.particles[static_cast<std::size_t>((options.rows - 1) * options.cols + c)].pinned = true;
+    }
+    for (core::SpringDesc &spring : scene.springs)
+        spring.breakStrain = kTearStrain;
+    // the sheet is centred on the y axis: the ball falls onto its middle
+    scene.particles.push_back(
+        ParticleDesc{Vector3d(0.0, options.height + 0.6, 0.0), Vector3d::Zero(), kBallMass, 0.12, false});
+    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    scene.settings.restitution = 0.3;  // the ball lands where it falls through
+    return scene;
+}
+
 }  // namespace
 
 int main(int argc, char **argv)
@@ -83,7 +111,7 @@ int main(int argc, char **argv)
     }
     const QDir dir(QString::fromLocal8Bit(argv[1]));
     for (const core::SceneDesc &scene :
-         {particlesScene(), springsScene(), collisionsScene(), poolScene(), clothScene()}) {
+         {particlesScene(), springsScene(), collisionsScene(), poolScene(), clothScene(), tearableClothScene()}) {
         if (auto problem = core::findProblem(scene)) {
             std::fprintf(stderr, "%s: %s: %s\n", scene.name.c_str(), problem->path.c_str(), problem->message.c_str());
             return 1;

@@ -7,6 +7,7 @@
 #include "core/scene.h"
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -63,8 +64,18 @@ struct StartRecordingEdit {};
 struct StopRecordingEdit {
     std::uint64_t request = 0;
 };
+// the timeline (timeline.h): show the recorded state of a step (pausing the run), one step back,
+// and the memory the recording may use
+struct ScrubEdit {
+    std::uint64_t step = 0;
+};
+struct StepBackEdit {};
+struct TimelineBudgetEdit {
+    std::size_t bytes = 0;
+};
 using Edit = std::variant<SetSceneEdit, PlayEdit, PauseEdit, StepOnceEdit, ResetEdit, TiltEdit, SteerEdit, SyncEdit,
-                          PlanAccuracyEdit, GrabEdit, CaptureStateEdit, StartRecordingEdit, StopRecordingEdit>;
+                          PlanAccuracyEdit, GrabEdit, CaptureStateEdit, StartRecordingEdit, StopRecordingEdit,
+                          ScrubEdit, StepBackEdit, TimelineBudgetEdit>;
 
 // a thread-safe first-in first-out queue of edits, numbered in the order they were pushed
 class EditQueue {

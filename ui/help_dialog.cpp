@@ -69,6 +69,18 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
     addEntry(tr("Status bar: ΔE"),
              tr("The change of the total energy since the last reset, in % of it (in J when it is about 0)"));
 
+    // the timeline and tearing
+    addSection(tr("Timeline"));
+    addEntry(tr("Timeline slider, under the view"),
+             tr("Scrub through the recorded run (the exact recorded state of every step); scrubbing pauses. Play, "
+                "or any edit, goes on from the step shown and drops what was recorded after it"));
+    addEntry(tr("Timeline ◀ ▶ buttons"), tr("One step back or forward through the recording (Shift+F6, F6)"));
+    addEntry(tr("Timeline budget (MB)"),
+             tr("The memory the recording may use, shown as used / budget; past it the oldest steps go"));
+    addEntry(tr("Inspector › Breaking strain"),
+             tr("A spring stretched past (l - l0) / l0 = this breaks for good during the run (0: never); red "
+                "ticks on the timeline mark the steps springs broke in; Reset mends them"));
+
     // keys as wide as they need, descriptions wrapped to what is left
     m_table->resizeColumnToContents(0);
     connect(m_table->horizontalHeader(), &QHeaderView::sectionResized, m_table, &QTableWidget::resizeRowsToContents);

@@ -65,6 +65,8 @@ const SpringField kSpringFields[] = {
      &core::SpringDesc::damping},
     {"restLength", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Rest length"), core::Parameter::RestLength,
      &core::SpringDesc::restLength},
+    {"breakStrain", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Breaking strain"), core::Parameter::BreakStrain,
+     &core::SpringDesc::breakStrain},
 };
 
 // the field's value in a particle, for reading (const) or writing

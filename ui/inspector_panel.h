@@ -35,7 +35,7 @@ public:
     QLabel *titleLabel() const { return m_title; }
     // a particle field by key: "mass", "radius", "position.x" .. "position.z", "velocity.x" .. "velocity.z"
     InspectorSpinBox *particleField(const QString &key) const;
-    // a spring field by key: "stiffness", "damping", "restLength"
+    // a spring field by key: "stiffness", "damping", "restLength", "breakStrain"
     InspectorSpinBox *springField(const QString &key) const;
     QCheckBox *pinnedBox() const { return m_pinned; }
     // which particles the selected springs join, read-only

@@ -46,7 +46,7 @@ namespace ui {
 namespace {
 
 // the examples in the handout's order; any others found in the resources follow
-constexpr const char *kExampleOrder[] = {"particles", "springs", "collisions", "pool", "cloth"};
+constexpr const char *kExampleOrder[] = {"particles", "springs", "collisions", "pool", "cloth", "tearable-cloth"};
 
 // how long the status bar shows what the accuracy planner picked, ms
 constexpr int kPlanMessageMs = 20000;
@@ -72,9 +72,9 @@ MainWindow::MainWindow(QWidget *parent)
     m_viewport->setObjectName(QStringLiteral("viewport"));
     m_viewport->setFocusPolicy(Qt::StrongFocus);
     m_viewport->setMinimumSize(320, 240);
-    setCentralWidget(m_viewport);
 
     createActions();
+    createTimeline();  // the view with the timeline under it, in the middle
     createMenus();
     createDocks();
     createEditing();
@@ -214,6 +214,7 @@ void MainWindow::createMenus()
     QMenu *simulation = m_simulationMenu = menuBar()->addMenu(tr("&Simulation"));
     simulation->addAction(m_playAction);
     simulation->addAction(m_stepAction);
+    simulation->addAction(m_stepBackAction);
     simulation->addAction(m_resetAction);
     simulation->addAction(m_captureAction);
     simulation->addAction(m_recordAction);
@@ -505,6 +506,7 @@ void MainWindow::frameChanged()
     if (!frame->snapshot)
         return;
     m_viewport->setSnapshot(frame->snapshot);
+    showTimeline(*frame);
     if (m_frameAllAfter != 0 && frame->appliedEdit >= m_frameAllAfter) {
         m_frameAllAfter = 0;
         m_viewport->frameAll();

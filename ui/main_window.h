@@ -40,6 +40,8 @@ struct CapturedState;
 struct SessionRecording;
 class SceneDocument;
 class SimulationController;
+struct SimulationFrame;
+class TimelineBar;
 class Viewport;
 enum class SceneChange;
 
@@ -118,6 +120,8 @@ public:
     InspectorPanel *inspector() const { return m_inspector; }
     SimulationController *controller() const { return m_controller; }
     Viewport *viewport() const { return m_viewport; }
+    // the strip under the view that scrubs through the recorded run
+    TimelineBar *timelineBar() const { return m_timelineBar; }
     ParametersPanel *parametersPanel() const { return m_parameters; }
     // Simulation › Accuracy's dialog; null until first opened
     AccuracyDialog *accuracyDialog() const { return m_accuracy; }
@@ -147,6 +151,9 @@ private:
     void createUndoHistoryDock();
     void createAutosave();
     void createStatusBar();
+    // the timeline (main_window_timeline.cpp)
+    void createTimeline();
+    void showTimeline(const SimulationFrame &frame);
     void readSettings();
     void writeSettings() const;
 
@@ -207,6 +214,8 @@ private:
     // actions that change with the state
     QAction *m_playAction = nullptr;
     QAction *m_stepAction = nullptr;
+    QAction *m_stepBackAction = nullptr;
+    TimelineBar *m_timelineBar = nullptr;
     QAction *m_resetAction = nullptr;
     QAction *m_tiltAction = nullptr;
     QAction *m_collisionsAction = nullptr;

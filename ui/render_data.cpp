@@ -110,6 +110,8 @@ void packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertice
             selected[std::size_t(s)] = 1;
     vertices.reserve(std::size_t(springs) * 2 * kVertexFloats);
     for (int s = 0; s < springs; ++s) {
+        if (snapshot.isBroken(s))
+            continue;  // a broken spring is gone from the picture
         const float *e = snapshot.springEnds.data() + std::size_t(s) * 6;
         const Rgb c = s == highlight.hover        ? kHoverColour
                       : selected[std::size_t(s)] ? kSelectedColour

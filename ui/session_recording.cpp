@@ -14,6 +14,7 @@ ReplayResult replay(const SessionRecording &recording)
         return result;
     }
     SimulationRunner runner;
+    runner.apply(TimelineBudgetEdit{0});  // a replay is not scrubbed: no timeline to keep
     runner.apply(SetSceneEdit{recording.scene, SceneChange::Replace});
     if (!runner.restoreRecordedStart(recording)) {
         result.error = "the recorded state does not fit the recorded scene";

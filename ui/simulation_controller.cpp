@@ -83,6 +83,23 @@ std::uint64_t SimulationController::pause()
     return post(PauseEdit{});
 }
 
+std::uint64_t SimulationController::scrub(std::uint64_t step)
+{
+    setRunning(false);
+    return post(ScrubEdit{step});
+}
+
+std::uint64_t SimulationController::stepBack()
+{
+    setRunning(false);
+    return post(StepBackEdit{});
+}
+
+std::uint64_t SimulationController::setTimelineBudget(std::size_t bytes)
+{
+    return post(TimelineBudgetEdit{bytes});
+}
+
 std::uint64_t SimulationController::togglePlay()
 {
     return m_running ? pause() : play();

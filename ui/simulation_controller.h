@@ -53,6 +53,12 @@ public:
     std::uint64_t startRecording();
     std::uint64_t stopRecording();
 
+    // the timeline: show the recorded state of a step (pauses), one step back, and the memory the
+    // recording may use (bytes; 0 turns it off)
+    std::uint64_t scrub(std::uint64_t step);
+    std::uint64_t stepBack();
+    std::uint64_t setTimelineBudget(std::size_t bytes);
+
     // tilts are drawn from this seed: the n-th tilt after setTiltSeed(s) is the same every time
     void setTiltSeed(std::uint64_t seed);
 

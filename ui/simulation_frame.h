@@ -17,8 +17,23 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ui {
+
+// what the timeline holds, for its bar under the view
+struct TimelineInfo {
+    std::uint64_t firstStep = 0;  // the recorded steps, oldest to newest
+    std::uint64_t lastStep = 0;
+    double firstTime = 0.0;  // s
+    double lastTime = 0.0;   // s
+    bool empty = true;
+    std::optional<std::uint64_t> scrubStep;  // the step shown while scrubbing
+    std::size_t usedBytes = 0;
+    std::size_t budgetBytes = 0;
+    std::vector<std::uint64_t> breakSteps;  // steps in which springs broke
+    bool locked = false;  // a session is being recorded: no scrubbing until it ends
+};
 
 struct SimulationFrame {
     std::shared_ptr<const core::Snapshot> snapshot;
@@ -55,6 +70,8 @@ struct SimulationFrame {
     std::optional<core::StabilityLimit> stability;
     // particles faster than the pair speed limit allows (core::explainPairSpeed); empty when not
     std::string pairSpeedWarning;
+
+    TimelineInfo timeline;
 };
 
 }  // namespace ui

@@ -4,6 +4,7 @@
 
 #include "core/step.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <random>
@@ -35,14 +36,59 @@ struct Overloaded : Handlers... {
 template <typename... Handlers>
 Overloaded(Handlers...) -> Overloaded<Handlers...>;
 
+// The mouse spring is a critically damped spring per unit mass, ω² (target - x) - 2ω v, so every
+// particle follows the cursor in the same time whatever its mass. ω is held to a tenth of the
+// sub-step's rate, well inside every explicit integrator's stability limit. Worked out before each
+// step from where the particle is, by the run and by the timeline's replays alike.
+void applyGrabForce(const core::Model &model, core::State &state, const HeldForces &held, double grabRate)
+{
+    if (held.grabParticle < 0 || held.grabParticle >= model.particleCount())
+        return;
+    const int i = held.grabParticle;
+    const auto col = static_cast<Eigen::Index>(i);
+    if (model.isPinned(i)) {
+        state.position.col(col) = held.grabTarget;
+        return;
+    }
+    const double h = model.timeStep / model.substeps;
+    const double omega = std::min(grabRate, 0.1 / h);
+    const Eigen::Vector3d x = state.position.col(col);
+    const Eigen::Vector3d v = state.velocity.col(col);
+    Eigen::Vector3d force = model.mass[col] * (omega * omega * (held.grabTarget - x) - 2.0 * omega * v);
+    if (i == held.steerParticle)
+        force += held.steerForce;
+    core::setAppliedForce(state, i, force);
+}
+
+// whether two scenes hold the same particles, springs and planes, so that a state of one is a
+// state of the other (they may differ in settings and per-spring values)
+bool sameStructure(const core::SceneDesc &a, const core::SceneDesc &b)
+{
+    return a.particles == b.particles && a.planes == b.planes &&
+           std::equal(a.springs.begin(), a.springs.end(), b.springs.begin(), b.springs.end(),
+                      [](const core::SpringDesc &x, const core::SpringDesc &y) { return x.a == y.a && x.b == y.b; });
+}
+
 }  // namespace
+
+bool SimulationRunner::changesTheRun(const Edit &edit) const
+{
+    return std::holds_alternative<SetSceneEdit>(edit) || std::holds_alternative<PlayEdit>(edit) ||
+           std::holds_alternative<TiltEdit>(edit) || std::holds_alternative<SteerEdit>(edit) ||
+           std::holds_alternative<GrabEdit>(edit) || std::holds_alternative<StartRecordingEdit>(edit);
+}
 
 void SimulationRunner::apply(const Edit &edit)
 {
+    // an edit that changes the run, made while a recorded step is shown, goes on from that step
+    if (m_scrub && changesTheRun(edit))
+        resumeFromScrub();
+
     // what changes the run goes into the recording; requests for copies and plans do not
     if (m_recording && !std::holds_alternative<SyncEdit>(edit) && !std::holds_alternative<PlanAccuracyEdit>(edit) &&
         !std::holds_alternative<CaptureStateEdit>(edit) && !std::holds_alternative<StartRecordingEdit>(edit) &&
-        !std::holds_alternative<StopRecordingEdit>(edit))
+        !std::holds_alternative<StopRecordingEdit>(edit) && !std::holds_alternative<ScrubEdit>(edit) &&
+        !std::holds_alternative<StepBackEdit>(edit) && !std::holds_alternative<TimelineBudgetEdit>(edit))
         m_recording->entries.push_back({m_stepsTaken - m_recordingFrom, edit});
     std::visit(Overloaded{
                    [this](const SetSceneEdit &e) { setScene(e); },
@@ -50,6 +96,13 @@ void SimulationRunner::apply(const Edit &edit)
                    [this](const PauseEdit &) { m_running = false; },
                    [this](const StepOnceEdit &) {
                        m_running = false;
+                       // inside the recording: one step on through it; at its end, a new step
+                       if (m_scrub && scrubStep() && *scrubStep() < m_timeline.lastStep()) {
+                           scrubTo(*scrubStep() + 1);
+                           return;
+                       }
+                       if (m_scrub)
+                           resumeFromScrub();
                        if (hasScene()) {
                            m_lastGood = m_state;
                            if (stepOnce())
@@ -69,8 +122,103 @@ void SimulationRunner::apply(const Edit &edit)
                        m_finishedRecording = stopRecording();
                        m_recordingRequest = e.request;
                    },
+                   [this](const ScrubEdit &e) { scrubTo(e.step); },
+                   [this](const StepBackEdit &) { stepBack(); },
+                   [this](const TimelineBudgetEdit &e) { m_timeline.setBudget(e.bytes); },
                },
                edit);
+
+    // the edited state starts a keyframe: replays after it use the new model and forces
+    if (hasScene() && (std::holds_alternative<SetSceneEdit>(edit) || std::holds_alternative<ResetEdit>(edit) ||
+                       std::holds_alternative<TiltEdit>(edit) || std::holds_alternative<SteerEdit>(edit) ||
+                       std::holds_alternative<GrabEdit>(edit)))
+        keyframe();
+}
+
+HeldForces SimulationRunner::heldForces() const
+{
+    return HeldForces{m_grabParticle, m_grabTarget, m_steerParticle, m_steerForce};
+}
+
+void SimulationRunner::keyframe()
+{
+    m_timeline.afterEdit(m_model, m_scene, m_state, heldForces());
+}
+
+std::optional<std::uint64_t> SimulationRunner::scrubStep() const
+{
+    if (!m_scrub)
+        return std::nullopt;
+    return m_scrub->state.step;
+}
+
+// the recorded state of a step: the keyframe before it, then the steps after it taken again with
+// the keyframe's model and held forces, exactly as the run took them
+bool SimulationRunner::scrubTo(std::uint64_t step)
+{
+    if (!hasScene() || m_recording || !m_timeline.covers(step))
+        return false;
+    const TimelineKey *key = m_timeline.keyAtOrBefore(step);
+    if (!key)
+        return false;
+    m_running = false;
+    m_owed = 0.0;
+    if (!m_scrub)
+        m_scrub.emplace();
+    Scrub &scrub = *m_scrub;
+    // on from the step shown when it lies between the keyframe and the target (stepping forward)
+    const bool onward = scrub.model == key->model && scrub.state.step >= key->step && scrub.state.step <= step &&
+                        scrub.state.position.cols() == key->position.cols() && !scrub.state.blowup;
+    if (!onward) {
+        restoreKey(*key, scrub.state);
+        if (scrub.state.force.cols() != key->position.cols())
+            scrub.state.force.setZero(3, key->position.cols());
+    }
+    scrub.model = key->model;
+    scrub.scene = key->scene;
+    while (scrub.state.step < step) {
+        applyGrabForce(*scrub.model, scrub.state, key->held, kGrabRate);
+        if (!core::step(*scrub.model, scrub.state)) {
+            m_scrub.reset();  // a recorded step cannot fail; if it does, show the run instead
+            return false;
+        }
+    }
+    return true;
+}
+
+void SimulationRunner::stepBack()
+{
+    const std::uint64_t shown = m_scrub ? m_scrub->state.step : m_state.step;
+    if (shown > 0)
+        scrubTo(shown - 1);
+}
+
+// the step shown becomes the run's: under the scene it was recorded with, then the scene as it is
+// now in the editor takes over (as an edit would), and what was recorded after it is gone
+void SimulationRunner::resumeFromScrub()
+{
+    Scrub scrub = std::move(*m_scrub);
+    m_scrub.reset();
+    m_timeline.truncateAfter(scrub.state.step);
+    const std::shared_ptr<const core::SceneDesc> current = m_scene;
+    const core::Profile profile = m_state.profile;
+    m_state = std::move(scrub.state);
+    m_state.profile = profile;
+    // the held forces are the editor's own now, not the recorded ones
+    m_state.applied.setZero(3, m_state.position.cols());
+    m_state.appliedCount = 0;
+    m_owed = 0.0;
+    m_scene = scrub.scene;
+    m_model = scrub.model;
+    if (current != m_scene) {
+        setScene(SetSceneEdit{current, sameStructure(*m_scene, *current) ? SceneChange::Parameters
+                                                                         : SceneChange::Structure});
+    } else {
+        applySteering();
+        m_estimateStale = true;
+        checkPairSpeed();
+    }
+    keyframe();
 }
 
 void SimulationRunner::setScene(const SetSceneEdit &edit)
@@ -81,9 +229,11 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
     m_model = core::compileModel(*m_scene);
     switch (edit.change) {
     case SceneChange::Parameters:
-        // same particles: the state stays valid as it is
-        if (sameCount)
+        // same particles: the state stays valid as it is, broken springs included
+        if (sameCount) {
+            core::fitSpringBreaks(*m_model, m_state);
             break;
+        }
         [[fallthrough]];
     case SceneChange::Structure:
         if (previous && m_state.position.cols() == static_cast<Eigen::Index>(previous->particles.size())) {
@@ -95,6 +245,9 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
         restart();
         break;
     }
+    // another scene, or the same one from its start: the recording belongs to the old run
+    if (edit.change == SceneChange::Replace || m_state.step == 0)
+        m_timeline.clear();
     if (edit.change == SceneChange::Replace) {
         // another scene: nothing of the old one's steering survives, and its costs start afresh
         m_running = false;
@@ -148,6 +301,16 @@ void SimulationRunner::carryMotion(const core::SceneDesc &previous)
         rebuilt.position.col(col) = m_state.position.col(old);
         rebuilt.velocity.col(col) = m_state.velocity.col(old);
     }
+    // springs broken in the run stay broken while the spring list is the same
+    const bool sameSprings =
+        !m_state.springBroken.empty() && rebuilt.springBroken.size() == m_state.springBroken.size() &&
+        std::equal(previous.springs.begin(), previous.springs.end(), m_scene->springs.begin(),
+                   [](const core::SpringDesc &x, const core::SpringDesc &y) { return x.a == y.a && x.b == y.b; });
+    if (sameSprings) {
+        rebuilt.springBroken = m_state.springBroken;
+        rebuilt.breaks = m_state.breaks;
+        core::fitSpringBreaks(*m_model, rebuilt);  // the capacity for every break again
+    }
     rebuilt.time = m_state.time;
     rebuilt.step = m_state.step;
     m_state = std::move(rebuilt);
@@ -165,6 +328,8 @@ void SimulationRunner::reset()
 {
     if (!hasScene())
         return;
+    m_scrub.reset();
+    m_timeline.clear();
     restart();
     applySteering();
     m_estimateStale = true;
@@ -213,34 +378,19 @@ void SimulationRunner::grab(const GrabEdit &edit)
     applyGrab();
 }
 
-// The mouse spring is a critically damped spring per unit mass, ω² (target - x) - 2ω v, so every
-// particle follows the cursor in the same time whatever its mass. ω is held to a tenth of the
-// sub-step's rate, well inside every explicit integrator's stability limit.
 void SimulationRunner::applyGrab()
 {
-    if (!hasScene() || m_grabParticle < 0 || m_grabParticle >= m_model->particleCount())
-        return;
-    const int i = m_grabParticle;
-    const auto col = static_cast<Eigen::Index>(i);
-    if (m_model->isPinned(i)) {
-        m_state.position.col(col) = m_grabTarget;
-        return;
-    }
-    const double h = m_model->timeStep / m_model->substeps;
-    const double omega = std::min(kGrabRate, 0.1 / h);
-    const Eigen::Vector3d x = m_state.position.col(col);
-    const Eigen::Vector3d v = m_state.velocity.col(col);
-    Eigen::Vector3d force = m_model->mass[col] * (omega * omega * (m_grabTarget - x) - 2.0 * omega * v);
-    if (i == m_steerParticle)
-        force += m_steerForce;
-    core::setAppliedForce(m_state, i, force);
+    if (hasScene())
+        applyGrabForce(*m_model, m_state, heldForces(), kGrabRate);
 }
 
 bool SimulationRunner::stepOnce()
 {
     applyGrab();
-    if (core::step(*m_model, m_state))
+    if (core::step(*m_model, m_state)) {
+        m_timeline.afterStep(m_model, m_scene, m_state, heldForces());
         return true;
+    }
     // blown up: stop, keep the report, and go back to the last good state
     m_blowup = m_state.blowup;
     m_running = false;
@@ -249,6 +399,7 @@ bool SimulationRunner::stepOnce()
     m_state = m_lastGood;
     m_state.profile = profile;
     m_state.blowup.reset();
+    m_timeline.truncateAfter(m_state.step);
     m_estimateStale = true;
     return false;
 }
@@ -336,13 +487,15 @@ void SimulationRunner::planAccuracy(const PlanAccuracyEdit &edit)
 void SimulationRunner::captureState(const CaptureStateEdit &edit)
 {
     // a copy in doubles: the scene's initial conditions get exactly what the run has
+    // (while scrubbing, the step shown)
     auto captured = std::make_shared<CapturedState>();
     if (hasScene()) {
-        captured->position = m_state.position;
-        captured->velocity = m_state.velocity;
-        captured->time = m_state.time;
-        captured->step = m_state.step;
-        captured->scene = m_scene;
+        const core::State &state = shownState();
+        captured->position = state.position;
+        captured->velocity = state.velocity;
+        captured->time = state.time;
+        captured->step = state.step;
+        captured->scene = m_scrub ? m_scrub->scene : m_scene;
     }
     m_captured = std::move(captured);
     m_captureRequest = edit.request;
@@ -352,6 +505,8 @@ std::shared_ptr<const core::Snapshot> SimulationRunner::snapshot() const
 {
     if (!hasScene())
         return nullptr;
+    if (m_scrub)
+        return core::makeSnapshot(*m_scrub->model, m_scrub->state);
     return core::makeSnapshot(*m_model, m_state);
 }
 
@@ -415,6 +570,9 @@ bool SimulationRunner::restoreRecordedStart(const SessionRecording &recording)
     m_state.adaptiveStep = recording.adaptiveStep;
     m_stepsTaken = 0;
     m_estimateStale = true;
+    m_scrub.reset();
+    m_timeline.clear();
+    keyframe();
     return true;
 }
 

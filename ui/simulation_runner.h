@@ -11,10 +11,17 @@
 // which the drift is measured. The accuracy planner runs here too, on the runner's own state, and
 // so does the stability analysis: the explicit integrators' limit for the model as edited, and the
 // explanation of a blow-up at the last good state.
+//
+// The run is recorded on a timeline (timeline.h) as it goes. Scrubbing shows a recorded step,
+// replayed exactly from the keyframe before it, and pauses the run there; stepping back and forth
+// moves through the recording. Play, or any edit that changes the run, resumes from the step shown
+// with the scene as it is now in the editor, and the recorded future after that step is discarded
+// (one line of history, no branches).
 
 #include "captured_state.h"
 #include "edit_queue.h"
 #include "session_recording.h"
+#include "timeline.h"
 
 #include "core/accuracy_planner.h"
 #include "core/diagnostics.h"
@@ -75,8 +82,15 @@ public:
     std::shared_ptr<const core::Model> model() const { return m_model; }
     std::shared_ptr<const core::SceneDesc> scene() const { return m_scene; }
 
-    // the current state, packed for drawing
+    // the current state, packed for drawing: the step scrubbed to while scrubbing, else the run's
     std::shared_ptr<const core::Snapshot> snapshot() const;
+
+    // the timeline: what it holds, and the step shown while scrubbing (nullopt at the run's end)
+    const Timeline &timeline() const { return m_timeline; }
+    bool isScrubbing() const { return m_scrub.has_value(); }
+    std::optional<std::uint64_t> scrubStep() const;
+    // the state shown: the scrubbed step's while scrubbing, else the run's
+    const core::State &shownState() const { return m_scrub ? m_scrub->state : m_state; }
 
     // what stopped the run by blowing up, once, explained at the last good state (what failed,
     // where, why and the fix: core::explainBlowup); the caller reports it
@@ -131,9 +145,24 @@ private:
     void planAccuracy(const PlanAccuracyEdit &edit);
     void captureState(const CaptureStateEdit &edit);
 
+    // the timeline
+    struct Scrub {
+        std::shared_ptr<const core::Model> model;
+        std::shared_ptr<const core::SceneDesc> scene;
+        core::State state;
+    };
+    bool changesTheRun(const Edit &edit) const;
+    HeldForces heldForces() const;
+    void keyframe();
+    bool scrubTo(std::uint64_t step);
+    void stepBack();
+    void resumeFromScrub();
+
     std::shared_ptr<const core::SceneDesc> m_scene;
     std::shared_ptr<const core::Model> m_model;
     core::State m_state;
+    Timeline m_timeline;
+    std::optional<Scrub> m_scrub;  // while a recorded step is shown
     core::State m_lastGood;  // the state before the latest steps, restored if they blow up
     bool m_running = false;
     double m_owed = 0.0;  // s of simulated time not yet covered by a whole step

@@ -115,6 +115,18 @@ void SimulationWorker::publish()
     frame->recordingRequest = m_runner.recordingRequest();
     frame->stability = m_runner.stability();
     frame->pairSpeedWarning = m_runner.pairSpeedWarning();
+    const Timeline &timeline = m_runner.timeline();
+    TimelineInfo &info = frame->timeline;
+    info.empty = timeline.empty();
+    info.firstStep = timeline.firstStep();
+    info.lastStep = timeline.lastStep();
+    info.firstTime = timeline.firstTime();
+    info.lastTime = timeline.lastTime();
+    info.scrubStep = m_runner.scrubStep();
+    info.usedBytes = timeline.usedBytes();
+    info.budgetBytes = timeline.budget();
+    info.breakSteps = timeline.breakSteps();
+    info.locked = m_runner.isRecording();
     if (m_mailbox.publish(std::move(frame)))
         emit frameReady();
 }

@@ -250,6 +250,8 @@ int Viewport::springAt(const QPointF &pixel) const
     int nearest = -1;
     float best = kPickPixels;
     for (int k = 0; k < springs; ++k) {
+        if (s.isBroken(k))
+            continue;  // not drawn, so not picked
         const float *e = s.springEnds.data() + std::size_t(k) * 6;
         const auto a = m_camera.project(QVector3D(e[0], e[1], e[2]));
         const auto b = m_camera.project(QVector3D(e[3], e[4], e[5]));

@@ -338,11 +338,12 @@ bool Reader::readSprings(const QJsonObject &root, core::SceneDesc &scene)
 
         if (!member(object, path, QLatin1String("stiffness"), Need::Required, spring.stiffness) ||
             !member(object, path, QLatin1String("damping"), Need::Required, spring.damping) ||
-            !member(object, path, QLatin1String("restLength"), Need::Optional, spring.restLength, &hasRestLength))
+            !member(object, path, QLatin1String("restLength"), Need::Optional, spring.restLength, &hasRestLength) ||
+            !member(object, path, QLatin1String("breakStrain"), Need::Optional, spring.breakStrain))
             return false;
         warnUnknownKeys(object, path,
                         {QLatin1String("particles"), QLatin1String("stiffness"), QLatin1String("damping"),
-                         QLatin1String("restLength")});
+                         QLatin1String("restLength"), QLatin1String("breakStrain")});
 
         // no rest length: the spring rests at its initial length
         const auto count = static_cast<int>(scene.particles.size());
@@ -709,7 +710,11 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
         out += "{\"particles\": [" + QByteArray::number(spring.a) + ", " + QByteArray::number(spring.b) +
                "], \"stiffness\": " + formatNumber(spring.stiffness) +
                ", \"damping\": " + formatNumber(spring.damping) +
-               ", \"restLength\": " + formatNumber(spring.restLength) + '}';
+               ", \"restLength\": " + formatNumber(spring.restLength);
+        // only breakable springs say so, so files of unbreakable ones stay as they were
+        if (spring.breakStrain > 0.0)
+            out += ", \"breakStrain\": " + formatNumber(spring.breakStrain);
+        out += '}';
     });
     appendList(out, "planes", scene.planes, true, [&](const core::PlaneDesc &plane) {
         out += "{\"normal\": ";

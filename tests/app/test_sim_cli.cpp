@@ -8,6 +8,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QRegularExpression>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
@@ -122,6 +123,7 @@ private slots:
     void resumeEqualsUninterrupted_data();
     void resumeEqualsUninterrupted();
     void replayRunsARecordingToItsBits();
+    void tearableClothTears();
 
 private:
     QString path(const QString &name) const { return m_dir.filePath(name); }
@@ -418,6 +420,28 @@ void TestSimCli::replayRunsARecordingToItsBits()
     const Run refused = sim({session, u"--replay"_s, u"--steps"_s, u"5"_s});
     QCOMPARE(refused.exitCode, 2);
     QVERIFY2(refused.err.contains("--steps cannot change it"), refused.err.constData());
+}
+
+void TestSimCli::tearableClothTears()
+{
+    // the ball tears through the sheet: the summary counts the breaks, the final file has fewer
+    // springs, and the ball lies on the floor under the sheet's height
+    const QString scene = QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/tearable-cloth.json");
+    const QString out = path(u"torn.json"_s);
+    const Run run = sim({scene, u"--duration"_s, u"2"_s, u"--output"_s, out});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    const QRegularExpressionMatch match =
+        QRegularExpression(u"breaks     (\\d+) of (\\d+) springs broke, the first in step (\\d+)"_s)
+            .match(QString::fromUtf8(run.out));
+    QVERIFY2(match.hasMatch(), run.out.constData());
+    const int broken = match.captured(1).toInt();
+    const int springs = match.captured(2).toInt();
+    QVERIFY(broken > 10);
+    const io::LoadResult torn = io::loadScene(out);
+    QVERIFY2(torn.ok(), qPrintable(torn.error));
+    QCOMPARE(int(torn.scene->springs.size()), springs - broken);
+    const core::ParticleDesc &ball = torn.scene->particles.back();
+    QVERIFY2(ball.position.y() < 0.5, qPrintable(QString("the ball is at y = %1").arg(ball.position.y())));
 }
 
 QTEST_GUILESS_MAIN(TestSimCli)

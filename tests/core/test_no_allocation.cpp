@@ -98,11 +98,14 @@ void TestNoAllocation::stepAllocatesNothing_data()
 {
     QTest::addColumn<int>("integrator");
     QTest::addColumn<int>("size");
-    for (core::Integrator integrator : core::kIntegrators)
-        for (int size : {6, 70}) {
-            const std::string_view name = core::integratorName(integrator);
-            QTest::addRow("%.*s, %d × %d", int(name.size()), name.data(), size, size) << int(integrator) << size;
-        }
+    QTest::addColumn<bool>("breakable");
+    for (core::Integrator integrator : core::kIntegrators) {
+        const std::string_view name = core::integratorName(integrator);
+        for (int size : {6, 70})
+            QTest::addRow("%.*s, %d × %d", int(name.size()), name.data(), size, size)
+                << int(integrator) << size << false;
+        QTest::addRow("%.*s, 6 × 6 tearing", int(name.size()), name.data()) << int(integrator) << 6 << true;
+    }
 }
 
 void TestNoAllocation::stepAllocatesNothing()
@@ -112,6 +115,7 @@ void TestNoAllocation::stepAllocatesNothing()
 #endif
     QFETCH(int, integrator);
     QFETCH(int, size);
+    QFETCH(bool, breakable);
     // a cloth over a floor with every pass on: gravity, drag, springs, an applied force, planes
     // and particle contacts
     core::ClothOptions options;
@@ -121,20 +125,28 @@ void TestNoAllocation::stepAllocatesNothing()
     scene.settings.viscosity = 0.01;
     scene.settings.particleCollisions = size <= 6;  // all pairs at 4900 particles would be slow
     scene.planes = {core::PlaneDesc{{0.0, 1.0, 0.0}, 0.99}};
+    // tearing: springs so brittle that the sag breaks them one after another
+    if (breakable)
+        for (core::SpringDesc &spring : scene.springs)
+            spring.breakStrain = 1e-4;
     test::Sim sim = test::compile(scene);
     core::setAppliedForce(sim.state, 1, Eigen::Vector3d(0.0, 0.1, 0.0));
 
     // the first steps make the scratch arrays; after that, nothing
     for (int i = 0; i < 2; ++i)
         QVERIFY(core::step(*sim.model, sim.state));
+    const std::size_t breaksBefore = sim.state.breaks.size();
     g_allocations = 0;
     g_counting = true;
     bool ok = true;
-    for (int i = 0; i < 2; ++i)
+    // a tearing cloth runs on until springs have broken while counting
+    for (int i = 0; i < 2 || (breakable && sim.state.breaks.size() == breaksBefore && i < 500); ++i)
         ok = core::step(*sim.model, sim.state) && ok;
     g_counting = false;
     QVERIFY(ok);
     QCOMPARE(g_allocations.load(), 0L);
+    if (breakable)
+        QVERIFY(sim.state.breaks.size() > breaksBefore);
 }
 
 QTEST_APPLESS_MAIN(TestNoAllocation)

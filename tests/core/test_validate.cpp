@@ -64,6 +64,9 @@ void TestValidate::badValuesAreNamed_data()
     QTest::newRow("self spring") << with([](auto &s) { s.springs[0].b = 0; }) << "springs[0].particles" << "to itself";
     QTest::newRow("negative stiffness") << with([](auto &s) { s.springs[0].stiffness = -3; }) << "springs[0].stiffness" << "at least 0";
     QTest::newRow("negative rest length") << with([](auto &s) { s.springs[0].restLength = -1; }) << "springs[0].restLength" << "at least 0";
+    QTest::newRow("negative breaking strain") << with([](auto &s) { s.springs[0].breakStrain = -0.5; }) << "springs[0].breakStrain" << "at least 0";
+    QTest::newRow("NaN breaking strain") << with([=](auto &s) { s.springs[0].breakStrain = nan; }) << "springs[0].breakStrain" << "NaN";
+    QTest::newRow("breaking strain, no rest length") << with([](auto &s) { s.springs[0].restLength = 0; s.springs[0].breakStrain = 0.5; }) << "springs[0].breakStrain" << "rest length greater than 0";
     QTest::newRow("zero normal") << with([](auto &s) { s.planes[0].normal = Eigen::Vector3d::Zero(); }) << "planes[0].normal" << "zero";
     QTest::newRow("steerable out of range") << with([](auto &s) { s.steerable = 7; }) << "steerable" << "out of range";
 }

@@ -108,7 +108,8 @@ QString bitDifference(const core::SceneDesc &a, const core::SceneDesc &b)
             return at + u"particles"_s;
         if (!sameBits(p.stiffness, q.stiffness, at + u"stiffness"_s, d) ||
             !sameBits(p.damping, q.damping, at + u"damping"_s, d) ||
-            !sameBits(p.restLength, q.restLength, at + u"restLength"_s, d))
+            !sameBits(p.restLength, q.restLength, at + u"restLength"_s, d) ||
+            !sameBits(p.breakStrain, q.breakStrain, at + u"breakStrain"_s, d))
             return d;
     }
     for (std::size_t i = 0; i < a.planes.size(); ++i) {
@@ -159,6 +160,7 @@ core::SceneDesc awkwardScene()
 
     scene.springs.push_back({0, 1, 1e9, 1.0 / 7.0, -0.0});
     scene.springs.push_back({2, 0, denormal, 0.0, 1e6});
+    scene.springs.push_back({1, 2, 3.0, 0.0, 0.5, 1.0 / 3.0});  // breakable
     scene.planes.push_back({{0.6, 0.8, -0.0}, -0.0});
     scene.planes.push_back({{0.0, -1.0, 0.0}, 1.0 / 3.0});
     return scene;
@@ -405,6 +407,9 @@ void TestSceneFile::badFile_data()
     QTest::newRow("negative stiffness") << QByteArray("\"stiffness\": 5000") << QByteArray("\"stiffness\": -5")
                                         << QStringLiteral("springs[1].stiffness")
                                         << QStringLiteral("must be at least 0");
+    QTest::newRow("negative breaking strain")
+        << QByteArray("\"restLength\": 0.4}") << QByteArray("\"restLength\": 0.4, \"breakStrain\": -1}")
+        << QStringLiteral("springs[0].breakStrain") << QStringLiteral("must be at least 0");
     QTest::newRow("zero normal") << QByteArray("\"normal\": [0, 1, 0]") << QByteArray("\"normal\": [0, 0, 0]")
                                  << QStringLiteral("planes[0].normal")
                                  << QStringLiteral("is zero: a plane needs a direction");

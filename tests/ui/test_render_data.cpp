@@ -43,6 +43,7 @@ private slots:
     void styleIgnoresSelectionOutOfRange();
     void styleKeyNoticesWhatChangesTheStyle();
     void springLines();
+    void brokenSpringsAreNotDrawn();
     void springLinesOfAnEmptySnapshot();
     void boundsHoldEverySphere();
     void niceSteps_data();
@@ -186,6 +187,19 @@ void TestRenderData::springLines()
     QCOMPARE_GT(lines[5], lines[3]);
     QVERIFY(near({lines[2 * ui::kVertexFloats + 3], lines[2 * ui::kVertexFloats + 4], lines[2 * ui::kVertexFloats + 5]},
                  ui::kStretchedColour));
+}
+
+void TestRenderData::brokenSpringsAreNotDrawn()
+{
+    core::Snapshot s = threeParticles();
+    s.springBroken = {1, 0};
+    std::vector<float> lines;
+    ui::packSpringLines(s, lines);
+    // only the second spring's two ends
+    QCOMPARE(lines.size(), std::size_t(2 * ui::kVertexFloats));
+    for (int end = 0; end < 2; ++end)
+        for (int k = 0; k < 3; ++k)
+            QCOMPARE(lines[std::size_t(end * ui::kVertexFloats + k)], s.springEnds[6 + 3 * end + k]);
 }
 
 void TestRenderData::springLinesOfAnEmptySnapshot()

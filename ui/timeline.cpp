@@ -1,0 +1,199 @@
+#include "timeline.h"
+
+#include <algorithm>
+
+namespace ui {
+
+namespace {
+
+std::size_t matrixBytes(const Eigen::Matrix3Xd &m)
+{
+    return static_cast<std::size_t>(m.size()) * sizeof(double);
+}
+
+TimelineKey makeKey(const std::shared_ptr<const core::Model> &model, const std::shared_ptr<const core::SceneDesc> &scene,
+                    const core::State &state, const HeldForces &held)
+{
+    TimelineKey key;
+    key.model = model;
+    key.scene = scene;
+    key.held = held;
+    key.position = state.position;
+    key.velocity = state.velocity;
+    if (state.appliedCount > 0)
+        key.applied = state.applied;
+    key.appliedCount = state.appliedCount;
+    key.time = state.time;
+    key.step = state.step;
+    key.adaptiveStep = state.adaptiveStep;
+    key.springBroken = state.springBroken;
+    key.breaks = state.breaks;
+    key.bytes = sizeof(TimelineKey) + matrixBytes(key.position) + matrixBytes(key.velocity) +
+                matrixBytes(key.applied) + key.springBroken.size() + key.breaks.size() * sizeof(core::SpringBreak);
+    return key;
+}
+
+}  // namespace
+
+void restoreKey(const TimelineKey &key, core::State &state)
+{
+    state.position = key.position;
+    state.velocity = key.velocity;
+    if (key.appliedCount > 0)
+        state.applied = key.applied;
+    else
+        state.applied.setZero(3, key.position.cols());
+    state.appliedCount = key.appliedCount;
+    state.time = key.time;
+    state.step = key.step;
+    state.adaptiveStep = key.adaptiveStep;
+    state.springBroken = key.springBroken;
+    state.breaks = key.breaks;
+    state.breaks.reserve(state.springBroken.size());  // so that a replayed break allocates nothing
+    state.blowup.reset();
+}
+
+void Timeline::setBudget(std::size_t bytes)
+{
+    m_budget = bytes;
+    while (!m_keys.empty() && m_used > m_budget)
+        dropOldest();
+}
+
+void Timeline::clear()
+{
+    m_keys.clear();
+    m_breakSteps.clear();
+    m_used = 0;
+    m_lastStep = 0;
+    m_lastTime = 0.0;
+}
+
+void Timeline::afterStep(const std::shared_ptr<const core::Model> &model,
+                         const std::shared_ptr<const core::SceneDesc> &scene, const core::State &state,
+                         const HeldForces &held)
+{
+    if (m_budget == 0)
+        return;  // recording is off
+    if (!empty() && state.step <= m_lastStep)
+        truncateAfter(state.step - 1);  // a step taken again after a roll-back: that future is gone
+    if (empty() || state.step >= m_keys.back().step + kKeyInterval) {
+        add(makeKey(model, scene, state, held));
+        return;
+    }
+    m_lastStep = state.step;
+    m_lastTime = state.time;
+}
+
+void Timeline::afterEdit(const std::shared_ptr<const core::Model> &model,
+                         const std::shared_ptr<const core::SceneDesc> &scene, const core::State &state,
+                         const HeldForces &held)
+{
+    if (m_budget == 0)
+        return;
+    if (!empty())
+        truncateAfter(state.step);
+    if (!empty() && m_keys.back().step == state.step) {
+        // the edit replaces the keyframe of its step: the state there is now the edited one
+        TimelineKey replaced = std::move(m_keys.back());
+        m_keys.pop_back();
+        m_used -= replaced.bytes + (m_keys.empty() || m_keys.back().model != replaced.model ? modelBytes(replaced.model) : 0);
+    }
+    add(makeKey(model, scene, state, held));
+}
+
+void Timeline::truncateAfter(std::uint64_t step)
+{
+    while (!m_keys.empty() && m_keys.back().step > step) {
+        const TimelineKey &last = m_keys.back();
+        const bool ownModel = m_keys.size() == 1 || m_keys[m_keys.size() - 2].model != last.model;
+        m_used -= last.bytes + (ownModel ? modelBytes(last.model) : 0);
+        m_keys.pop_back();
+    }
+    if (m_keys.empty()) {
+        clear();
+        return;
+    }
+    // breaks after the last keyframe kept are no longer in the recording
+    while (!m_breakSteps.empty() && m_breakSteps.back() > m_keys.back().step)
+        m_breakSteps.pop_back();
+    if (m_lastStep > step) {
+        // the steps after the last keyframe are gone too; its own step and time are the end now
+        // unless step lies between it and the old end
+        const TimelineKey &last = m_keys.back();
+        m_lastStep = std::max(last.step, step);
+        m_lastTime = last.step == m_lastStep ? last.time
+                                             : last.time + static_cast<double>(m_lastStep - last.step) *
+                                                               last.model->timeStep;
+    }
+}
+
+std::uint64_t Timeline::firstStep() const
+{
+    return m_keys.empty() ? 0 : m_keys.front().step;
+}
+
+double Timeline::firstTime() const
+{
+    return m_keys.empty() ? 0.0 : m_keys.front().time;
+}
+
+const TimelineKey *Timeline::keyAtOrBefore(std::uint64_t step) const
+{
+    // the keyframes are in ascending step order: the last one not after step
+    const auto after = std::upper_bound(m_keys.begin(), m_keys.end(), step,
+                                        [](std::uint64_t s, const TimelineKey &key) { return s < key.step; });
+    return after == m_keys.begin() ? nullptr : &*(after - 1);
+}
+
+void Timeline::add(TimelineKey key)
+{
+    const bool newModel = m_keys.empty() || m_keys.back().model != key.model;
+    const std::size_t bytes = key.bytes + (newModel ? modelBytes(key.model) : 0);
+    // a keyframe larger than the whole budget: nothing can be kept
+    if (bytes > m_budget) {
+        clear();
+        return;
+    }
+    // the breaks since the keyframe before: each keyframe lists every break since its state was
+    // built, in the order they happened
+    const std::uint64_t previous = m_keys.empty() ? 0 : m_keys.back().step;
+    for (const core::SpringBreak &b : key.breaks)
+        if (b.step > previous && b.step <= key.step && (m_breakSteps.empty() || m_breakSteps.back() < b.step))
+            m_breakSteps.push_back(b.step);
+    m_lastStep = key.step;
+    m_lastTime = key.time;
+    m_used += bytes;
+    m_keys.push_back(std::move(key));
+    while (m_used > m_budget)
+        dropOldest();
+}
+
+void Timeline::dropOldest()
+{
+    // a model is counted with the first keyframe of the run of keyframes that use it
+    const TimelineKey &oldest = m_keys.front();
+    const bool ownModel = m_keys.size() == 1 || m_keys[1].model != oldest.model;
+    m_used -= oldest.bytes + (ownModel ? modelBytes(oldest.model) : 0);
+    m_keys.pop_front();
+    if (m_keys.empty()) {
+        clear();
+        return;
+    }
+    const auto kept = std::lower_bound(m_breakSteps.begin(), m_breakSteps.end(), m_keys.front().step);
+    m_breakSteps.erase(m_breakSteps.begin(), kept);
+}
+
+std::size_t Timeline::modelBytes(const std::shared_ptr<const core::Model> &model) const
+{
+    if (!model)
+        return 0;
+    // the model's arrays and the scene it was compiled from, about as large again
+    const auto n = static_cast<std::size_t>(model->particleCount());
+    const auto springs = static_cast<std::size_t>(model->springCount());
+    const std::size_t modelArrays = n * (3 * sizeof(double) + sizeof(int) * 2) + springs * (5 * sizeof(double) + 4 * sizeof(int));
+    const std::size_t sceneArrays = n * sizeof(core::ParticleDesc) + springs * sizeof(core::SpringDesc);
+    return sizeof(core::Model) + modelArrays + sceneArrays;
+}
+
+}  // namespace ui

@@ -1,0 +1,105 @@
+#pragma once
+// Timeline: the run recorded as it goes, so that the editor can scrub back through it. It keeps
+// keyframes: the whole dynamic state every kKeyInterval steps and at every edit, each with the
+// model and the mouse spring that held from it to the next one. The step is deterministic, so any
+// step between two keyframes is replayed exactly from the one before it; nothing else is stored.
+// The keyframes stay within a memory budget: when a new one would pass it, the oldest go, so the
+// timeline holds the most recent stretch of the run that fits. Qt-free; the worker owns it.
+
+#include "core/model.h"
+#include "core/scene.h"
+#include "core/state.h"
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <vector>
+
+namespace ui {
+
+// the forces from outside that a replay must apply as the run did: the mouse spring is worked
+// out again at every step from where the particle is (the steering force is in State::applied)
+struct HeldForces {
+    int grabParticle = -1;
+    Eigen::Vector3d grabTarget = Eigen::Vector3d::Zero();  // m
+    int steerParticle = -1;
+    Eigen::Vector3d steerForce = Eigen::Vector3d::Zero();  // N
+
+    bool operator==(const HeldForces &) const = default;
+};
+
+struct TimelineKey {
+    std::shared_ptr<const core::Model> model;
+    std::shared_ptr<const core::SceneDesc> scene;  // what the model was compiled from
+    HeldForces held;
+    // the dynamic state: what core::step reads besides its scratch
+    Eigen::Matrix3Xd position;
+    Eigen::Matrix3Xd velocity;
+    Eigen::Matrix3Xd applied;  // empty when no force was applied (appliedCount 0)
+    int appliedCount = 0;
+    double time = 0.0;
+    std::uint64_t step = 0;
+    double adaptiveStep = 0.0;
+    std::vector<std::uint8_t> springBroken;
+    std::vector<core::SpringBreak> breaks;
+    std::size_t bytes = 0;  // what it holds, model excluded (counted once per model)
+};
+
+class Timeline {
+public:
+    // keyframes at most this many steps apart: a scrub replays fewer steps than this
+    static constexpr int kKeyInterval = 10;
+    static constexpr std::size_t kDefaultBudget = std::size_t(512) << 20;  // bytes
+
+    // 0 turns recording off
+    void setBudget(std::size_t bytes);
+    std::size_t budget() const { return m_budget; }
+    // bytes held now: the keyframes and the models only they keep alive
+    std::size_t usedBytes() const { return m_used; }
+
+    void clear();
+    bool empty() const { return m_keys.empty(); }
+    std::size_t keyCount() const { return m_keys.size(); }
+
+    // records the state after a step: a keyframe when the last is kKeyInterval steps back (or
+    // none), else nothing
+    void afterStep(const std::shared_ptr<const core::Model> &model, const std::shared_ptr<const core::SceneDesc> &scene,
+                   const core::State &state, const HeldForces &held);
+    // records the state after an edit changed the run: always a keyframe, in place of one at the
+    // same step; every keyframe after the state's step goes (the edit ends that future)
+    void afterEdit(const std::shared_ptr<const core::Model> &model, const std::shared_ptr<const core::SceneDesc> &scene,
+                   const core::State &state, const HeldForces &held);
+    // drops every keyframe after step (a run rolled back to it)
+    void truncateAfter(std::uint64_t step);
+
+    // the recorded steps: from the oldest keyframe to the newest step recorded
+    std::uint64_t firstStep() const;
+    std::uint64_t lastStep() const { return m_lastStep; }
+    double firstTime() const;
+    double lastTime() const { return m_lastTime; }
+    bool covers(std::uint64_t step) const { return !empty() && step >= firstStep() && step <= m_lastStep; }
+    // the keyframe a replay to step starts from: the newest at or before it (null if none)
+    const TimelineKey *keyAtOrBefore(std::uint64_t step) const;
+
+    // the steps springs broke in, within the recording, ascending and each once
+    const std::vector<std::uint64_t> &breakSteps() const { return m_breakSteps; }
+
+private:
+    void add(TimelineKey key);
+    void dropOldest();
+    std::size_t modelBytes(const std::shared_ptr<const core::Model> &model) const;
+
+    std::deque<TimelineKey> m_keys;
+    std::size_t m_budget = kDefaultBudget;
+    std::size_t m_used = 0;
+    std::uint64_t m_lastStep = 0;
+    double m_lastTime = 0.0;
+    std::vector<std::uint64_t> m_breakSteps;  // kept up to date as keyframes come and go
+};
+
+// the key's dynamic state put into state (whose scratch stays as it is)
+void restoreKey(const TimelineKey &key, core::State &state);
+
+}  // namespace ui
