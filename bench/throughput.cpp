@@ -5,10 +5,15 @@
 // - plain: flat arrays and three loops on one thread (plain_cloth.h), cloths only.
 // - naive: an object per particle and per spring, forces called through a virtual apply()
 //   (naive_cloth.h), cloths only.
+// - bullet: Bullet's soft-body cloth on the same scene (bullet_cloth.h), cloths only, 1 thread
+//   (its soft-body solver has no threads); only where libbullet-dev was found at configure time.
 //
 // Before any timing, each reference runs a few steps from the same initial state as the core and
 // its positions must agree with the core's to round-off (kCheckTolerance), so that the race is
-// between implementations of one computation.
+// between implementations of one computation. Bullet's links are position constraints, not
+// springs, so its positions only have to stay within kBulletCheckTolerance of the core's: far
+// less than the cloth falls in those steps, which catches a different scene (gravity, sub-step,
+// masses, pins or links) but not a different solver.
 //
 // Timing: wall-clock time (the 2-thread runs need it), after a warm-up of at least one step and
 // kWarmup seconds; then a fixed number of steps, chosen from the warm-up so that one sample lasts
@@ -27,6 +32,9 @@
 #include "bench_common.h"
 
 #include "bandwidth.h"
+#ifdef SPRINGLAB_HAVE_BULLET
+#include "bullet_cloth.h"
+#endif
 #include "naive_cloth.h"
 #include "plain_cloth.h"
 #include "throughput_plot.h"
@@ -58,11 +66,24 @@ namespace {
 
 constexpr int kCheckSteps = 5;             // steps before the positions are compared
 constexpr double kCheckTolerance = 1e-10;  // m, the most a reference may differ from the core
+// m, the most Bullet may differ from the core after kCheckSteps: the cloth falls 37 µm in them and
+// Bullet's links hold it about 1e-8 m differently from the springs near the pins; in single
+// precision a coordinate of 25 m (cloth-1024) is rounded to 1e-6 m
+#if defined(SPRINGLAB_HAVE_BULLET) && !SPRINGLAB_BULLET_DOUBLE
+constexpr double kBulletCheckTolerance = 1e-5;
+#else
+constexpr double kBulletCheckTolerance = 1e-7;
+#endif
 constexpr double kSkipStepSeconds = 20.0;  // s, a box whose step would take longer is skipped
 constexpr int kFrameSubsteps = 10;         // the issue's frame: one step of 10 sub-steps
 constexpr double kFrameRateTarget = 60.0;  // frames per second
 constexpr double kBoundTarget = 2.0;       // × the bandwidth bound, at the most
 constexpr double kNaiveTarget = 3.0;       // × faster than the naive core, at the least
+constexpr double kBulletTarget = 5.0;      // × faster than Bullet's soft-body cloth, at the least
+#ifndef SPRINGLAB_HAVE_BULLET
+constexpr const char *kBulletNotBuilt =
+    "not built (libbullet-dev not found, or SPRINGLAB_BULLET off, when springlab-bench was configured)";
+#endif
 constexpr double kContactTarget = 300.0;   // ms, the contact pass of the box of 10⁶ at the most
 constexpr long long kContactTargetSize = 1000000;
 
@@ -170,12 +191,16 @@ double largestDifference(const core::State &state, const Reference &reference)
     return largest;
 }
 
-// the result of one physics check
+// the result of one physics check; bullet is empty where it was not built
 struct Check {
     QString scene;
     double plain = 0.0;  // m
     double naive = 0.0;  // m
-    bool passed() const { return plain <= kCheckTolerance && naive <= kCheckTolerance; }
+    std::optional<double> bullet;  // m
+    bool passed() const
+    {
+        return plain <= kCheckTolerance && naive <= kCheckTolerance && (!bullet || *bullet <= kBulletCheckTolerance);
+    }
 };
 
 // "1 thread", "2 threads"
@@ -240,13 +265,42 @@ QString verdict(bool met)
     return met ? QStringLiteral("met") : QStringLiteral("NOT met");
 }
 
+QString clothName(int n)
+{
+    return QStringLiteral("cloth-%1").arg(n);
+}
+
+// a reference's time over the core's on every cloth both ran, the reference on 1 thread and the
+// core at each thread count: how many times faster the core is
+void printSpeedups(const std::vector<ThroughputRow> &rows, const Plan &plan, const std::vector<int> &threads,
+                   const QString &variant, double target, QTextStream &out)
+{
+    out << QStringLiteral("  %1 / springlab, how many times faster the core is (target >= %2x):\n")
+               .arg(variant)
+               .arg(target);
+    for (int n : plan.clothSides) {
+        const ThroughputRow *reference = findRow(rows, clothName(n), variant, 1);
+        if (!reference)
+            continue;
+        out << QStringLiteral("    %1:").arg(clothName(n), -10);
+        for (int t : threads)
+            if (const ThroughputRow *core = findRow(rows, clothName(n), QStringLiteral("springlab"), t)) {
+                const double speedup = reference->msPerStep / core->msPerStep;
+                out << QStringLiteral("  %1 %2x %3")
+                           .arg(threadsText(t))
+                           .arg(speedup, 0, 'f', 2)
+                           .arg(verdict(speedup >= target));
+            }
+        out << '\n';
+    }
+}
+
 // the issue's targets, each read off the rows measured above
 void printTargets(const std::vector<ThroughputRow> &rows, const Plan &plan, const std::vector<int> &threads,
                   const std::map<long long, std::map<int, double>> &contactMs,
                   const std::vector<long long> &skippedBoxes, QTextStream &out)
 {
     const int most = threads.back();
-    const auto clothName = [](int n) { return QStringLiteral("cloth-%1").arg(n); };
     const QString notRun =
         plan.clothSides.size() == 1 ? QStringLiteral("not run (--quick)") : QStringLiteral("not run");
     out << "\ntargets (issue \"Speed\"), measured side by side in this run:\n";
@@ -266,24 +320,13 @@ void printTargets(const std::vector<ThroughputRow> &rows, const Plan &plan, cons
                            .arg(verdict(row->ratioToBound() <= kBoundTarget));
         }
 
-    // springlab against the naive core
-    out << QStringLiteral("  naive / springlab, how many times faster the core is (target >= %1x):\n")
-               .arg(kNaiveTarget);
-    for (int n : plan.clothSides) {
-        const ThroughputRow *naive = findRow(rows, clothName(n), QStringLiteral("naive"), 1);
-        if (!naive)
-            continue;
-        out << QStringLiteral("    %1:").arg(clothName(n), -10);
-        for (int t : threads)
-            if (const ThroughputRow *core = findRow(rows, clothName(n), QStringLiteral("springlab"), t)) {
-                const double speedup = naive->msPerStep / core->msPerStep;
-                out << QStringLiteral("  %1 %2x %3")
-                           .arg(threadsText(t))
-                           .arg(speedup, 0, 'f', 2)
-                           .arg(verdict(speedup >= kNaiveTarget));
-            }
-        out << '\n';
-    }
+    // springlab against the naive core and against Bullet's soft-body cloth
+    printSpeedups(rows, plan, threads, QStringLiteral("naive"), kNaiveTarget, out);
+#ifdef SPRINGLAB_HAVE_BULLET
+    printSpeedups(rows, plan, threads, QStringLiteral("bullet"), kBulletTarget, out);
+#else
+    out << QStringLiteral("  bullet / springlab (target >= %1x): %2\n").arg(kBulletTarget).arg(kBulletNotBuilt);
+#endif
 
     // the 256 × 256 cloth at 10 sub-steps a frame (the issue asks for 2 cores; 1 is shown beside it)
     out << QStringLiteral("  256x256 cloth, %1 sub-steps a frame (target %2 fps on 2 threads):\n")
@@ -359,6 +402,11 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
                           "one sub-step a step\n")
                .arg(plan.repetitions)
                .arg(plan.sample);
+#ifdef SPRINGLAB_HAVE_BULLET
+    out << "bullet: " << QString::fromStdString(BulletCloth::description()) << '\n';
+#else
+    out << "bullet: " << kBulletNotBuilt << '\n';
+#endif
 
     // the bandwidth, on 1 and 2 threads
     std::map<int, double> bandwidth;  // B/s per thread count
@@ -401,6 +449,9 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
         core::State state = core::makeState(*model, scene);
         PlainCloth plain(scene);
         naive::ParticleSystem naiveSystem(scene);
+#ifdef SPRINGLAB_HAVE_BULLET
+        BulletCloth bullet(scene);
+#endif
 
         // the same physics: a few steps from the same start, positions compared
         core::setThreadCount(threads.back());
@@ -408,16 +459,26 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
             core::step(*model, state);
             plain.step();
             naiveSystem.step();
+#ifdef SPRINGLAB_HAVE_BULLET
+            bullet.step();
+#endif
         }
-        const Check check{name, largestDifference(state, plain), largestDifference(state, naiveSystem)};
+        Check check{name, largestDifference(state, plain), largestDifference(state, naiveSystem), std::nullopt};
+        QString bulletText;
+#ifdef SPRINGLAB_HAVE_BULLET
+        check.bullet = largestDifference(state, bullet);
+        bulletText = QStringLiteral(", bullet %1 m (constraints, not springs: at most %2 m)")
+                         .arg(*check.bullet, 0, 'g', 3)
+                         .arg(kBulletCheckTolerance, 0, 'g', 3);
+#endif
         checks.push_back(check);
         out << QStringLiteral("  %1 check after %2 steps, largest position difference from springlab: plain %3 m, "
-                              "naive %4 m%5\n")
+                              "naive %4 m%5%6\n")
                    .arg(name)
                    .arg(kCheckSteps)
                    .arg(check.plain, 0, 'g', 3)
                    .arg(check.naive, 0, 'g', 3)
-                   .arg(check.passed() ? QString() : QStringLiteral("  DISAGREE"));
+                   .arg(bulletText, check.passed() ? QString() : QStringLiteral("  DISAGREE"));
 
         const auto record = [&](const QString &variant, int t, double ms) {
             rows.push_back({name, SceneKind::Cloth, particles, springs, t, variant, ms, boundMs(bytes, t)});
@@ -429,6 +490,9 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
         }
         record(QStringLiteral("plain"), 1, timeSteps([&] { plain.step(); }, plan));
         record(QStringLiteral("naive"), 1, timeSteps([&] { naiveSystem.step(); }, plan));
+#ifdef SPRINGLAB_HAVE_BULLET
+        record(QStringLiteral("bullet"), 1, timeSteps([&] { bullet.step(); }, plan));
+#endif
         if (state.blowup) {
             out << "  springlab blew up on " << name << '\n';
             blewUp = true;
@@ -502,7 +566,6 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
         }
     }
     core::setThreadCount(restoreThreads);
-    out << "  bullet: not built (no Bullet soft-body variant in this build)\n";
 
     // the targets, side by side
     printTargets(rows, plan, threads, contactMs, skippedBoxes, out);
@@ -514,8 +577,12 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
     for (const auto &[t, bytesPerSecond] : bandwidth)
         note += QStringLiteral(" %1 GB/s on %2;").arg(bytesPerSecond / 1e9, 0, 'f', 1).arg(threadsText(t));
     note += QStringLiteral("\nbound: the bytes a sub-step must move over that bandwidth");
-    const QImage plot = drawThroughput(
-        QStringLiteral("Run time per step: the core, plain and naive references, the bound"), rows, note);
+#ifdef SPRINGLAB_HAVE_BULLET
+    const QString title = QStringLiteral("Run time per step: the core, plain and naive references, Bullet, the bound");
+#else
+    const QString title = QStringLiteral("Run time per step: the core, plain and naive references, the bound");
+#endif
+    const QImage plot = drawThroughput(title, rows, note);
     const QString plotPath = dir.filePath(QStringLiteral("throughput.png"));
     if (!plot.save(plotPath)) {
         out << "springlab-bench: cannot write " << plotPath << '\n';
@@ -529,8 +596,8 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
     // a reference that computes something else, or a core that blew up, makes the timings meaningless
     const bool agreed = std::all_of(checks.begin(), checks.end(), [](const Check &c) { return c.passed(); });
     if (!agreed)
-        out << QStringLiteral("springlab-bench: a reference disagrees with the core by more than %1 m\n")
-                   .arg(kCheckTolerance);
+        out << "springlab-bench: a reference disagrees with the core beyond its tolerance (the check lines marked "
+               "DISAGREE)\n";
     if (blewUp)
         out << "springlab-bench: the core blew up on a throughput scene\n";
     return agreed && !blewUp ? 0 : 1;

@@ -1,8 +1,9 @@
 #pragma once
 // `springlab-bench throughput`: run time per step of the core against two reference
-// implementations written here (plain_cloth.h, naive_cloth.h), measured in the same run, and
-// against the machine's memory bandwidth, also measured in the same run (bandwidth.h); see
-// throughput.cpp and docs/benchmarks.md.
+// implementations written here (plain_cloth.h, naive_cloth.h) and, where libbullet-dev is
+// installed, Bullet's soft-body cloth (bullet_cloth.h), measured in the same run, and against the
+// machine's memory bandwidth, also measured in the same run (bandwidth.h); see throughput.cpp and
+// docs/benchmarks.md.
 
 #include <QString>
 #include <QTextStream>

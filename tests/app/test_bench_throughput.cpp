@@ -1,6 +1,7 @@
 // springlab-bench throughput --quick end to end, through QProcess: the CSV's header, a row for every
 // variant on the cloth, finite positive figures whose ratio column is ms_per_step over the bound,
-// a readable plot, the physics check passed, and bad arguments refused with a message. The quick
+// Bullet's rows exactly when CMake built the bullet variant (SPRINGLAB_BENCH_HAS_BULLET), a
+// readable plot, the physics check passed, and bad arguments refused with a message. The quick
 // run's timings are far too short to mean anything; only their shape is checked. The full run's
 // figures are in docs/benchmarks.md.
 
@@ -21,7 +22,11 @@ using namespace Qt::Literals::StringLiterals;
 
 namespace {
 
+#if SPRINGLAB_BENCH_HAS_BULLET
+const QList<QByteArray> kClothVariants{"springlab", "plain", "naive", "bullet"};
+#else
 const QList<QByteArray> kClothVariants{"springlab", "plain", "naive"};
+#endif
 
 using Run = test::ProgramRun;
 
@@ -47,6 +52,7 @@ private slots:
     void csvShape();
     void figuresAreSane();
     void everyVariantOnTheCloth();
+    void bulletVariant();
     void physicsAgrees();
     void plotReads();
     void badArguments_data();
@@ -115,6 +121,41 @@ void TestBenchThroughput::everyVariantOnTheCloth()
     for (auto it = variants.cbegin(); it != variants.cend(); ++it)
         for (const QByteArray &variant : kClothVariants)
             QVERIFY2(it.value().contains(variant), (it.key() + " lacks " + variant).constData());
+}
+
+void TestBenchThroughput::bulletVariant()
+{
+    // built: one row per cloth, on 1 thread (Bullet's soft-body solver has no threads), a time
+    // that is a time, the check and the ratio printed; not built: no row, and the run says so
+    QList<QList<QByteArray>> bullet;
+    for (const QList<QByteArray> &fields : m_rows)
+        if (fields[4] == "bullet")
+            bullet.append(fields);
+    if (!SPRINGLAB_BENCH_HAS_BULLET) {
+        QVERIFY2(bullet.isEmpty(), bullet.value(0).join(',').constData());
+        QVERIFY(m_quick.out.contains("bullet: not built"));
+        return;
+    }
+    QVERIFY2(!m_quick.out.contains("not built"), m_quick.out.constData());
+    QVERIFY(m_quick.out.contains("bullet: Bullet "));
+    QCOMPARE(bullet.size(), 1);  // --quick: cloth-64 only
+    const QList<QByteArray> &row = bullet.first();
+    QCOMPARE(row[0], QByteArray("cloth-64"));
+    QCOMPARE(row[3], QByteArray("1"));
+    const double ms = number(row[5]);
+    QVERIFY2(std::isfinite(ms) && ms > 0.0, row.join(',').constData());
+    const QList<QByteArray> lines = m_quick.out.split('\n');
+    const auto lineAfter = [&](const QByteArray &start) {
+        for (qsizetype i = 0; i + 1 < lines.size(); ++i)
+            if (lines[i].trimmed().startsWith(start))
+                return lines[i + 1];
+        return QByteArray();
+    };
+    // the check line names Bullet's difference; the summary gives its ratio to the core on cloth-64
+    QVERIFY2(m_quick.out.contains(QByteArray("m, bullet ")), m_quick.out.constData());
+    const QByteArray ratio = lineAfter("bullet / springlab, how many times faster the core is");
+    QVERIFY2(ratio.trimmed().startsWith("cloth-64") && ratio.contains("1 thread ") && ratio.contains("x "),
+             m_quick.out.constData());
 }
 
 void TestBenchThroughput::physicsAgrees()
