@@ -12,6 +12,9 @@
 // a row of the bad-options table: checks one generator's options, changed to be wrong
 using GeneratorCheck = std::function<std::optional<std::string>()>;
 Q_DECLARE_METATYPE(GeneratorCheck)
+// a row of the valid-scenes table: a generator's options checked, and the scene they make
+using Generation = std::function<std::pair<std::optional<std::string>, core::SceneDesc>()>;
+Q_DECLARE_METATYPE(Generation)
 
 namespace {
 
@@ -50,6 +53,28 @@ std::vector<int> springsAt(const core::SceneDesc &scene)
         ++count[std::size_t(s.b)];
     }
     return count;
+}
+
+// the check of a generator's default options after change(options)
+template <class Options, class Change>
+GeneratorCheck checkAfter(Change change)
+{
+    return [change] {
+        Options options;
+        change(options);
+        return core::checkOptions(options);
+    };
+}
+
+// a generator's default options after change(options), checked and made
+template <class Options, class Change>
+Generation generationAfter(core::SceneDesc (*make)(const Options &), Change change)
+{
+    return [make, change] {
+        Options options;
+        change(options);
+        return std::pair(core::checkOptions(options), make(options));
+    };
 }
 
 }  // namespace
@@ -252,72 +277,39 @@ void TestGenerators::softBallPointsLieOnItsSphere()
 
 void TestGenerators::generatedScenesAreValidAndAtRest_data()
 {
-    QTest::addColumn<int>("kind");
-    QTest::addColumn<int>("size");
-    for (int kind = 0; kind < 6; ++kind)
-        for (int size : {1, 2, 7}) {
-            const QByteArray name = QByteArray::number(kind) + " size " + QByteArray::number(size);
-            QTest::newRow(name.constData()) << kind << size;
-        }
+    QTest::addColumn<Generation>("generate");
+    using core::BallOptions, core::BlockOptions, core::ChainOptions, core::ClothOptions, core::RopeOptions,
+        core::SoftBallOptions;
+    for (int size : {1, 2, 7}) {
+        const auto row = [size](const char *kind, Generation generate) {
+            QTest::newRow(qPrintable(QStringLiteral("%1 of size %2").arg(QLatin1String(kind)).arg(size))) << generate;
+        };
+        row("cloth", generationAfter<ClothOptions>(core::makeCloth, [size](auto &o) {
+                o.rows = 2 + size;
+                o.cols = 3 * size;
+            }));
+        row("chain", generationAfter<ChainOptions>(core::makeChain, [size](auto &o) { o.links = 4 * size; }));
+        row("rope", generationAfter<RopeOptions>(core::makeRope, [size](auto &o) { o.segments = 5 * size; }));
+        row("block", generationAfter<BlockOptions>(core::makeBlock, [size](auto &o) {
+                o.nx = size;
+                o.ny = 2;
+                o.nz = size + 1;
+                o.seed = std::uint64_t(size);
+            }));
+        row("ball", generationAfter<BallOptions>(core::makeBall, [size](auto &o) { o.ballRadius = 0.1 * size; }));
+        row("soft ball", generationAfter<SoftBallOptions>(core::makeSoftBall, [size](auto &o) {
+                o.points = 4 + 30 * (size - 1);
+                o.centre = size != 2;
+            }));
+    }
 }
 
 void TestGenerators::generatedScenesAreValidAndAtRest()
 {
-    QFETCH(int, kind);
-    QFETCH(int, size);
     // each generator at a few sizes: valid options make a valid scene with no spring stretched and
     // no two particles overlapping
-    core::SceneDesc scene;
-    std::optional<std::string> problem;
-    switch (kind) {
-    case 0: {
-        core::ClothOptions o;
-        o.rows = 2 + size;
-        o.cols = 3 * size;
-        problem = core::checkOptions(o);
-        scene = core::makeCloth(o);
-        break;
-    }
-    case 1: {
-        core::ChainOptions o;
-        o.links = 4 * size;
-        problem = core::checkOptions(o);
-        scene = core::makeChain(o);
-        break;
-    }
-    case 2: {
-        core::RopeOptions o;
-        o.segments = 5 * size;
-        problem = core::checkOptions(o);
-        scene = core::makeRope(o);
-        break;
-    }
-    case 3: {
-        core::BlockOptions o;
-        o.nx = size;
-        o.ny = 2;
-        o.nz = size + 1;
-        o.seed = std::uint64_t(size);
-        problem = core::checkOptions(o);
-        scene = core::makeBlock(o);
-        break;
-    }
-    case 4: {
-        core::BallOptions o;
-        o.ballRadius = 0.1 * size;
-        problem = core::checkOptions(o);
-        scene = core::makeBall(o);
-        break;
-    }
-    default: {
-        core::SoftBallOptions o;
-        o.points = 4 + 30 * (size - 1);
-        o.centre = size != 2;
-        problem = core::checkOptions(o);
-        scene = core::makeSoftBall(o);
-        break;
-    }
-    }
+    QFETCH(Generation, generate);
+    const auto [problem, scene] = generate();
     QVERIFY2(!problem, problem ? problem->c_str() : "");
     QVERIFY(!scene.particles.empty());
     const std::optional<core::SceneProblem> found = core::findProblem(scene);
@@ -328,85 +320,47 @@ void TestGenerators::generatedScenesAreValidAndAtRest()
 
 void TestGenerators::badOptionsAreRefusedWithAMessage_data()
 {
-    using Check = GeneratorCheck;
-    QTest::addColumn<Check>("check");
+    QTest::addColumn<GeneratorCheck>("check");
     QTest::addColumn<QString>("expected");
-
-    const auto cloth = [](auto change) {
-        return Check([change] {
-            core::ClothOptions o;
-            change(o);
-            return core::checkOptions(o);
-        });
+    using core::BallOptions, core::BlockOptions, core::ChainOptions, core::ClothOptions, core::RopeOptions,
+        core::SoftBallOptions;
+    const auto row = [](const char *name, GeneratorCheck check, const char *expected) {
+        QTest::newRow(name) << check << QString::fromUtf8(expected);
     };
-    QTest::newRow("cloth of no rows") << cloth([](auto &o) { o.rows = 0; }) << "rows must be at least 2 (got 0)";
-    QTest::newRow("cloth too large") << cloth([](auto &o) { o.rows = o.cols = 1000; })
-                                     << "makes 1000000 particles, more than the 200000 a generator may make";
-    QTest::newRow("negative spacing") << cloth([](auto &o) { o.spacing = -0.1; })
-                                      << "spacing must be greater than 0 m (got -0.1 m)";
-    QTest::newRow("overlapping cloth") << cloth([](auto &o) { o.radius = 0.03; })
-                                       << "radius 0.03 m is too large: at most 0.025 m";
-    QTest::newRow("negative stiffness") << cloth([](auto &o) { o.bendStiffness = -1.0; })
-                                        << "bend stiffness must be at least 0 N/m (got -1 N/m)";
-    QTest::newRow("zero mass") << cloth([](auto &o) { o.mass = 0.0; }) << "mass must be greater than 0 kg";
-    QTest::newRow("cloth too wide") << cloth([](auto &o) { o.spacing = 1e5; }) << "a generator may span";
-
-    QTest::newRow("chain of no links") << Check([] {
-        core::ChainOptions o;
-        o.links = 0;
-        return core::checkOptions(o);
-    }) << "links must be at least 1 (got 0)";
-    QTest::newRow("rope of NaN length") << Check([] {
-        core::RopeOptions o;
-        o.length = std::nan("");
-        return core::checkOptions(o);
-    }) << "length must be greater than 0 m";
-    QTest::newRow("block of no layers") << Check([] {
-        core::BlockOptions o;
-        o.ny = 0;
-        return core::checkOptions(o);
-    }) << "ny must be at least 1 (got 0)";
-    QTest::newRow("block too large") << Check([] {
-        core::BlockOptions o;
-        o.nx = o.ny = o.nz = 100;
-        return core::checkOptions(o);
-    }) << "makes 1000000 particles";
-    QTest::newRow("jitter that overlaps") << Check([] {
-        core::BlockOptions o;
-        o.jitter = 0.01;
-        return core::checkOptions(o);
-    }) << "at most 0.04 m (half the spacing less the jitter)";
-    QTest::newRow("negative jitter") << Check([] {
-        core::BallOptions o;
-        o.jitter = -1.0;
-        return core::checkOptions(o);
-    }) << "jitter must be at least 0 m";
-    QTest::newRow("ball too large") << Check([] {
-        core::BallOptions o;
-        o.ballRadius = 100.0;
-        return core::checkOptions(o);
-    }) << "more than the 200000 a generator may make";
-    QTest::newRow("ball just over the cap") << Check([] {
-        core::BallOptions o;
-        o.ballRadius = 3.7;  // about 212000 lattice points: counted, not estimated
-        return core::checkOptions(o);
-    }) << "particles, more than the 200000";
-    QTest::newRow("soft ball of 3 points") << Check([] {
-        core::SoftBallOptions o;
-        o.points = 3;
-        return core::checkOptions(o);
-    }) << "points must be at least 4 (got 3)";
-    QTest::newRow("soft ball too fine") << Check([] {
-        core::SoftBallOptions o;
-        o.points = 5000;
-        return core::checkOptions(o);
-    }) << "for this many points on this ball";
-    QTest::newRow("soft ball centre overlaps") << Check([] {
-        core::SoftBallOptions o;
-        o.points = 4;
-        o.radius = 0.13;
-        return core::checkOptions(o);
-    }) << "the centre would overlap the surface";
+    row("cloth of no rows", checkAfter<ClothOptions>([](auto &o) { o.rows = 0; }), "rows must be at least 2 (got 0)");
+    row("cloth too large", checkAfter<ClothOptions>([](auto &o) { o.rows = o.cols = 1000; }),
+        "makes 1000000 particles, more than the 200000 a generator may make");
+    row("negative spacing", checkAfter<ClothOptions>([](auto &o) { o.spacing = -0.1; }),
+        "spacing must be greater than 0 m (got -0.1 m)");
+    row("overlapping cloth", checkAfter<ClothOptions>([](auto &o) { o.radius = 0.03; }),
+        "radius 0.03 m is too large: at most 0.025 m");
+    row("negative stiffness", checkAfter<ClothOptions>([](auto &o) { o.bendStiffness = -1.0; }),
+        "bend stiffness must be at least 0 N/m (got -1 N/m)");
+    row("zero mass", checkAfter<ClothOptions>([](auto &o) { o.mass = 0.0; }), "mass must be greater than 0 kg");
+    row("cloth too wide", checkAfter<ClothOptions>([](auto &o) { o.spacing = 1e5; }), "a generator may span");
+    row("chain of no links", checkAfter<ChainOptions>([](auto &o) { o.links = 0; }), "links must be at least 1 (got 0)");
+    row("rope of NaN length", checkAfter<RopeOptions>([](auto &o) { o.length = std::nan(""); }),
+        "length must be greater than 0 m");
+    row("block of no layers", checkAfter<BlockOptions>([](auto &o) { o.ny = 0; }), "ny must be at least 1 (got 0)");
+    row("block too large", checkAfter<BlockOptions>([](auto &o) { o.nx = o.ny = o.nz = 100; }),
+        "makes 1000000 particles");
+    row("jitter that overlaps", checkAfter<BlockOptions>([](auto &o) { o.jitter = 0.01; }),
+        "at most 0.04 m (half the spacing less the jitter)");
+    row("negative jitter", checkAfter<BallOptions>([](auto &o) { o.jitter = -1.0; }), "jitter must be at least 0 m");
+    row("ball too large", checkAfter<BallOptions>([](auto &o) { o.ballRadius = 100.0; }),
+        "more than the 200000 a generator may make");
+    // about 212000 lattice points: counted, not estimated
+    row("ball just over the cap", checkAfter<BallOptions>([](auto &o) { o.ballRadius = 3.7; }),
+        "particles, more than the 200000");
+    row("soft ball of 3 points", checkAfter<SoftBallOptions>([](auto &o) { o.points = 3; }),
+        "points must be at least 4 (got 3)");
+    row("soft ball too fine", checkAfter<SoftBallOptions>([](auto &o) { o.points = 5000; }),
+        "for this many points on this ball");
+    row("soft ball centre overlaps", checkAfter<SoftBallOptions>([](auto &o) {
+            o.points = 4;
+            o.radius = 0.13;
+        }),
+        "the centre would overlap the surface");
 }
 
 void TestGenerators::badOptionsAreRefusedWithAMessage()
