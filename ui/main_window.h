@@ -32,6 +32,7 @@ namespace ui {
 
 class AccuracyDialog;
 class EditTools;
+class GenerateDialog;
 class InspectorPanel;
 class Autosave;
 class ParametersPanel;
@@ -122,6 +123,8 @@ public:
     // Simulation › Accuracy's dialog; null until first opened
     AccuracyDialog *accuracyDialog() const { return m_accuracy; }
     const Steering &steering() const { return m_steering; }
+    // Edit › Generate's dialog; null until first opened (main_window_editing.cpp)
+    GenerateDialog *generateDialog() const { return m_generate; }
 
     // the status bar's fields, for the tests
     QString statusTime() const;
@@ -180,6 +183,8 @@ private:
     void planAccuracy(double tolerance);
     void applyPlan(const core::AccuracyPlan &plan);
     void steer(int turn, int change);
+    void showGenerate();
+    void addGenerated();
 
     SceneDocument *m_document = nullptr;
     SimulationController *m_controller = nullptr;
@@ -199,6 +204,7 @@ private:
     QDockWidget *m_undoDock = nullptr;
     QUndoView *m_undoView = nullptr;
     AccuracyDialog *m_accuracy = nullptr;
+    GenerateDialog *m_generate = nullptr;
     std::uint64_t m_accuracyRequest = 0;  // the plan awaited from the worker; 0: none
     QString m_screenshotDirectory;
     Steering m_steering;
