@@ -1,5 +1,10 @@
 #include "generators.h"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
 namespace core {
 
 void addSpring(SceneDesc &scene, int a, int b, double stiffness, double damping)
@@ -80,9 +85,144 @@ SceneDesc makeChain(const ChainOptions &o)
     scene.name = "chain";
     for (int i = 0; i <= o.links; ++i)
         scene.particles.push_back(ParticleDesc{Eigen::Vector3d(o.linkLength * i, o.height, 0.0),
-                                               Eigen::Vector3d::Zero(), o.mass, o.radius, i == 0});
+                                               Eigen::Vector3d::Zero(), o.mass, o.radius, o.pinFirst && i == 0});
     for (int i = 0; i < o.links; ++i)
         addSpring(scene, i, i + 1, o.stiffness, o.damping);
+    return scene;
+}
+
+namespace {
+
+// the fewest substeps of the default time step that keep ω h ≤ 1.2 under symplectic Euler's limit
+// of 2, ω bounded as for the cloth: ω² ≤ the largest Σ k (1/m_i + 1/√(m_i m_j)) over the springs
+// at a free particle i
+int substepsForSprings(const SceneDesc &scene)
+{
+    std::vector<double> bound(scene.particles.size(), 0.0);
+    for (const SpringDesc &s : scene.springs) {
+        const ParticleDesc &a = scene.particles[static_cast<std::size_t>(s.a)];
+        const ParticleDesc &b = scene.particles[static_cast<std::size_t>(s.b)];
+        const double cross = s.stiffness / std::sqrt(a.mass * b.mass);
+        bound[static_cast<std::size_t>(s.a)] += s.stiffness / a.mass + cross;
+        bound[static_cast<std::size_t>(s.b)] += s.stiffness / b.mass + cross;
+    }
+    double omegaSquared = 0.0;
+    for (std::size_t i = 0; i < bound.size(); ++i)
+        if (!scene.particles[i].pinned)
+            omegaSquared = std::max(omegaSquared, bound[i]);
+    const double steps = std::ceil(Settings{}.timeStep * std::sqrt(omegaSquared) / 1.2);
+    return static_cast<int>(std::clamp(steps, 1.0, 10000.0));
+}
+
+// a shift of up to `jitter` along each axis, the same for the same generator state
+Eigen::Vector3d jitterFrom(std::mt19937_64 &random, double jitter)
+{
+    // the engine's raw output is fixed by the standard; a distribution's is not
+    const auto unit = [&random] { return static_cast<double>(random() >> 11) * 0x1.0p-53; };
+    const double x = unit(), y = unit(), z = unit();
+    return jitter * Eigen::Vector3d(2.0 * x - 1.0, 2.0 * y - 1.0, 2.0 * z - 1.0);
+}
+
+// a loose particle (no springs, free) at position
+ParticleDesc looseParticle(const Eigen::Vector3d &position, double mass, double radius)
+{
+    return ParticleDesc{position, Eigen::Vector3d::Zero(), mass, radius, false};
+}
+
+}  // namespace
+
+SceneDesc makeRope(const RopeOptions &o)
+{
+    ChainOptions chain;
+    chain.links = o.segments;
+    chain.linkLength = o.length / o.segments;
+    chain.height = o.height;
+    chain.mass = o.mass;
+    chain.radius = 0.5 * chain.linkLength;
+    chain.stiffness = o.stiffness;
+    chain.damping = o.damping;
+    chain.pinFirst = o.pinFirst;
+    SceneDesc scene = makeChain(chain);
+    scene.name = "rope";
+    scene.settings.substeps = substepsForSprings(scene);
+    return scene;
+}
+
+SceneDesc makeBlock(const BlockOptions &o)
+{
+    SceneDesc scene;
+    scene.name = "block";
+    scene.particles.reserve(static_cast<std::size_t>(o.nx) * static_cast<std::size_t>(o.ny) *
+                            static_cast<std::size_t>(o.nz));
+    std::mt19937_64 random(o.seed);
+    const double x0 = -0.5 * o.spacing * (o.nx - 1);
+    const double z0 = -0.5 * o.spacing * (o.nz - 1);
+    // layer by layer from the bottom
+    for (int y = 0; y < o.ny; ++y)
+        for (int z = 0; z < o.nz; ++z)
+            for (int x = 0; x < o.nx; ++x) {
+                const Eigen::Vector3d at(x0 + o.spacing * x, o.height + o.spacing * y, z0 + o.spacing * z);
+                scene.particles.push_back(looseParticle(at + jitterFrom(random, o.jitter), o.mass, o.radius));
+            }
+    return scene;
+}
+
+SceneDesc makeBall(const BallOptions &o)
+{
+    SceneDesc scene;
+    scene.name = "ball";
+    std::mt19937_64 random(o.seed);
+    // the lattice points i·spacing with |i·spacing| ≤ ballRadius (a hair more, for rounding)
+    const int n = static_cast<int>(std::floor(o.ballRadius / o.spacing + 1e-9));
+    const double reach = o.ballRadius * o.ballRadius * (1.0 + 1e-12);
+    const Eigen::Vector3d centre(0.0, o.height, 0.0);
+    for (int y = -n; y <= n; ++y)
+        for (int z = -n; z <= n; ++z)
+            for (int x = -n; x <= n; ++x) {
+                const Eigen::Vector3d at = o.spacing * Eigen::Vector3d(x, y, z);
+                if (at.squaredNorm() <= reach)
+                    scene.particles.push_back(
+                        looseParticle(centre + at + jitterFrom(random, o.jitter), o.mass, o.radius));
+            }
+    return scene;
+}
+
+SceneDesc makeSoftBall(const SoftBallOptions &o)
+{
+    SceneDesc scene;
+    scene.name = "soft ball";
+    const int n = o.points;
+    const Eigen::Vector3d centre(0.0, o.height, 0.0);
+    // a Fibonacci lattice: evenly spaced heights, each point turned by the golden angle from the last
+    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+    for (int i = 0; i < n; ++i) {
+        const double y = 1.0 - 2.0 * (i + 0.5) / n;
+        const double ring = std::sqrt(std::max(0.0, 1.0 - y * y));
+        const double angle = golden * i;
+        const Eigen::Vector3d onSphere(ring * std::cos(angle), y, ring * std::sin(angle));
+        scene.particles.push_back(looseParticle(centre + o.ballRadius * onSphere, o.mass, o.radius));
+    }
+
+    // neighbours: every pair closer than the reach; points further apart in index are further
+    // apart in height (2 R / n per index), which ends the search for each point early
+    const double reach = 1.5 * o.ballRadius * std::sqrt(4.0 * std::numbers::pi / n);
+    const double heightPerIndex = 2.0 * o.ballRadius / n;
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n && (j - i) * heightPerIndex <= reach; ++j) {
+            const double distance = (scene.particles[static_cast<std::size_t>(i)].position -
+                                     scene.particles[static_cast<std::size_t>(j)].position)
+                                        .norm();
+            if (distance <= reach)
+                addSpring(scene, i, j, o.stiffness, o.damping);
+        }
+
+    // the centre, joined to every surface point
+    if (o.centre) {
+        scene.particles.push_back(looseParticle(centre, o.mass, o.radius));
+        for (int i = 0; i < n; ++i)
+            addSpring(scene, i, n, o.centreStiffness, o.damping);
+    }
+    scene.settings.substeps = substepsForSprings(scene);
     return scene;
 }
 

@@ -4,7 +4,15 @@
 
 #include "scene.h"
 
+#include <cstdint>
+#include <optional>
+#include <string>
+
 namespace core {
+
+// the most particles one generator may make: enough for a 447 × 447 cloth, few enough that the
+// editor's undo history and the software-GL viewport stay usable
+constexpr int kMaxGeneratedParticles = 200000;
 
 // a rows × cols net of particles in the horizontal plane y = height, neighbours joined by springs
 // of rest length `spacing`; the first and last rows pinned (the handout's springs scene)
@@ -50,8 +58,81 @@ struct ChainOptions {
     double radius = 0.02;     // m
     double stiffness = 1e3;   // N/m
     double damping = 0.1;     // N·s/m
+    bool pinFirst = true;     // hang it from its first particle
 };
 SceneDesc makeChain(const ChainOptions &options);
+
+// a rope: a chain whose particles touch (radius = half a link), so that it reads as one cord and
+// nothing passes between its links; laid out along +x at height y, its substeps set by its springs
+struct RopeOptions {
+    double length = 1.0;      // m, first particle to last
+    int segments = 40;        // springs along it (segments + 1 particles)
+    double height = 1.0;      // m
+    double mass = 0.005;      // kg per particle
+    double stiffness = 2000;  // N/m, each segment
+    double damping = 0.02;    // N·s/m
+    bool pinFirst = true;
+};
+SceneDesc makeRope(const RopeOptions &options);
+
+// granular matter: a block of nx × ny × nz loose particles (no springs) on a cubic lattice,
+// centred on the y axis with its lowest layer at y = height. jitter > 0 moves each particle by up
+// to jitter along each axis, drawn from seed, so that a pile does not stack perfectly; the same
+// seed gives the same block
+struct BlockOptions {
+    int nx = 6;
+    int ny = 6;
+    int nz = 6;
+    double spacing = 0.1;   // m, between lattice points
+    double height = 0.5;    // m
+    double mass = 0.05;     // kg per particle
+    double radius = 0.045;  // m
+    double jitter = 0.004;  // m, at most spacing / 2 - radius so that no two particles overlap
+    std::uint64_t seed = 1;
+};
+SceneDesc makeBlock(const BlockOptions &options);
+
+// granular matter: the points of a cubic lattice inside a sphere of radius ballRadius centred at
+// (0, height, 0), as loose particles; jitter and seed as for the block
+struct BallOptions {
+    double ballRadius = 0.3;  // m
+    double spacing = 0.1;     // m
+    double height = 1.0;      // m
+    double mass = 0.05;       // kg per particle
+    double radius = 0.045;    // m
+    double jitter = 0.004;    // m
+    std::uint64_t seed = 1;
+};
+SceneDesc makeBall(const BallOptions &options);
+
+// a soft ball: `points` particles spread evenly over a sphere (a Fibonacci lattice), each joined
+// by springs to its neighbours on the surface (those closer than 1.5 × the mean spacing
+// √(4π/points) × ballRadius), and, optionally, every one to a particle at the centre. Rest
+// lengths are the distances, so it starts at rest; its substeps are set by its springs.
+struct SoftBallOptions {
+    int points = 120;
+    double ballRadius = 0.25;        // m
+    double height = 1.0;             // m, of the centre
+    double mass = 0.02;              // kg per particle
+    double radius = 0.025;           // m
+    double stiffness = 200.0;        // N/m, the surface springs
+    double damping = 0.05;           // N·s/m, every spring
+    bool centre = true;              // add a centre particle joined to every surface particle
+    double centreStiffness = 100.0;  // N/m, the springs to the centre
+};
+SceneDesc makeSoftBall(const SoftBallOptions &options);
+// the most points a soft ball may have: its neighbour search grows as points^1.5
+constexpr int kMaxSoftBallPoints = 20000;
+
+// what is wrong with a generator's options, as a sentence naming the option, e.g. "rows must be at
+// least 2 (got 0)"; nullopt when they make a valid scene (core::findProblem finds nothing) of at
+// most kMaxGeneratedParticles particles whose particles do not overlap
+std::optional<std::string> checkOptions(const ClothOptions &options);
+std::optional<std::string> checkOptions(const ChainOptions &options);
+std::optional<std::string> checkOptions(const RopeOptions &options);
+std::optional<std::string> checkOptions(const BlockOptions &options);
+std::optional<std::string> checkOptions(const BallOptions &options);
+std::optional<std::string> checkOptions(const SoftBallOptions &options);
 
 // joins particles a and b with a spring whose rest length is their current distance
 void addSpring(SceneDesc &scene, int a, int b, double stiffness, double damping);

@@ -58,6 +58,15 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
                 "offers them back"));
     addEntry(tr("View › Undo History"), tr("Every edit of the scene; click one to go back to it"));
 
+    // generators: what Edit › Generate makes
+    addSection(tr("Generate"));
+    addEntry(tr("Edit › Generate… (Ctrl+G)"),
+             tr("A cloth of rows × columns (structural, shear and bend springs, each with its own k), a rope "
+                "(touching links), a chain, a block or ball of loose particles (granular, with a seeded jitter) or "
+                "a soft ball (points on a sphere joined to their neighbours, optionally to a centre particle). The "
+                "preview and the counts follow every value, wrong options are named and not generated, and the "
+                "result, its middle where you say, is one undo step and becomes the selection"));
+
     // accuracy: the integrator, and the figures that say how accurate the run is
     addSection(tr("Accuracy"));
     addEntry(tr("Parameters › Integrator"),

@@ -364,6 +364,7 @@ void MainWindow::writeSettings() const
     settings.setValue(QStringLiteral("state"), saveState());
     settings.endGroup();
     settings.setValue(QStringLiteral("screenshots/directory"), m_screenshotDirectory);
+    writeTimelineSettings(settings);
 }
 
 QStringList MainWindow::exampleNames()

@@ -21,6 +21,7 @@ class QMenu;
 class QDockWidget;
 class QMimeData;
 class QToolBar;
+class QSettings;
 class QUndoView;
 
 namespace core {
@@ -32,6 +33,7 @@ namespace ui {
 
 class AccuracyDialog;
 class EditTools;
+class GenerateDialog;
 class InspectorPanel;
 class Autosave;
 class ParametersPanel;
@@ -126,6 +128,8 @@ public:
     // Simulation › Accuracy's dialog; null until first opened
     AccuracyDialog *accuracyDialog() const { return m_accuracy; }
     const Steering &steering() const { return m_steering; }
+    // Edit › Generate's dialog; null until first opened (main_window_editing.cpp)
+    GenerateDialog *generateDialog() const { return m_generate; }
 
     // the status bar's fields, for the tests
     QString statusTime() const;
@@ -154,6 +158,7 @@ private:
     // the timeline (main_window_timeline.cpp)
     void createTimeline();
     void showTimeline(const SimulationFrame &frame);
+    void writeTimelineSettings(QSettings &settings) const;
     void readSettings();
     void writeSettings() const;
 
@@ -187,6 +192,8 @@ private:
     void planAccuracy(double tolerance);
     void applyPlan(const core::AccuracyPlan &plan);
     void steer(int turn, int change);
+    void showGenerate();
+    void addGenerated();
 
     SceneDocument *m_document = nullptr;
     SimulationController *m_controller = nullptr;
@@ -206,6 +213,7 @@ private:
     QDockWidget *m_undoDock = nullptr;
     QUndoView *m_undoView = nullptr;
     AccuracyDialog *m_accuracy = nullptr;
+    GenerateDialog *m_generate = nullptr;
     std::uint64_t m_accuracyRequest = 0;  // the plan awaited from the worker; 0: none
     QString m_screenshotDirectory;
     Steering m_steering;

@@ -1,11 +1,16 @@
 // MainWindow's editing: the tools' toolbar with the values new items get, the Edit menu's
-// actions on the selection, and the inspector dock.
+// actions on the selection and its generators, and the inspector dock.
 
 #include "main_window.h"
 
 #include "edit_tools.h"
+#include "generate_dialog.h"
 #include "inspector_panel.h"
+#include "scene_commands.h"
+#include "scene_document.h"
 #include "value_spin_box.h"
+
+#include "core/validate.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -15,6 +20,7 @@
 #include <QSignalBlocker>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QUndoStack>
 
 namespace ui {
 
@@ -121,6 +127,12 @@ void MainWindow::createEditing()
         // the viewport's keys, not a spin box's: Delete and Backspace edit text there
         action->setShortcutContext(Qt::WindowShortcut);
     }
+    // the generators: a cloth, rope, chain, granular block or ball, or soft ball in one undo step
+    QAction *generate = m_editMenu->addAction(tr("&Generate..."), this, &MainWindow::showGenerate);
+    generate->setObjectName(QStringLiteral("actionGenerate"));
+    generate->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));
+    generate->setStatusTip(tr("Add a cloth, rope, chain, block or ball of particles, or a soft ball, previewed first "
+                              "(one undo step)"));
     m_editMenu->addSeparator();
     QMenu *tools = m_editMenu->addMenu(tr("&Tool"));
     for (QAction *action : m_tools->toolActions())
@@ -135,6 +147,34 @@ void MainWindow::createEditing()
     addDockWidget(Qt::RightDockWidgetArea, dock);
     m_viewMenu->addAction(dock->toggleViewAction());
     connect(m_inspector, &InspectorPanel::valueRefused, this, &MainWindow::showWarning);
+}
+
+void MainWindow::showGenerate()
+{
+    if (!m_generate) {
+        m_generate = new GenerateDialog(this);
+        connect(m_generate, &QDialog::accepted, this, &MainWindow::addGenerated);
+    }
+    m_generate->open();
+}
+
+void MainWindow::addGenerated()
+{
+    // the dialog's scene, moved to where it says, as one undo step; the new particles are selected
+    const std::shared_ptr<const core::SceneDesc> generated = m_generate->generated();
+    if (!generated)
+        return;
+    auto edited = std::make_shared<core::SceneDesc>(m_document->scene());
+    const Selection added = ui::addGenerated(*edited, *generated, m_generate->position());
+    if (const std::optional<core::SceneProblem> problem = core::findProblem(*edited)) {
+        showWarning(tr("Not generated: %1 %2")
+                        .arg(QString::fromStdString(problem->path), QString::fromStdString(problem->message)));
+        return;
+    }
+    const QString what = m_generate->kindName();
+    m_document->undoStack()->push(new SceneCommand(*m_document, tr("Generate %1").arg(what), std::move(edited)));
+    m_tools->setSelection(added);
+    statusBar()->showMessage(tr("Added %1: ").arg(what) + m_generate->countText(), kToolMessageMs);
 }
 
 }  // namespace ui

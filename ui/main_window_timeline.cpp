@@ -43,15 +43,18 @@ void MainWindow::createTimeline()
     connect(m_timelineBar, &TimelineBar::scrubRequested, m_controller, &SimulationController::scrub);
     connect(m_timelineBar, &TimelineBar::stepBackRequested, m_stepBackAction, &QAction::trigger);
     connect(m_timelineBar, &TimelineBar::stepForwardRequested, m_stepAction, &QAction::trigger);
-    connect(m_timelineBar, &TimelineBar::budgetChanged, this, [this](std::size_t bytes) {
-        m_controller->setTimelineBudget(bytes);
-        QSettings().setValue(kBudgetKey, m_timelineBar->budgetBox()->value());
-    });
+    connect(m_timelineBar, &TimelineBar::budgetChanged, m_controller, &SimulationController::setTimelineBudget);
 
-    // the budget of the last session, else the default; the worker hears of it before any scene
+    // the budget of the last session (writeTimelineSettings), else the default; the worker hears
+    // of it before any scene
     const int megabytes = QSettings().value(kBudgetKey, m_timelineBar->budgetBox()->value()).toInt();
     m_timelineBar->budgetBox()->setValue(megabytes);
     m_controller->setTimelineBudget(m_timelineBar->budgetBytes());
+}
+
+void MainWindow::writeTimelineSettings(QSettings &settings) const
+{
+    settings.setValue(kBudgetKey, m_timelineBar->budgetBox()->value());
 }
 
 void MainWindow::showTimeline(const SimulationFrame &frame)

@@ -169,6 +169,20 @@ Selection pasteFragment(core::SceneDesc &scene, const Fragment &fragment, const 
     return added;
 }
 
+Selection addGenerated(core::SceneDesc &scene, const core::SceneDesc &generated, const Eigen::Vector3d &centre)
+{
+    if (generated.particles.empty())
+        return {};
+    Eigen::Vector3d low = generated.particles.front().position;
+    Eigen::Vector3d high = low;
+    for (const core::ParticleDesc &p : generated.particles) {
+        low = low.cwiseMin(p.position);
+        high = high.cwiseMax(p.position);
+    }
+    scene.settings.substeps = std::max(scene.settings.substeps, generated.settings.substeps);
+    return pasteFragment(scene, Fragment{generated.particles, generated.springs}, centre - 0.5 * (low + high));
+}
+
 void moveParticles(core::SceneDesc &scene, const std::vector<int> &particles, const std::vector<Eigen::Vector3d> &from,
                    const Eigen::Vector3d &delta)
 {

@@ -59,6 +59,12 @@ Fragment copyItems(const core::SceneDesc &scene, const Selection &selection);
 // appends the fragment moved by offset; returns the selection of what was added
 Selection pasteFragment(core::SceneDesc &scene, const Fragment &fragment, const Eigen::Vector3d &offset);
 
+// appends a generated scene (core/generators.h) with the middle of its particles' bounding box at
+// `centre`: its particles and springs, and its substeps where they are more than the scene's (a
+// cloth's stiff springs need them); the rest of its settings are not taken. Returns the selection
+// of what was added.
+Selection addGenerated(core::SceneDesc &scene, const core::SceneDesc &generated, const Eigen::Vector3d &centre);
+
 // places each particle at from[k] + delta, from[k] being where particles[k] was seen (the drag
 // starts from what is on screen, which is not the initial position once the run has moved on)
 void moveParticles(core::SceneDesc &scene, const std::vector<int> &particles, const std::vector<Eigen::Vector3d> &from,

@@ -3,6 +3,8 @@
 
 #include "ui/scene_edits.h"
 
+#include "core/generators.h"
+
 #include <QTest>
 
 namespace {
@@ -133,6 +135,42 @@ private slots:
         QCOMPARE(scene.springs[3].restLength, 1.0);
         // the originals are untouched
         QCOMPARE(scene.particles[1].position, Eigen::Vector3d(1.0, 0.0, 0.0));
+    }
+
+    void generatedSceneIsAppendedAroundTheCentre()
+    {
+        core::SceneDesc scene = row();
+        const core::SceneDesc before = scene;
+        core::ClothOptions options;
+        options.rows = 3;
+        options.cols = 4;
+        const core::SceneDesc cloth = core::makeCloth(options);
+        const ui::Selection added = ui::addGenerated(scene, cloth, {1.0, 2.0, 3.0});
+        QCOMPARE(scene.particles.size(), before.particles.size() + cloth.particles.size());
+        QCOMPARE(scene.springs.size(), before.springs.size() + cloth.springs.size());
+        QCOMPARE(added.particles.front(), 4);
+        QCOMPARE(added.particles.size(), cloth.particles.size());
+        QCOMPARE(added.springs.front(), 3);
+        QCOMPARE(added.springs.size(), cloth.springs.size());
+        // what was there is untouched; the cloth's springs join its own particles, at the same rest
+        // lengths, and the middle of its box is at the centre
+        QVERIFY(std::equal(before.particles.begin(), before.particles.end(), scene.particles.begin()));
+        QVERIFY(std::equal(before.springs.begin(), before.springs.end(), scene.springs.begin()));
+        for (std::size_t s = 0; s < cloth.springs.size(); ++s) {
+            const core::SpringDesc &spring = scene.springs[std::size_t(added.springs[s])];
+            QCOMPARE(spring.a, cloth.springs[s].a + 4);
+            QCOMPARE(spring.b, cloth.springs[s].b + 4);
+            QCOMPARE(spring.restLength, cloth.springs[s].restLength);
+        }
+        const Eigen::Vector3d first = scene.particles[4].position;
+        const Eigen::Vector3d last = scene.particles.back().position;
+        QVERIFY((0.5 * (first + last) - Eigen::Vector3d(1.0, 2.0, 3.0)).norm() < 1e-12);
+        QVERIFY(scene.particles[4].pinned);
+        // the cloth's substeps came along; the scene's other settings stayed
+        QCOMPARE(scene.settings.substeps, options.substeps);
+        QCOMPARE(scene.settings.timeStep, before.settings.timeStep);
+        QCOMPARE(scene.steerable, before.steerable);
+        QVERIFY(ui::addGenerated(scene, core::SceneDesc{}, {}).empty());
     }
 
     void moveStartsFromWhereTheParticlesWereSeen()

@@ -190,6 +190,14 @@ void TestTimelineBar::budgetReachesTheWorker()
     auto *memory = bar().findChild<QLabel *>(QStringLiteral("timelineMemory"));
     QVERIFY(memory);
     QVERIFY2(memory->text().endsWith(QStringLiteral(" / 3.0 MB")), qPrintable(memory->text()));
+
+    // remembered: the next window starts with it, and so does its worker
+    QVERIFY(m_window->close());
+    delete m_window;
+    m_window = new ui::MainWindow;
+    QCOMPARE(bar().budgetBox()->value(), 3);
+    frame = settledFrame(controller());
+    QCOMPARE(frame->timeline.budgetBytes, std::size_t(3) << 20);
 }
 
 void TestTimelineBar::breaksAreRedTicks()
