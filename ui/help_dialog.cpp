@@ -90,6 +90,18 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
              tr("A spring stretched past (l - l0) / l0 = this breaks for good during the run (0: never); red "
                 "ticks on the timeline mark the steps springs broke in; Reset mends them"));
 
+    // plots: what they show, what "lost" means, and the exports
+    addSection(tr("Plots"));
+    addEntry(tr("View › Plots (F8)"),
+             tr("Energies (kinetic, gravitational, spring, total), momentum, or the selected particle's position or "
+                "velocity against time, chosen in the dock's box; one sample per step shown, started over at a reset "
+                "or another scene"));
+    addEntry(tr("Plots: lost since reset"),
+             tr("The total energy at the last reset less the total now: what damping, drag and inelastic contacts "
+                "took, and also the integrator's own drift and work done by the mouse, the steering or edits"));
+    addEntry(tr("Plots: Export PNG…, Export CSV… (or right-click the plot)"),
+             tr("Save the plot shown as an image, or its samples as CSV: step, time, one column per curve"));
+
     // keys as wide as they need, descriptions wrapped to what is left
     m_table->resizeColumnToContents(0);
     connect(m_table->horizontalHeader(), &QHeaderView::sectionResized, m_table, &QTableWidget::resizeRowsToContents);

@@ -7,6 +7,7 @@
 #include "help_dialog.h"
 #include "initial_state_command.h"
 #include "parameters_panel.h"
+#include "plots_widget.h"
 #include "recent_files.h"
 #include "scene_commands.h"
 #include "scene_document.h"
@@ -78,6 +79,7 @@ MainWindow::MainWindow(QWidget *parent)
     createMenus();
     createDocks();
     createEditing();
+    createPlotsDock();
     createStatusBar();
     createAutosave();
     // a scene file dropped anywhere on the window opens
@@ -300,12 +302,21 @@ void MainWindow::createUndoHistoryDock()
     m_undoDock = new QDockWidget(tr("Undo History"), this);
     m_undoDock->setObjectName(QStringLiteral("undoHistoryDock"));
     m_undoDock->setWidget(m_undoView);
-    addDockWidget(Qt::RightDockWidgetArea, m_undoDock);
-    m_undoDock->hide();
-    QAction *toggle = m_undoDock->toggleViewAction();
-    toggle->setObjectName(QStringLiteral("actionUndoHistory"));
-    toggle->setStatusTip(tr("Show or hide the list of edits that undo and redo walk through"));
+    addHiddenDock(m_undoDock, Qt::RightDockWidgetArea, "actionUndoHistory",
+                  tr("Show or hide the list of edits that undo and redo walk through"));
+}
+
+QAction *MainWindow::addHiddenDock(QDockWidget *dock, Qt::DockWidgetArea area, const char *actionName,
+                                   const QString &statusTip)
+{
+    // docked but hidden; View has the action that shows it
+    addDockWidget(area, dock);
+    dock->hide();
+    QAction *toggle = dock->toggleViewAction();
+    toggle->setObjectName(QString::fromLatin1(actionName));
+    toggle->setStatusTip(statusTip);
     m_viewMenu->addAction(toggle);
+    return toggle;
 }
 
 void MainWindow::createStatusBar()
@@ -462,6 +473,7 @@ void MainWindow::sceneChanged(SceneChange change)
         m_steering = Steering{};
         m_warningLabel->clear();
         m_frameAllAfter = sequence;
+        m_plots->startOverAfter(sequence);
         // a plan still awaited was made for the old scene: drop it
         if (m_accuracyRequest != 0 && m_accuracy)
             m_accuracy->showPlan(core::AccuracyPlan{}, tr("Another scene was opened; plan again"));
@@ -508,6 +520,7 @@ void MainWindow::frameChanged()
         return;
     m_viewport->setSnapshot(frame->snapshot);
     showTimeline(*frame);
+    m_plots->addFrame(*frame);
     if (m_frameAllAfter != 0 && frame->appliedEdit >= m_frameAllAfter) {
         m_frameAllAfter = 0;
         m_viewport->frameAll();

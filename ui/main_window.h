@@ -1,9 +1,10 @@
 #pragma once
 // MainWindow: the editor. It ties the scene document (the UI thread's SceneDesc and its undo
 // stack) to the simulation controller (the worker thread) and to the views: the 3D viewport, the
-// parameters dock and the status bar. A document change becomes a scene edit for the worker; a
-// frame from the worker goes to the viewport and the status bar. What touches files (New, Open,
-// Save, Revert, recent files, drops, autosave and recovery) is in main_window_files.cpp.
+// parameters dock, the plots dock and the status bar. A document change becomes a scene edit for
+// the worker; a frame from the worker goes to the viewport, the plots and the status bar. What
+// touches files (New, Open, Save, Revert, recent files, drops, autosave and recovery) is in
+// main_window_files.cpp.
 
 #include "steering.h"
 
@@ -37,6 +38,7 @@ class GenerateDialog;
 class InspectorPanel;
 class Autosave;
 class ParametersPanel;
+class PlotsWidget;
 class RecentFiles;
 struct CapturedState;
 struct SessionRecording;
@@ -46,6 +48,7 @@ struct SimulationFrame;
 class TimelineBar;
 class Viewport;
 enum class SceneChange;
+enum class PlotExport;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -125,6 +128,8 @@ public:
     // the strip under the view that scrubs through the recorded run
     TimelineBar *timelineBar() const { return m_timelineBar; }
     ParametersPanel *parametersPanel() const { return m_parameters; }
+    // View › Plots' dock content (main_window_plots.cpp)
+    PlotsWidget *plots() const { return m_plots; }
     // Simulation › Accuracy's dialog; null until first opened
     AccuracyDialog *accuracyDialog() const { return m_accuracy; }
     const Steering &steering() const { return m_steering; }
@@ -153,6 +158,10 @@ private:
     void createDocks();
     void createEditing();
     void createUndoHistoryDock();
+    // adds a dock hidden until asked for, and its toggle (named actionName) to the View menu
+    QAction *addHiddenDock(QDockWidget *dock, Qt::DockWidgetArea area, const char *actionName,
+                           const QString &statusTip);
+    void createPlotsDock();
     void createAutosave();
     void createStatusBar();
     // the timeline (main_window_timeline.cpp)
@@ -175,7 +184,9 @@ private:
     QMessageBox::StandardButton ask(QMessageBox::Icon icon, const QString &title, const QString &text,
                                     QMessageBox::StandardButtons buttons = QMessageBox::Ok,
                                     QMessageBox::StandardButton defaultButton = QMessageBox::NoButton);
-    QString chooseFile(FileDialogMode mode, const QString &title, const QString &suggestedPath);
+    // filter: the dialog's file types (empty: scenes)
+    QString chooseFile(FileDialogMode mode, const QString &title, const QString &suggestedPath,
+                       const QString &filter = QString());
     void openRecent(const QString &path);
     void updateRecentMenu();
     void updateFileActions();
@@ -183,6 +194,7 @@ private:
     static QString droppedScenePath(const QMimeData *mime);
     void applyCapturedState(const CapturedState &state);
     void saveSessionRecording(const SessionRecording &recording);
+    void exportPlot(PlotExport format);
 
     void chooseScreenshotDirectory();
     void showHelp();
@@ -212,6 +224,8 @@ private:
     QDockWidget *m_parametersDock = nullptr;
     QDockWidget *m_undoDock = nullptr;
     QUndoView *m_undoView = nullptr;
+    PlotsWidget *m_plots = nullptr;
+    QDockWidget *m_plotsDock = nullptr;
     AccuracyDialog *m_accuracy = nullptr;
     GenerateDialog *m_generate = nullptr;
     std::uint64_t m_accuracyRequest = 0;  // the plan awaited from the worker; 0: none

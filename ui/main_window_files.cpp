@@ -171,13 +171,14 @@ QMessageBox::StandardButton MainWindow::ask(QMessageBox::Icon icon, const QStrin
     return static_cast<QMessageBox::StandardButton>(box.exec());
 }
 
-QString MainWindow::chooseFile(FileDialogMode mode, const QString &title, const QString &suggestedPath)
+QString MainWindow::chooseFile(FileDialogMode mode, const QString &title, const QString &suggestedPath,
+                               const QString &filter)
 {
     if (m_fileDialog)
         return m_fileDialog(mode, title, suggestedPath);
-    const QString filter = tr("Springlab scenes (*.json)");
-    return mode == FileDialogMode::Open ? QFileDialog::getOpenFileName(this, title, suggestedPath, filter)
-                                        : QFileDialog::getSaveFileName(this, title, suggestedPath, filter);
+    const QString types = filter.isEmpty() ? tr("Springlab scenes (*.json)") : filter;
+    return mode == FileDialogMode::Open ? QFileDialog::getOpenFileName(this, title, suggestedPath, types)
+                                        : QFileDialog::getSaveFileName(this, title, suggestedPath, types);
 }
 
 core::SceneDesc MainWindow::newScene()

@@ -33,6 +33,9 @@ struct TimelineInfo {
     std::size_t budgetBytes = 0;
     std::vector<std::uint64_t> breakSteps;  // steps in which springs broke
     bool locked = false;  // a session is being recorded: no scrubbing until it ends
+    // how often the run went on from a step scrubbed to, and the step it last did
+    std::uint64_t resumes = 0;
+    std::uint64_t resumedAt = 0;
 };
 
 struct SimulationFrame {

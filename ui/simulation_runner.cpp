@@ -200,6 +200,8 @@ void SimulationRunner::resumeFromScrub()
     Scrub scrub = std::move(*m_scrub);
     m_scrub.reset();
     m_timeline.truncateAfter(scrub.state.step);
+    ++m_resumes;
+    m_resumedAt = scrub.state.step;
     const std::shared_ptr<const core::SceneDesc> current = m_scene;
     const core::Profile profile = m_state.profile;
     m_state = std::move(scrub.state);

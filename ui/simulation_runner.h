@@ -88,6 +88,9 @@ public:
     // the timeline: what it holds, and the step shown while scrubbing (nullopt at the run's end)
     const Timeline &timeline() const { return m_timeline; }
     bool isScrubbing() const { return m_scrub.has_value(); }
+    // how often the run went on from a step scrubbed to, and that step the last time
+    std::uint64_t resumes() const { return m_resumes; }
+    std::uint64_t resumedAt() const { return m_resumedAt; }
     std::optional<std::uint64_t> scrubStep() const;
     // the state shown: the scrubbed step's while scrubbing, else the run's
     const core::State &shownState() const { return m_scrub ? m_scrub->state : m_state; }
@@ -163,6 +166,8 @@ private:
     core::State m_state;
     Timeline m_timeline;
     std::optional<Scrub> m_scrub;  // while a recorded step is shown
+    std::uint64_t m_resumes = 0;
+    std::uint64_t m_resumedAt = 0;
     core::State m_lastGood;  // the state before the latest steps, restored if they blow up
     bool m_running = false;
     double m_owed = 0.0;  // s of simulated time not yet covered by a whole step

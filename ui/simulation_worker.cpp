@@ -127,6 +127,8 @@ void SimulationWorker::publish()
     info.budgetBytes = timeline.budget();
     info.breakSteps = timeline.breakSteps();
     info.locked = m_runner.isRecording();
+    info.resumes = m_runner.resumes();
+    info.resumedAt = m_runner.resumedAt();
     if (m_mailbox.publish(std::move(frame)))
         emit frameReady();
 }

@@ -1,6 +1,6 @@
 #pragma once
 // What the editor's UI tests share: waiting for the worker's frame that includes every edit made
-// so far. The wait polls with a deadline, never a fixed sleep.
+// so far, and for a window to become active. The waits poll with a deadline, never a fixed sleep.
 
 #include "ui/simulation_controller.h"
 #include "ui/simulation_frame.h"
@@ -31,6 +31,15 @@ inline std::shared_ptr<const ui::SimulationFrame> settledFrame(ui::SimulationCon
                                                                int timeoutMs = 10000)
 {
     return frameAfter(controller, controller.sync(), timeoutMs);
+}
+
+// shows a window and makes it the active one, which shortcuts need; with no window manager it
+// has to ask for it. False if it never became active.
+inline bool showActive(QWidget &window)
+{
+    window.show();
+    window.activateWindow();
+    return QTest::qWaitForWindowActive(&window);
 }
 
 }  // namespace test

@@ -428,6 +428,11 @@ void TestMainWindow::f1ListsEveryShortcut()
     QVERIFY(all.contains(QStringLiteral("Integrator")));
     QVERIFY(all.contains(QStringLiteral("local error")));
     QVERIFY(all.contains(QStringLiteral("ΔE")));
+
+    // and the plots, with what their lost energy is
+    QVERIFY(all.contains(QStringLiteral("F8\tView › Plots")));
+    QVERIFY(all.contains(QStringLiteral("lost since reset")));
+    QVERIFY(all.contains(QStringLiteral("Export CSV")));
 }
 
 void TestMainWindow::integratorChoiceReachesTheWorker()

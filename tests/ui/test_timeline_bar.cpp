@@ -4,6 +4,8 @@
 // shown; the budget box reaches the worker and the memory figure; the steps springs broke in are
 // drawn as red ticks. Waits are on frames, never fixed sleeps.
 #include "ui/main_window.h"
+#include "ui/plot_series.h"
+#include "ui/plots_widget.h"
 #include "ui/simulation_controller.h"
 #include "ui/timeline_bar.h"
 #include "ui/viewport.h"
@@ -166,6 +168,10 @@ void TestTimelineBar::stepsBackAndForthAndPlaysOn()
     QCOMPARE(frame->snapshot->step, std::uint64_t(19));
     QCOMPARE(frame->timeline.lastStep, std::uint64_t(20));
 
+    // the plots kept the run's curves while scrubbing: one sample per step 0..20
+    const ui::PlotSeries &energies = m_window->plots()->series(ui::PlotGroup::Energies);
+    QCOMPARE(energies.step(energies.size() - 1), std::uint64_t(20));
+
     // play goes on from step 19: what was recorded after it is gone, then new steps come
     press(Qt::Key_F4);
     QTRY_VERIFY_WITH_TIMEOUT(controller().frame()->snapshot->step >= 25, 20000);
@@ -174,6 +180,11 @@ void TestTimelineBar::stepsBackAndForthAndPlaysOn()
     QVERIFY(!frame->timeline.scrubStep.has_value());
     QCOMPARE(frame->timeline.lastStep, frame->snapshot->step);
     QCOMPARE(bar().slider()->value(), int(frame->snapshot->step));
+    // the plots too: the history from step 0 as it was, then the new run's, in order, nothing twice
+    QCOMPARE(energies.step(0), std::uint64_t(0));
+    for (std::size_t i = 1; i < energies.size(); ++i)
+        QVERIFY(energies.step(i) > energies.step(i - 1));
+    QCOMPARE(energies.step(energies.size() - 1), frame->snapshot->step);
 }
 
 void TestTimelineBar::budgetReachesTheWorker()

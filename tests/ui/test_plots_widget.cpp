@@ -1,0 +1,418 @@
+// The plots dock in the real main window, under a virtual X server: F8 shows it; every plotted
+// energy is the core's own diagnostics of a run stepped here independently, bit for bit, and "lost
+// since reset" is the total at reset less the total; a particle clicked in the viewport has its
+// position and velocity plotted as the snapshot has them; a reset or another scene starts over;
+// Export PNG and Export CSV write an image of the canvas and its samples through the window's
+// file dialog, and a file that cannot be written is reported. Waits are on frames, never sleeps.
+//
+// With SPRINGLAB_DOC_IMAGES=FOLDER set, it also writes the dock's picture for the docs there.
+
+#include "ui/edit_tools.h"
+#include "ui/main_window.h"
+#include "ui/plot_canvas.h"
+#include "ui/plots_widget.h"
+#include "ui/scene_document.h"
+#include "ui/simulation_controller.h"
+#include "ui/viewport.h"
+
+#include "core/diagnostics.h"
+#include "core/model.h"
+#include "core/state.h"
+#include "core/step.h"
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QImage>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QtTest>
+
+#include <charconv>
+
+#include "editor_test_setup.h"
+#include "frame_wait.h"
+
+namespace {
+
+using test::settledFrame;
+
+// the curves of the energies plot, in order
+enum EnergyCurve { Kinetic, Gravitational, Spring, Total, Lost };
+
+// a damped chain of four hanging from a pin, swinging down onto a floor that takes half the speed
+core::SceneDesc chainScene()
+{
+    core::SceneDesc scene;
+    scene.name = "chain";
+    scene.settings.viscosity = 0.1;
+    scene.settings.restitution = 0.5;
+    for (int i = 0; i < 4; ++i) {
+        core::ParticleDesc particle;
+        particle.position = {0.5 * i, 0.8, 0.0};
+        particle.pinned = i == 0;
+        scene.particles.push_back(particle);
+    }
+    for (int i = 0; i < 3; ++i)
+        scene.springs.push_back({i, i + 1, 200.0, 0.5, 0.5});
+    scene.planes.push_back({});
+    return scene;
+}
+
+QVector3D toQt(const Eigen::Vector3d &v)
+{
+    return {float(v.x()), float(v.y()), float(v.z())};
+}
+
+// what two doubles that should be the same bits are, for a failure's message
+QByteArray bits(double actual, double expected)
+{
+    return QStringLiteral("%1 is not %2").arg(actual, 0, 'g', 17).arg(expected, 0, 'g', 17).toUtf8();
+}
+
+double readDouble(const QString &field)
+{
+    const std::string text = field.toStdString();
+    double value = std::numeric_limits<double>::quiet_NaN();
+    std::from_chars(text.data(), text.data() + text.size(), value);
+    return value;
+}
+
+}  // namespace
+
+class TestPlotsWidget : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain() { test::prepareOpenGL(); }
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void f8ShowsAndHidesThePlots();
+    void plottedEnergiesAreTheCoresDiagnostics();
+    void clickedParticleIsPlottedAsTheSnapshotHasIt();
+    void resetAndAnotherSceneStartOver();
+    void exportsWriteAnImageAndTheSamples();
+    void anExportThatCannotBeWrittenIsReported();
+    void writesThePictureForTheDocs();
+
+private:
+    ui::SimulationController &controller() { return *m_window->controller(); }
+    ui::PlotsWidget *plots() { return m_window->plots(); }
+    QDockWidget *dock() { return m_window->findChild<QDockWidget *>(QStringLiteral("plotsDock")); }
+    void press(Qt::Key key) { QTest::keyClick(m_window, key); }
+    // opens a scene, shows the plots, and looks at the scene from a fixed camera
+    void open(const core::SceneDesc &scene);
+    // F6 `count` times, each step's frame seen by the window
+    void stepTimes(int count);
+    void clickButton(const char *name);
+
+    QTemporaryDir m_settings;
+    QTemporaryDir m_files;
+    ui::MainWindow *m_window = nullptr;
+};
+
+void TestPlotsWidget::initTestCase()
+{
+    QVERIFY(m_settings.isValid() && m_files.isValid());
+    test::useSettingsIn(m_settings.path(), QStringLiteral("test_plots_widget"));
+}
+
+void TestPlotsWidget::init()
+{
+    m_window = new ui::MainWindow;
+    QVERIFY(test::showActive(*m_window));
+    QVERIFY(settledFrame(controller()));
+}
+
+void TestPlotsWidget::cleanup()
+{
+    delete m_window;
+    m_window = nullptr;
+}
+
+void TestPlotsWidget::open(const core::SceneDesc &scene)
+{
+    m_window->document()->replace(scene, QString());
+    const auto frame = settledFrame(controller());
+    QVERIFY(frame && frame->scene == m_window->document()->sharedScene());
+    if (dock()->isHidden())
+        press(Qt::Key_F8);
+    QTRY_VERIFY(dock()->isVisible());
+    ui::Camera &camera = m_window->viewport()->camera();
+    camera.setTarget(QVector3D(0.75f, 0.5f, 0.0f));
+    camera.setDistance(4.0f);
+    camera.setAngles(0.0f, 0.0f);
+    m_window->viewport()->update();
+}
+
+void TestPlotsWidget::stepTimes(int count)
+{
+    for (int i = 0; i < count; ++i) {
+        press(Qt::Key_F6);
+        QVERIFY(settledFrame(controller()));
+    }
+}
+
+void TestPlotsWidget::clickButton(const char *name)
+{
+    auto *button = plots()->findChild<QToolButton *>(QString::fromLatin1(name));
+    QVERIFY2(button, name);
+    QTest::mouseClick(button, Qt::LeftButton);
+}
+
+void TestPlotsWidget::f8ShowsAndHidesThePlots()
+{
+    // hidden at first; F8 (View › Plots) toggles it
+    QVERIFY(dock() && dock()->isHidden());
+    press(Qt::Key_F8);
+    QTRY_VERIFY(dock()->isVisible());
+    QCOMPARE(m_window->dockWidgetArea(dock()), Qt::BottomDockWidgetArea);
+    QVERIFY(plots()->canvas()->isVisible());
+    press(Qt::Key_F8);
+    QTRY_VERIFY(dock()->isHidden());
+}
+
+void TestPlotsWidget::plottedEnergiesAreTheCoresDiagnostics()
+{
+    // a run at display rate, then single steps
+    const core::SceneDesc scene = chainScene();
+    open(scene);
+    press(Qt::Key_F4);
+    QTRY_VERIFY_WITH_TIMEOUT(controller().frame()->snapshot->step > 60, 20000);
+    press(Qt::Key_F4);
+    QVERIFY(settledFrame(controller()));
+    stepTimes(5);
+    const auto last = settledFrame(controller());
+    const ui::PlotSeries &series = plots()->series(ui::PlotGroup::Energies);
+    QCOMPARE(series.step(series.size() - 1), last->snapshot->step);
+    QCOMPARE(series.step(0), std::uint64_t(0));
+
+    // the same scene stepped here: every sample is the core's energies at its step, to the bit
+    const auto model = core::compileModel(scene);
+    core::State state = core::makeState(*model, scene);
+    const core::Energies initial = core::energies(*model, state);
+    std::size_t compared = 0;
+    double lost = 0.0;
+    for (std::uint64_t step = 0; step <= last->snapshot->step; ++step) {
+        if (step > 0)
+            QVERIFY(core::step(*model, state));
+        const std::optional<std::size_t> at = series.indexOfStep(step);
+        if (!at)
+            continue;
+        const core::Energies expected = core::energies(*model, state);
+        const double values[] = {expected.kinetic, expected.gravitational, expected.spring, expected.total(),
+                                 initial.total() - expected.total()};
+        QVERIFY2(series.time(*at) == state.time, bits(series.time(*at), state.time).constData());
+        for (int curve : {Kinetic, Gravitational, Spring, Total, Lost}) {
+            const double plotted = series.value(std::size_t(curve), *at);
+            QVERIFY2(plotted == values[curve], bits(plotted, values[curve]).constData());
+        }
+        lost = series.value(Lost, *at);
+        ++compared;
+    }
+    QCOMPARE(compared, series.size());
+    QVERIFY(compared >= 7);  // step 0, at least one frame of the run, the five single steps
+    // drag, damping and the floor took energy out
+    QVERIFY2(lost > 0.0, qPrintable(QString::number(lost)));
+    QCOMPARE(last->initialEnergies.total(), initial.total());
+
+    // and the momentum plot is the snapshot's
+    const ui::PlotSeries &momentum = plots()->series(ui::PlotGroup::Momentum);
+    const double py = momentum.value(1, momentum.size() - 1);
+    QVERIFY2(py == last->snapshot->momentum.y(), bits(py, last->snapshot->momentum.y()).constData());
+    const double length = momentum.value(3, momentum.size() - 1);
+    QVERIFY2(length == last->snapshot->momentum.norm(), bits(length, last->snapshot->momentum.norm()).constData());
+}
+
+void TestPlotsWidget::clickedParticleIsPlottedAsTheSnapshotHasIt()
+{
+    open(chainScene());
+    ui::PlotsWidget *widget = plots();
+    widget->groupBox()->setFocus();
+    QTest::keyClick(widget->groupBox(), Qt::Key_Down);
+    QTest::keyClick(widget->groupBox(), Qt::Key_Down);
+    QCOMPARE(widget->group(), ui::PlotGroup::Position);
+    QVERIFY(widget->shownSeries().empty());
+    QVERIFY(widget->canvas()->emptyText().contains(QStringLiteral("Select a particle")));
+
+    // a click on the last particle of the chain, with the Select tool
+    const std::size_t chosen = 3;
+    QTRY_VERIFY(m_window->viewport()->snapshot() == controller().frame()->snapshot);
+    const auto pixel =
+        m_window->viewport()->camera().project(toQt(m_window->document()->scene().particles[chosen].position));
+    QVERIFY(pixel);
+    QTest::mouseClick(m_window->viewport(), Qt::LeftButton, {}, pixel->toPoint());
+    QCOMPARE(m_window->editTools()->selection().particles, std::vector<int>{int(chosen)});
+    QCOMPARE(widget->particle(), int(chosen));
+    QCOMPARE(widget->canvas()->title(), QStringLiteral("Particle 3"));
+
+    // a few steps: the last sample of each plot is the snapshot's, float for float
+    m_window->activateWindow();
+    stepTimes(4);
+    const auto frame = settledFrame(controller());
+    const core::Snapshot &snapshot = *frame->snapshot;
+    const ui::PlotSeries &position = widget->series(ui::PlotGroup::Position);
+    const ui::PlotSeries &velocity = widget->series(ui::PlotGroup::Velocity);
+    QCOMPARE(position.size(), std::size_t(4));
+    QCOMPARE(position.step(position.size() - 1), snapshot.step);
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        const double x = position.value(axis, position.size() - 1);
+        const double v = velocity.value(axis, velocity.size() - 1);
+        const double snapshotX = snapshot.positions[3 * chosen + axis];
+        const double snapshotV = snapshot.velocities[3 * chosen + axis];
+        QVERIFY2(x == snapshotX, bits(x, snapshotX).constData());
+        QVERIFY2(v == snapshotV, bits(v, snapshotV).constData());
+    }
+    QVERIFY(snapshot.velocities[3 * chosen + 1] < 0.0f);  // falling
+    const Eigen::Vector3d v(snapshot.velocities[3 * chosen], snapshot.velocities[3 * chosen + 1],
+                            snapshot.velocities[3 * chosen + 2]);
+    QCOMPARE(velocity.value(3, velocity.size() - 1), v.norm());
+
+    // another particle starts its plots over; none leaves them empty
+    m_window->editTools()->setSelection({{1}, {}});
+    QCOMPARE(widget->particle(), 1);
+    QVERIFY(position.empty());
+    m_window->editTools()->clearSelection();
+    QCOMPARE(widget->particle(), -1);
+}
+
+void TestPlotsWidget::resetAndAnotherSceneStartOver()
+{
+    open(chainScene());
+    stepTimes(3);
+    const ui::PlotSeries &energies = plots()->series(ui::PlotGroup::Energies);
+    QCOMPARE(energies.size(), std::size_t(4));
+
+    // F5: back to step 0 alone, with nothing lost
+    press(Qt::Key_F5);
+    QVERIFY(settledFrame(controller()));
+    QCOMPARE(energies.size(), std::size_t(1));
+    QCOMPARE(energies.step(0), std::uint64_t(0));
+    QVERIFY2(energies.value(Lost, 0) == 0.0, bits(energies.value(Lost, 0), 0.0).constData());
+
+    // another scene, also at step 0: only its own energies
+    core::SceneDesc other = chainScene();
+    other.particles[3].position.y() = 2.0;
+    m_window->document()->replace(other, QString());
+    const auto frame = settledFrame(controller());
+    QCOMPARE(energies.size(), std::size_t(1));
+    const auto model = core::compileModel(other);
+    const double expected = core::energies(*model, core::makeState(*model, other)).total();
+    QVERIFY2(energies.value(Total, 0) == expected, bits(energies.value(Total, 0), expected).constData());
+    QCOMPARE(frame->snapshot->energies.total(), expected);
+}
+
+void TestPlotsWidget::exportsWriteAnImageAndTheSamples()
+{
+    open(chainScene());
+    stepTimes(6);
+    QStringList titles;
+    QStringList suggested;
+    bool allSaves = true;
+    using Mode = ui::MainWindow::FileDialogMode;
+    m_window->setFileDialogFunction([&](Mode mode, const QString &title, const QString &path) {
+        titles << title;
+        suggested << path;
+        allSaves = allSaves && mode == Mode::Save;
+        return m_files.filePath(QFileInfo(path).fileName());
+    });
+
+    // Export PNG: the canvas as drawn, at its size
+    clickButton("buttonExportPlotPng");
+    QCOMPARE(titles.size(), 1);
+    QVERIFY2(suggested.back().endsWith(QStringLiteral("chain-energies.png")), qPrintable(suggested.back()));
+    const QImage image(m_files.filePath(QStringLiteral("chain-energies.png")));
+    QVERIFY(!image.isNull());
+    ui::PlotCanvas *canvas = plots()->canvas();
+    QCOMPARE(image.size(), canvas->size() * canvas->devicePixelRatio());
+    // drawn on: more than the white paper
+    int inked = 0;
+    for (int y = 0; y < image.height(); y += 2)
+        for (int x = 0; x < image.width(); x += 2)
+            inked += image.pixel(x, y) != qRgb(255, 255, 255) ? 1 : 0;
+    QVERIFY2(inked > 200, qPrintable(QString::number(inked)));
+
+    // Export CSV: a header, then the samples, every number as plotted
+    clickButton("buttonExportPlotCsv");
+    QCOMPARE(titles.size(), 2);
+    QVERIFY(allSaves);
+    QFile file(m_files.filePath(QStringLiteral("chain-energies.csv")));
+    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    const ui::PlotSeries &series = plots()->series(ui::PlotGroup::Energies);
+    QCOMPARE(lines.size(), int(series.size()) + 1);
+    QCOMPARE(lines.front(),
+             QStringLiteral("step,time [s],kinetic [J],gravitational [J],spring [J],total [J],lost since reset [J]"));
+    const QStringList lastRow = lines.back().split(QLatin1Char(','));
+    QCOMPARE(lastRow.size(), 7);
+    QCOMPARE(lastRow[0].toULongLong(), series.step(series.size() - 1));
+    const double total = series.value(Total, series.size() - 1);
+    QVERIFY2(readDouble(lastRow[2 + Total]) == total, bits(readDouble(lastRow[2 + Total]), total).constData());
+    QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("chain-energies.csv")));
+
+    // the canvas's context menu offers the same two
+    const QList<QAction *> menu = canvas->actions();
+    QVERIFY(menu.contains(plots()->exportPngAction()) && menu.contains(plots()->exportCsvAction()));
+    QCOMPARE(canvas->contextMenuPolicy(), Qt::ActionsContextMenu);
+
+    // cancelled: nothing written, nothing said
+    m_window->setFileDialogFunction([](auto, const QString &, const QString &) { return QString(); });
+    QFile::remove(m_files.filePath(QStringLiteral("chain-energies.png")));
+    clickButton("buttonExportPlotPng");
+    QVERIFY(!QFile::exists(m_files.filePath(QStringLiteral("chain-energies.png"))));
+}
+
+void TestPlotsWidget::anExportThatCannotBeWrittenIsReported()
+{
+    open(chainScene());
+    const QString path = m_files.filePath(QStringLiteral("missing-folder/plot.csv"));
+    m_window->setFileDialogFunction([&](auto, const QString &, const QString &) { return path; });
+    QString said;
+    m_window->setMessageBoxFunction([&](QMessageBox::Icon, const QString &, const QString &text, auto, auto) {
+        said = text;
+        return QMessageBox::Ok;
+    });
+    clickButton("buttonExportPlotCsv");
+    QVERIFY2(said.startsWith(QStringLiteral("Export CSV: cannot write ")) &&
+                 said.contains(QDir::toNativeSeparators(path)),
+             qPrintable(said));
+    QVERIFY(!QFile::exists(path));
+}
+
+void TestPlotsWidget::writesThePictureForTheDocs()
+{
+    // into SPRINGLAB_DOC_IMAGES when it names a folder (docs/images), else a throwaway one
+    QTemporaryDir scratch;
+    QVERIFY(scratch.isValid());
+    const QString named = qEnvironmentVariable("SPRINGLAB_DOC_IMAGES");
+    const QString folder = named.isEmpty() ? scratch.path() : named;
+
+    // the springs example, 2.5 s of its energies and of the middle particle's motion
+    QString error;
+    QVERIFY2(m_window->openExample(QStringLiteral("springs"), &error), qPrintable(error));
+    QVERIFY(settledFrame(controller()));
+    press(Qt::Key_F8);
+    QTRY_VERIFY(dock()->isVisible());
+    m_window->resize(1000, 760);
+    const int middle = int(m_window->document()->scene().particles.size() / 2);
+    m_window->editTools()->setSelection({{middle}, {}});
+    // step by step, so that every step is a sample even where the window draws slowly
+    stepTimes(250);
+    QVERIFY(QDir().mkpath(folder));
+    for (const auto &[group, name] : {std::pair{ui::PlotGroup::Energies, "plots-energies.png"},
+                                      std::pair{ui::PlotGroup::Velocity, "plots-particle-velocity.png"}}) {
+        plots()->setGroup(group);
+        const QImage image = plots()->grab().toImage();
+        QVERIFY(!image.isNull());
+        const QString path = QDir(folder).filePath(QString::fromLatin1(name));
+        QVERIFY(image.save(path));
+        QCOMPARE(QImage(path).size(), plots()->size());
+    }
+}
+
+QTEST_MAIN(TestPlotsWidget)
+#include "test_plots_widget.moc"
