@@ -55,12 +55,7 @@ private:
 
     // shows the window and makes it the active one, as shortcuts need; with no window manager it has
     // to ask
-    static bool makeActive(QWidget *window)
-    {
-        window->show();
-        window->activateWindow();
-        return QTest::qWaitForWindowActive(window);
-    }
+    static bool makeActive(QWidget *window) { return test::showActive(*window); }
     // Ctrl+G, as a user would press it; the dialog, shown and active
     ui::GenerateDialog *open()
     {

@@ -93,9 +93,7 @@ void TestTimelineBar::initTestCase()
 void TestTimelineBar::init()
 {
     m_window = new ui::MainWindow;
-    m_window->show();
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window));
+    QVERIFY(test::showActive(*m_window));
     QVERIFY(settledFrame(controller()));
 }
 
