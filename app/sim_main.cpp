@@ -6,10 +6,10 @@
 // the recorded state.
 
 #include "sim_options.h"
-#include "trace_writer.h"
 
 #include "core/diagnostics.h"
 #include "core/io/scene_file.h"
+#include "core/io/trace_writer.h"
 #include "core/model.h"
 #include "core/state.h"
 #include "core/stability.h"
@@ -121,7 +121,7 @@ int main(int argc, char *argv[])
     const core::Energies start = core::energies(*model, state);
 
     // the trace starts with step 0
-    app::TraceWriter trace;
+    io::TraceWriter trace;
     const bool tracing = !options.tracePath.isEmpty();
     if (tracing) {
         if (const QString failure = trace.open(options.tracePath); !failure.isEmpty())

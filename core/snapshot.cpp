@@ -11,12 +11,15 @@ std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &st
     // particles
     const int n = model.particleCount();
     snapshot->positions.resize(3 * static_cast<std::size_t>(n));
+    snapshot->velocities.resize(3 * static_cast<std::size_t>(n));
     snapshot->radii.resize(static_cast<std::size_t>(n));
     snapshot->pinned.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
         const auto at = static_cast<std::size_t>(i);
-        for (int axis = 0; axis < 3; ++axis)
+        for (int axis = 0; axis < 3; ++axis) {
             snapshot->positions[3 * at + static_cast<std::size_t>(axis)] = static_cast<float>(state.position(axis, i));
+            snapshot->velocities[3 * at + static_cast<std::size_t>(axis)] = static_cast<float>(state.velocity(axis, i));
+        }
         snapshot->radii[at] = static_cast<float>(model.radius[i]);
         snapshot->pinned[at] = model.isPinned(i) ? 1 : 0;
     }

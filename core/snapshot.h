@@ -19,6 +19,7 @@ struct Snapshot {
     double time = 0.0;       // s
 
     std::vector<float> positions;  // xyz per particle, m
+    std::vector<float> velocities; // xyz per particle, m/s
     std::vector<float> radii;      // per particle, m
     std::vector<std::uint8_t> pinned;  // 1 per pinned particle
     std::vector<float> springEnds;     // xyz of end a, then xyz of end b, per spring

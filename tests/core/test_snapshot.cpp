@@ -1,4 +1,4 @@
-// Snapshots: floats of the state, strains, pins, energies, step id.
+// Snapshots: floats of the state (positions and velocities), strains, pins, energies, step id.
 #include "core/snapshot.h"
 #include "core/step.h"
 #include "scene_builder.h"
@@ -25,6 +25,9 @@ void TestSnapshot::packsTheState()
     QCOMPARE(snap->springCount(), 1);
     QCOMPARE(snap->positions[3], float(sim.state.position(0, 1)));
     QCOMPARE(snap->positions[5], float(sim.state.position(2, 1)));
+    QCOMPARE(snap->velocities.size(), snap->positions.size());
+    QCOMPARE(snap->velocities[3], float(sim.state.velocity(0, 1)));
+    QCOMPARE(snap->velocities[4], float(sim.state.velocity(1, 1)));
     QCOMPARE(snap->radii[1], 0.5f);
     QCOMPARE(snap->pinned[0], std::uint8_t(1));
     QCOMPARE(snap->pinned[1], std::uint8_t(0));
