@@ -1,15 +1,17 @@
 // springlab-sim: runs a scene with no window (issue 2, docs/scene-format.md).
 //   springlab-sim SCENE.json [--duration SECONDS | --steps N] [--time-step H] [--substeps S]
-//                 [--integrator NAME] [--tolerance TOL] [--output FINAL.json] [--trace TRACE.csv [--every K]] [--quiet]
+//                 [--integrator NAME] [--tolerance TOL] [--output FINAL.json] [--trace TRACE.csv [--every K]]
+//                 [--render DIR [--fps F] [--size WxH]] [--quiet]
 //        springlab-sim --replay SESSION.json [--output FINAL.json] [--quiet]
-// Exit code 0 done, 2 bad file or argument, 3 the simulation blew up, 4 a replay did not end with
-// the recorded state.
+// Exit code 0 done, 2 bad file or argument (or --render with no display), 3 the simulation blew up,
+// 4 a replay did not end with the recorded state.
 
 #include "sim_options.h"
-#include "trace_writer.h"
+#include "sim_render.h"
 
 #include "core/diagnostics.h"
 #include "core/io/scene_file.h"
+#include "core/io/trace_writer.h"
 #include "core/model.h"
 #include "core/state.h"
 #include "core/stability.h"
@@ -22,6 +24,7 @@
 #include <QTextStream>
 
 #include <algorithm>
+#include <memory>
 
 using namespace Qt::Literals::StringLiterals;
 
@@ -84,7 +87,12 @@ int replaySession(const app::SimOptions &options)
 
 int main(int argc, char *argv[])
 {
-    QCoreApplication application(argc, argv);
+    // only --render draws, and so needs a QApplication and a display (app/sim_render.h)
+    QString noDisplay;
+    const std::unique_ptr<QCoreApplication> application =
+        app::makeApplication(argc, argv, app::asksToRender(argc, argv), &noDisplay);
+    if (!application)
+        return failWith(noDisplay);
     QCoreApplication::setApplicationName(u"springlab-sim"_s);
     QCoreApplication::setApplicationVersion(QStringLiteral(SPRINGLAB_VERSION));
 
@@ -121,7 +129,7 @@ int main(int argc, char *argv[])
     const core::Energies start = core::energies(*model, state);
 
     // the trace starts with step 0
-    app::TraceWriter trace;
+    io::TraceWriter trace;
     const bool tracing = !options.tracePath.isEmpty();
     if (tracing) {
         if (const QString failure = trace.open(options.tracePath); !failure.isEmpty())
@@ -129,15 +137,29 @@ int main(int argc, char *argv[])
         trace.writeRows(state);
     }
 
-    // the run, in chunks between trace rows (every K steps, not the last step unless K divides it);
-    // only stepping is timed
+    // the frames start with step 0 too
+    app::FrameRenderer frames;
+    const bool rendering = !options.renderDirectory.isEmpty();
+    if (rendering) {
+        if (const QString failure = frames.open(options.renderDirectory, options.frameSize, options.fps, scene, *steps);
+            !failure.isEmpty())
+            return failWith(failure);
+        if (const QString failure = frames.renderDue(*model, state); !failure.isEmpty())
+            return failWith(failure);
+    }
+
+    // the run, in chunks between trace rows (every K steps, not the last step unless K divides it)
+    // and frames; only stepping is timed
     const core::State initial = state;  // to explain a blow-up, should one happen
     QElapsedTimer timer;
     qint64 nanoseconds = 0;
     bool blewUp = false;
-    const std::uint64_t chunk = tracing ? options.every : std::max<std::uint64_t>(*steps, 1);
     while (state.step < *steps && !blewUp) {
-        const std::uint64_t until = std::min(*steps, state.step + chunk);
+        std::uint64_t until = *steps;
+        if (tracing)
+            until = std::min(until, (state.step / options.every + 1) * options.every);
+        if (rendering)
+            until = std::min(until, frames.nextStep(*steps));
         timer.start();
         while (state.step < until)
             if (!core::step(*model, state)) {
@@ -147,6 +169,9 @@ int main(int argc, char *argv[])
         nanoseconds += timer.nsecsElapsed();
         if (tracing && !blewUp && state.step % options.every == 0)
             trace.writeRows(state);
+        if (rendering && !blewUp)
+            if (const QString failure = frames.renderDue(*model, state); !failure.isEmpty())
+                return failWith(failure);
     }
     if (tracing)
         if (const QString failure = trace.close(); !failure.isEmpty())
@@ -189,6 +214,13 @@ int main(int argc, char *argv[])
             << '\n';
         if (tracing)
             out << "  trace      " << options.tracePath << ", " << trace.rowCount() << " rows\n";
+        if (rendering)
+            out << "  frames     " << options.renderDirectory << ", " << frames.framesWritten() << " of "
+                << frames.frameCount() << QString::asprintf(" at %.6g frames/s, %dx%d px", options.fps,
+                                                            options.frameSize.width(), options.frameSize.height())
+                << (frames.framesRemoved() > 0 ? u", replacing %1 of an earlier render"_s.arg(frames.framesRemoved())
+                                               : QString())
+                << '\n';
         if (!options.outputPath.isEmpty() && !blewUp)
             out << "  output     " << options.outputPath << '\n';
     }

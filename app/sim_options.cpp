@@ -5,6 +5,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QRegularExpression>
 
 #include <cmath>
 
@@ -16,6 +17,9 @@ namespace {
 
 // more steps than this cannot be counted exactly in a double, nor run in a lifetime
 constexpr double kMaxSteps = 9007199254740992.0;  // 2^53
+// --render's limits: frames per simulated second, and pixels a side (a driver may allow fewer)
+constexpr double kMaxFps = 1000.0;
+constexpr int kMaxFrameSide = 16384;
 
 QString knownIntegrators()
 {
@@ -68,6 +72,45 @@ bool checkAgainstTable(const QString &name, core::Parameter parameter, double va
     return true;
 }
 
+// --render DIR with its --fps and --size; false with error set at the first bad one
+bool readRenderOptions(const QCommandLineParser &parser, SimOptions &options, QString &error)
+{
+    options.renderDirectory = parser.value(u"render"_s);
+    if (parser.isSet(u"render"_s) && options.renderDirectory.isEmpty()) {
+        error = optionError(u"render"_s, u"needs a folder for the frames"_s);
+        return false;
+    }
+    for (const QString &name : {u"fps"_s, u"size"_s})
+        if (parser.isSet(name) && !parser.isSet(u"render"_s)) {
+            error = u"--%1 only makes sense with --render"_s.arg(name);
+            return false;
+        }
+    if (parser.isSet(u"fps"_s)) {
+        const auto fps = readNumber(u"fps"_s, parser.value(u"fps"_s), u"a number of frames per second"_s, error);
+        if (!fps)
+            return false;
+        if (!(*fps > 0.0 && *fps <= kMaxFps)) {
+            error = optionError(u"fps"_s, u"must be above 0 and at most %1 frames per second (got %2)"_s.arg(kMaxFps)
+                                              .arg(parser.value(u"fps"_s)));
+            return false;
+        }
+        options.fps = *fps;
+    }
+    if (parser.isSet(u"size"_s)) {
+        static const QRegularExpression pattern(u"^\\s*(\\d{1,9})\\s*[xX×]\\s*(\\d{1,9})\\s*$"_s);
+        const QRegularExpressionMatch match = pattern.match(parser.value(u"size"_s));
+        const int width = match.hasMatch() ? match.captured(1).toInt() : 0;
+        const int height = match.hasMatch() ? match.captured(2).toInt() : 0;
+        if (width < 1 || height < 1 || width > kMaxFrameSide || height > kMaxFrameSide) {
+            error = optionError(u"size"_s, u"expected WIDTHxHEIGHT in pixels, each from 1 to %1, got \""_s
+                                               .arg(kMaxFrameSide) + parser.value(u"size"_s) + u'"');
+            return false;
+        }
+        options.frameSize = QSize(width, height);
+    }
+    return true;
+}
+
 // every option's value, one after the other; false with error set at the first bad one
 bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString &error)
 {
@@ -86,7 +129,7 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
     options.replay = parser.isSet(u"replay"_s);
     if (options.replay) {
         for (const QString &name : {u"duration"_s, u"steps"_s, u"time-step"_s, u"substeps"_s, u"integrator"_s,
-                                   u"tolerance"_s, u"trace"_s, u"every"_s})
+                                   u"tolerance"_s, u"trace"_s, u"every"_s, u"render"_s})
             if (parser.isSet(name)) {
                 error = u"--replay runs the recording as it was recorded: --%1 cannot change it"_s.arg(name);
                 return false;
@@ -168,7 +211,7 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
         options.every = *every;
     }
     options.quiet = parser.isSet(u"quiet"_s);
-    return true;
+    return readRenderOptions(parser, options, error);
 }
 
 }  // namespace
@@ -180,7 +223,8 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
     parser.setApplicationDescription(
         u"Runs a Springlab scene with no window and prints a summary.\n"
         "Without --steps or --duration it runs %1 steps. Command-line settings override the file's.\n"
-        "Exit code: 0 done, 2 bad file or argument, 3 the simulation blew up."_s.arg(kDefaultSteps));
+        "Exit code: 0 done, 2 bad file or argument (or --render with no display), 3 the simulation blew up."_s
+            .arg(kDefaultSteps));
     parser.addPositionalArgument(u"SCENE.json"_s, u"The scene file to run."_s);
     const QCommandLineOption help(QStringList{u"h"_s, u"help"_s}, u"Show this help."_s);
     const QCommandLineOption version(u"version"_s, u"Show the version."_s);
@@ -196,6 +240,11 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
         {u"output"_s, u"Write the final state as a scene file, to run on from."_s, u"FINAL.json"_s},
         {u"trace"_s, u"Write positions and velocities as CSV: step,time,particle,x,y,z,vx,vy,vz."_s, u"TRACE.csv"_s},
         {u"every"_s, u"With --trace: one set of rows every K steps (default 1), step 0 included."_s, u"K"_s},
+        {u"render"_s, u"Draw the run as PNG frames, DIR/frame-00000.png on, with the editor's 3D view framed on "
+                      "the scene (frame k shows the first step at or after k / F s). Needs an X display: run it "
+                      "under xvfb-run -a where there is none."_s, u"DIR"_s},
+        {u"fps"_s, u"With --render: frames per simulated second (default 30)."_s, u"F"_s},
+        {u"size"_s, u"With --render: the frames' size in pixels (default 1280x720)."_s, u"WxH"_s},
         {u"quiet"_s, u"Print nothing but errors."_s},
         {u"replay"_s, u"The file is a session recorded in the editor (Simulation > Record Session): replay it "
                       "and check that it ends with the recorded state, bit for bit (exit 4 if not)."_s},

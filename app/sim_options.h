@@ -6,6 +6,7 @@
 #include "core/integrator.h"
 #include "core/scene.h"
 
+#include <QSize>
 #include <QString>
 #include <QStringList>
 
@@ -28,6 +29,9 @@ struct SimOptions {
     QString outputPath;       // --output FINAL.json; empty: none
     QString tracePath;        // --trace TRACE.csv; empty: none
     std::uint64_t every = 1;  // --every K: a trace row set every K steps
+    QString renderDirectory;      // --render DIR: PNG frames of the run; empty: none
+    double fps = 30.0;            // --fps F: frames per simulated second
+    QSize frameSize{1280, 720};   // --size WxH, px
     bool quiet = false;
     bool replay = false;  // --replay: scenePath is a session recording (ui/session_file.h)
 };

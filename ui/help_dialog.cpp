@@ -67,6 +67,21 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
                 "preview and the counts follow every value, wrong options are named and not generated, and the "
                 "result, its middle where you say, is one undo step and becomes the selection"));
 
+    // export: the image is in the keys above (Shift+F2); the rest has no key
+    addSection(tr("Export"));
+    addEntry(tr("File › Export › Image Sequence"),
+             tr("Run on from the current state and write frame-00000.png, ... at a frame rate, for a duration, at "
+                "any size; frame k shows the first step at or after k / rate. A progress dialog can cancel it"));
+    addEntry(tr("MP4 (with the sequence)"),
+             tr("Where ffmpeg is installed, the frames also become an MP4 in their folder (H.264, or MPEG-4 "
+                "without libx264); the dialog says so when ffmpeg is not found"));
+    addEntry(tr("File › Export › Trace CSV"),
+             tr("Run on from the current state and write step,time,particle,x,y,z,vx,vy,vz every K steps, as "
+                "springlab-sim --trace does"));
+    addEntry(tr("springlab-sim SCENE.json --render DIR"),
+             tr("The same frames with no window, for batch work (--fps, --size WxH, --duration); it needs an X "
+                "display, so run it under xvfb-run -a on a machine without one"));
+
     // accuracy: the integrator, and the figures that say how accurate the run is
     addSection(tr("Accuracy"));
     addEntry(tr("Parameters › Integrator"),

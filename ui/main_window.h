@@ -4,8 +4,10 @@
 // parameters dock, the plots dock and the status bar. A document change becomes a scene edit for
 // the worker; a frame from the worker goes to the viewport, the plots and the status bar. What
 // touches files (New, Open, Save, Revert, recent files, drops, autosave and recovery) is in
-// main_window_files.cpp.
+// main_window_files.cpp, and File › Export (an image of any size, an image sequence and MP4 of the
+// run, a trace) in main_window_export.cpp.
 
+#include "export_settings.h"
 #include "steering.h"
 
 #include <QMainWindow>
@@ -14,6 +16,7 @@
 #include <QStringList>
 #include <cstdint>
 #include <functional>
+#include <optional>
 
 class QAction;
 class QActionGroup;
@@ -21,6 +24,7 @@ class QLabel;
 class QMenu;
 class QDockWidget;
 class QMimeData;
+class QProgressDialog;
 class QToolBar;
 class QSettings;
 class QUndoView;
@@ -35,6 +39,7 @@ namespace ui {
 class AccuracyDialog;
 class EditTools;
 class GenerateDialog;
+class ExportRun;
 class InspectorPanel;
 class Autosave;
 class ParametersPanel;
@@ -46,6 +51,7 @@ class SceneDocument;
 class SimulationController;
 struct SimulationFrame;
 class TimelineBar;
+class VideoEncoder;
 class Viewport;
 enum class SceneChange;
 enum class PlotExport;
@@ -68,8 +74,8 @@ public:
         std::function<QMessageBox::StandardButton(QMessageBox::Icon icon, const QString &title, const QString &text,
                                                   QMessageBox::StandardButtons buttons,
                                                   QMessageBox::StandardButton defaultButton)>;
-    enum class FileDialogMode { Open, Save };
-    // returns the chosen path, or an empty string when cancelled
+    enum class FileDialogMode { Open, Save, Folder };
+    // returns the chosen path (a folder's for Folder), or an empty string when cancelled
     using FileDialogFunction =
         std::function<QString(FileDialogMode mode, const QString &title, const QString &suggestedPath)>;
     void setMessageBoxFunction(MessageBoxFunction function);
@@ -109,6 +115,18 @@ public:
     QString screenshotDirectory() const { return m_screenshotDirectory; }
     void setScreenshotDirectory(const QString &directory);
 
+    // File › Export (main_window_export.cpp). The view drawn at any size into a PNG; false and the
+    // reason if not written
+    bool exportImage(const ImageExport &settings, QString *error = nullptr);
+    // an image sequence of the run from its current state, then an MP4 of it if asked for and
+    // ffmpeg is installed; a trace of the run as CSV. Both run on, with a progress dialog that
+    // can cancel them, and end with exportFinished; false (and error) if they cannot start
+    bool startSequenceExport(const SequenceExport &settings, QString *error = nullptr);
+    bool startTraceExport(const TraceExport &settings, QString *error = nullptr);
+    bool isExporting() const { return m_export != nullptr || m_encoder != nullptr; }
+    // cancels what is being exported, as the progress dialog's Cancel does
+    void cancelExport();
+
     RecentFiles *recentFiles() const { return m_recentFiles; }
     Autosave *autosave() const { return m_autosave; }
     QUndoView *undoView() const { return m_undoView; }
@@ -142,6 +160,11 @@ public:
     QString statusWarning() const;
     QString statusError() const;
     QString statusDrift() const;
+
+signals:
+    // File › Export's sequence or trace ended: ok when everything asked for was written; the
+    // message says what was written, or why not (cancelled, failed, ffmpeg not found)
+    void exportFinished(bool ok, const QString &message);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -184,7 +207,7 @@ private:
     QMessageBox::StandardButton ask(QMessageBox::Icon icon, const QString &title, const QString &text,
                                     QMessageBox::StandardButtons buttons = QMessageBox::Ok,
                                     QMessageBox::StandardButton defaultButton = QMessageBox::NoButton);
-    // filter: the dialog's file types (empty: scenes)
+    // filter: the file dialog's, by default the scene files
     QString chooseFile(FileDialogMode mode, const QString &title, const QString &suggestedPath,
                        const QString &filter = QString());
     void openRecent(const QString &path);
@@ -195,6 +218,17 @@ private:
     void applyCapturedState(const CapturedState &state);
     void saveSessionRecording(const SessionRecording &recording);
     void exportPlot(PlotExport format);
+
+    // export (main_window_export.cpp)
+    void createExportMenu(QMenu *file);
+    void showExportDialog(ExportKind kind);
+    // what an export wrote, told once it ends: frames is how many export steps were handled;
+    // error is set if writing failed at the end
+    using ExportSummary = std::function<QString(int frames, QString *error)>;
+    bool beginExport(ExportRun *run, const QString &label, ExportSummary summary,
+                     std::optional<SequenceExport> video = std::nullopt);
+    void encodeVideo(const SequenceExport &settings, const QString &written);
+    void finishExport(bool ok, const QString &message);
 
     void chooseScreenshotDirectory();
     void showHelp();
@@ -230,6 +264,9 @@ private:
     GenerateDialog *m_generate = nullptr;
     std::uint64_t m_accuracyRequest = 0;  // the plan awaited from the worker; 0: none
     QString m_screenshotDirectory;
+    ExportRun *m_export = nullptr;               // the sequence or trace being exported
+    VideoEncoder *m_encoder = nullptr;           // ffmpeg making the MP4 after a sequence
+    QProgressDialog *m_exportProgress = nullptr; // while either runs
     Steering m_steering;
     std::uint64_t m_frameAllAfter = 0;  // frame the view once the worker has applied this edit
 

@@ -136,6 +136,7 @@ void MainWindow::createFileMenu()
     screenshot->setShortcut(Qt::Key_F2);
     screenshot->setStatusTip(tr("Save the 3D view as a PNG in the screenshot folder"));
     file->addAction(tr("Screenshot &Folder..."), this, &MainWindow::chooseScreenshotDirectory);
+    createExportMenu(file);
     file->addSeparator();
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setObjectName(QStringLiteral("actionQuit"));
@@ -176,9 +177,16 @@ QString MainWindow::chooseFile(FileDialogMode mode, const QString &title, const 
 {
     if (m_fileDialog)
         return m_fileDialog(mode, title, suggestedPath);
-    const QString types = filter.isEmpty() ? tr("Springlab scenes (*.json)") : filter;
-    return mode == FileDialogMode::Open ? QFileDialog::getOpenFileName(this, title, suggestedPath, types)
-                                        : QFileDialog::getSaveFileName(this, title, suggestedPath, types);
+    const QString files = filter.isEmpty() ? tr("Springlab scenes (*.json)") : filter;
+    switch (mode) {
+    case FileDialogMode::Open:
+        return QFileDialog::getOpenFileName(this, title, suggestedPath, files);
+    case FileDialogMode::Save:
+        return QFileDialog::getSaveFileName(this, title, suggestedPath, files);
+    case FileDialogMode::Folder:
+        return QFileDialog::getExistingDirectory(this, title, suggestedPath);
+    }
+    return {};
 }
 
 core::SceneDesc MainWindow::newScene()

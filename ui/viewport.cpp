@@ -6,6 +6,7 @@
 #include <QMouseEvent>
 #include <QOpenGLBuffer>
 #include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
 #include <QRegularExpression>
@@ -288,6 +289,13 @@ void Viewport::initializeGL()
               reinterpret_cast<const char *>(glGetString(GL_RENDERER)));
     }
 
+    // the largest image renderImage() can make: a renderbuffer, a texture and a viewport that big
+    GLint renderbuffer = 0, texture = 0, viewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    m_maxImageSide = std::min({renderbuffer, texture, viewport[0], viewport[1]});
+
     // the three programs: impostor spheres, mesh spheres, flat lines and triangles
     auto gpu = std::make_unique<Gpu>();
     const bool built =
@@ -469,20 +477,69 @@ void Viewport::paintGL()
 {
     m_frameClock.start();
     m_frameTiming = true;
+    if (m_gpu && m_samples < 0)
+        glGetIntegerv(GL_SAMPLES, &m_samples);
+    drawScene(m_camera, m_samples);
+}
 
+QImage Viewport::renderImage(QSize size, QString *error)
+{
+    auto fail = [error](const QString &reason) {
+        if (error)
+            *error = reason;
+        return QImage();
+    };
+    if (size.width() < 1 || size.height() < 1)
+        return fail(tr("%1 × %2 px is not an image size: both must be at least 1")
+                        .arg(size.width())
+                        .arg(size.height()));
+    if (!m_gpu || !isValid())
+        return fail(tr("the 3D view has no OpenGL context yet, so nothing can be drawn"));
+    if (size.width() > m_maxImageSide || size.height() > m_maxImageSide)
+        return fail(tr("%1 × %2 px is larger than this OpenGL driver can draw: at most %3 px a side")
+                        .arg(size.width())
+                        .arg(size.height())
+                        .arg(m_maxImageSide));
+
+    // a framebuffer of the requested size, with depth and the multisampling the view asks for
+    makeCurrent();
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::Depth);
+    format.setSamples(std::max(this->format().samples(), 0));
+    QImage image;
+    {
+        QOpenGLFramebufferObject framebuffer(size, format);
+        if (framebuffer.isValid() && framebuffer.bind()) {
+            // the same camera, with the aspect ratio of the image
+            Camera camera = m_camera;
+            camera.setViewportSize(size);
+            glViewport(0, 0, size.width(), size.height());
+            drawScene(camera, framebuffer.format().samples());
+            framebuffer.release();
+            image = framebuffer.toImage().convertToFormat(QImage::Format_RGB32);
+        }
+    }
+    doneCurrent();
+    if (image.isNull())
+        return fail(tr("OpenGL could not make a %1 × %2 px framebuffer (out of memory?)")
+                        .arg(size.width())
+                        .arg(size.height()));
+    return image;
+}
+
+void Viewport::drawScene(const Camera &camera, int samples)
+{
     glClearColor(kBackgroundColour[0], kBackgroundColour[1], kBackgroundColour[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!m_gpu)
         return;
     Gpu &gpu = *m_gpu;
-    if (m_samples < 0)
-        glGetIntegerv(GL_SAMPLES, &m_samples);
 
     uploadSnapshot();
     uploadDecorations();
 
-    const QMatrix4x4 view = m_camera.viewMatrix();
-    const QMatrix4x4 projection = m_camera.projectionMatrix();
+    const QMatrix4x4 view = camera.viewMatrix();
+    const QMatrix4x4 projection = camera.projectionMatrix();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
 
@@ -502,7 +559,7 @@ void Viewport::paintGL()
     const int particles = std::min(gpu.particleCount, gpu.styleCount);
     if (particles > 0 && m_drawing == ParticleDrawing::Impostor) {
         // outlines smoothed by alpha to coverage, with the stored alpha kept at one
-        const bool smooth = m_samples > 0;
+        const bool smooth = samples > 0;
         if (smooth) {
             glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
             glEnable(GL_SAMPLE_ALPHA_TO_ONE);

@@ -5,7 +5,8 @@
 // coloured by strain, planes as translucent squares around the scene, a ground grid and the axes.
 // Positions are streamed once per new snapshot; radii, colours and marks are uploaded only when the
 // particles' radii or pins, or the selection, change. GL resources are made in initializeGL and
-// freed when the context goes away, as Qt's hellogl2 example does.
+// freed when the context goes away, as Qt's hellogl2 example does. renderImage() draws the same
+// scene (one drawing function for both) into an offscreen framebuffer of any size, for exports.
 
 #include "camera.h"
 #include "render_data.h"
@@ -14,6 +15,7 @@
 #include "core/snapshot.h"
 
 #include <QElapsedTimer>
+#include <QImage>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLWidget>
 #include <QPoint>
@@ -73,6 +75,14 @@ public:
     int springAt(const QPointF &pixel) const;
     static constexpr float kPickPixels = 6.0f;
 
+    // the current view drawn into an offscreen framebuffer of any size (device pixels), with the
+    // same camera and the image's aspect ratio; a null image, and the reason in error, if there is
+    // no GL context yet, the size is empty or larger than maxImageSide(), or GL fails
+    QImage renderImage(QSize size, QString *error = nullptr);
+    // the largest side renderImage() accepts: the driver's renderbuffer, texture and viewport
+    // limits (0 until GL is initialised)
+    int maxImageSide() const { return m_maxImageSide; }
+
     // how many times the particle style was uploaded, and whether the framebuffer is multisampled
     int styleUploads() const { return m_styleUploads; }
     int samples() const { return m_samples; }
@@ -103,6 +113,8 @@ private:
     enum class Drag { None, Orbit, Pan };
 
     void cleanupGL();
+    // the whole scene as the camera sees it, into the bound framebuffer (paintGL and renderImage)
+    void drawScene(const Camera &camera, int samples);
     void uploadSnapshot();
     void uploadDecorations();
     void updateSceneBounds(const Sphere &bounds);
@@ -123,6 +135,7 @@ private:
     bool m_decorationsChanged = true;
     int m_styleUploads = 0;
     int m_samples = 0;
+    int m_maxImageSide = 0;
     std::vector<float> m_springVertices;  // kept to reuse its memory
 
     // the scene's extent for the grid, the planes and the clip planes

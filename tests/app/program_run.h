@@ -13,13 +13,20 @@ struct ProgramRun {
     QByteArray err;
 };
 
-// program with arguments, under the offscreen platform (the benchmarks draw their plots with
-// QPainter and need no display), waiting at most timeoutMs
-inline ProgramRun runProgram(const QString &program, const QStringList &arguments, int timeoutMs = 600000)
+// this process's environment with the offscreen platform (the benchmarks draw their plots with
+// QPainter and need no display)
+inline QProcessEnvironment offscreenEnvironment()
 {
-    QProcess process;
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    return environment;
+}
+
+// program with arguments, in that environment unless told otherwise, waiting at most timeoutMs
+inline ProgramRun runProgram(const QString &program, const QStringList &arguments, int timeoutMs = 600000,
+                             const QProcessEnvironment &environment = offscreenEnvironment())
+{
+    QProcess process;
     process.setProcessEnvironment(environment);
     process.start(program, arguments);
     ProgramRun run;

@@ -173,6 +173,10 @@ void TestSimCli::exitCodes_data()
                                          << QStringList{u"--every only makes sense with --trace"_s};
     QTest::newRow("every 0") << QStringList{u"@/scene.json"_s, u"--trace"_s, u"@/t.csv"_s, u"--every"_s, u"0"_s} << 2
                              << QStringList{u"--every:"_s};
+    QTest::newRow("fps without render") << QStringList{u"@/scene.json"_s, u"--fps"_s, u"24"_s} << 2
+                                        << QStringList{u"--fps only makes sense with --render"_s};
+    QTest::newRow("size without render") << QStringList{u"@/scene.json"_s, u"--size"_s, u"64x48"_s} << 2
+                                         << QStringList{u"--size only makes sense with --render"_s};
     QTest::newRow("unknown option") << QStringList{u"@/scene.json"_s, u"--fast"_s} << 2 << QStringList{u"fast"_s};
     QTest::newRow("output folder missing")
         << QStringList{u"@/scene.json"_s, u"--steps"_s, u"2"_s, u"--output"_s, u"@/no/such/out.json"_s} << 2

@@ -1,6 +1,7 @@
 // The viewport on screen, with real events: what grabFramebuffer() shows at the pixels the camera
 // says a particle, a plane or a spring lands on; orbit, pan and zoom by mouse and wheel; frame all
-// by key; the style uploaded only when it changes; and drawing again after the context is replaced.
+// by key; the style uploaded only when it changes; drawing again after the context is replaced; and
+// the same view drawn offscreen at any size, with the camera scaled to it.
 
 #include "ui/viewport.h"
 
@@ -104,6 +105,9 @@ private slots:
     void initialViewFramesTheSceneAtItsFinalSize();
     void reportsFrameTimes();
     void drawsAgainInANewContext();
+    void rendersOffscreenAtAnySize_data();
+    void rendersOffscreenAtAnySize();
+    void refusesImagesLargerThanTheDriverDraws();
 
 private:
     QPointF projected(int particle) const;
@@ -516,6 +520,60 @@ void TestViewport::drawsAgainInANewContext()
 
     // hand it back before the window goes
     viewport->setParent(nullptr);
+}
+
+void TestViewport::rendersOffscreenAtAnySize_data()
+{
+    // twice the widget (480 × 360), a wide size of another aspect ratio, and odd sides
+    QTest::addColumn<QSize>("size");
+    QTest::newRow("2x") << kViewportSize * 2;
+    QTest::newRow("1000x300") << QSize(1000, 300);
+    QTest::newRow("odd 749x563") << QSize(749, 563);
+}
+
+void TestViewport::rendersOffscreenAtAnySize()
+{
+    QFETCH(QSize, size);
+    const QImage onScreen = grab();
+    QString error;
+    const QImage image = m_viewport->renderImage(size, &error);
+    QVERIFY2(!image.isNull(), qPrintable(error));
+    QCOMPARE(image.size(), size);
+
+    // the same camera with the image's aspect ratio: the vertical field of view is kept, so a
+    // pixel of the widget lands at its offset from the centre scaled by the heights' ratio
+    const QSizeF widget(m_viewport->size());
+    const double scale = size.height() / widget.height();
+    auto scaled = [&](QPointF pixel) {
+        return QPointF(size.width() / 2.0 + (pixel.x() - widget.width() / 2.0) * scale,
+                       size.height() / 2.0 + (pixel.y() - widget.height() / 2.0) * scale);
+    };
+    auto colourAtScaled = [&](QPointF pixel) {
+        const QPointF at = scaled(pixel);
+        return image.pixelColor(QPoint(int(at.x()), int(at.y())));
+    };
+    QString why;
+    for (int particle : {0, 2}) {
+        QVERIFY(QRectF(QPointF(0, 0), QSizeF(size)).contains(scaled(projected(particle))));
+        QVERIFY2(sameHue(colourAtScaled(projected(particle)), ui::kFreeColour, &why), qPrintable(why));
+    }
+    QVERIFY2(sameHue(colourAtScaled(projected(1)), ui::kPinnedColour, &why), qPrintable(why));
+    QVERIFY2(isBackground(image.pixelColor(2, 2), &why), qPrintable(why));
+
+    // the view on screen is as it was
+    QCOMPARE(m_viewport->camera().viewportSize(), kViewportSize);
+    QCOMPARE(grab(), onScreen);
+}
+
+void TestViewport::refusesImagesLargerThanTheDriverDraws()
+{
+    const int most = m_viewport->maxImageSide();
+    QCOMPARE_GE(most, 1024);  // OpenGL 3.3 promises 1024 a side at least (Mesa gives 16384)
+    QString error;
+    QVERIFY(m_viewport->renderImage(QSize(most + 1, 10), &error).isNull());
+    QVERIFY2(error.contains(QStringLiteral("at most %1 px").arg(most)), qPrintable(error));
+    QVERIFY(m_viewport->renderImage(QSize(0, 10), &error).isNull());
+    QVERIFY2(error.contains(QStringLiteral("at least 1")), qPrintable(error));
 }
 
 QTEST_MAIN(TestViewport)

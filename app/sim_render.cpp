@@ -1,0 +1,113 @@
+#include "sim_render.h"
+
+#include "ui/image_sequence.h"
+#include "ui/viewport.h"
+
+#include "core/snapshot.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QSurfaceFormat>
+
+#include <algorithm>
+#include <cstring>
+
+namespace app {
+
+using namespace Qt::Literals::StringLiterals;
+
+bool asksToRender(int argc, char *argv[])
+{
+    // --render DIR or --render=DIR, before any "--" that ends the options
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--") == 0)
+            return false;
+        if (std::strcmp(argv[i], "--render") == 0 || std::strncmp(argv[i], "--render=", 9) == 0)
+            return true;
+    }
+    return false;
+}
+
+std::unique_ptr<QCoreApplication> makeApplication(int &argc, char *argv[], bool render, QString *error)
+{
+    if (!render)
+        return std::make_unique<QCoreApplication>(argc, argv);
+
+    // Qt's xcb platform: the offscreen one cannot host the view's QOpenGLWidget; and xcb without
+    // a display would abort, so that is checked first
+    if (qEnvironmentVariableIsEmpty("DISPLAY")) {
+        *error = u"--render draws with OpenGL and needs an X display, but DISPLAY is not set; run it under a "
+                 "virtual X server: xvfb-run -a springlab-sim SCENE.json --render DIR"_s;
+        return nullptr;
+    }
+    qputenv("QT_QPA_PLATFORM", "xcb");
+    QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
+    QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    return std::make_unique<QApplication>(argc, argv);
+}
+
+FrameRenderer::FrameRenderer() = default;
+FrameRenderer::~FrameRenderer() = default;
+
+QString FrameRenderer::open(const QString &folder, QSize size, double fps, const core::SceneDesc &scene,
+                            std::uint64_t totalSteps)
+{
+    // the folder, without frames left from an earlier sequence
+    m_folder = folder;
+    m_size = size;
+    if (!QDir().mkpath(folder))
+        return u"--render: cannot create the folder "_s + QDir::toNativeSeparators(folder);
+    m_removed = static_cast<int>(ui::sequenceFramesIn(folder).size());
+    if (const QString failure = ui::removeSequenceFrames(folder); !failure.isEmpty())
+        return u"--render: "_s + failure;
+
+    // frames over the run's simulated time, none past its end
+    const double timeStep = scene.settings.timeStep;
+    const int count = ui::sequenceFrameCount(fps, static_cast<double>(totalSteps) * timeStep);
+    m_steps = ui::sequenceFrameSteps(fps, count, timeStep);
+    for (std::uint64_t &step : m_steps)
+        step = std::min(step, totalSteps);
+
+    // the editor's view, never on screen, at the frames' size so that framing fits them
+    m_viewport = std::make_unique<ui::Viewport>();
+    m_viewport->setAttribute(Qt::WA_DontShowOnScreen);
+    m_viewport->setMinimumSize(1, 1);
+    m_viewport->resize(size);
+    m_viewport->setPlanes(scene.planes);
+    m_viewport->show();
+    if (m_viewport->maxImageSide() == 0)
+        return u"--render: no OpenGL 3.3 on this display (Mesa's llvmpipe under xvfb-run has it)"_s;
+    if (size.width() > m_viewport->maxImageSide() || size.height() > m_viewport->maxImageSide())
+        return u"--size: %1x%2 is larger than this OpenGL driver can draw: at most %3 px a side"_s.arg(size.width())
+            .arg(size.height())
+            .arg(m_viewport->maxImageSide());
+    return {};
+}
+
+std::uint64_t FrameRenderer::nextStep(std::uint64_t totalSteps) const
+{
+    return m_next < frameCount() ? m_steps[static_cast<std::size_t>(m_next)] : totalSteps;
+}
+
+QString FrameRenderer::renderDue(const core::Model &model, const core::State &state)
+{
+    if (m_next >= frameCount() || m_steps[static_cast<std::size_t>(m_next)] != state.step)
+        return {};
+
+    // the first frame frames the view on the particles; later ones keep that camera
+    m_viewport->setSnapshot(core::makeSnapshot(model, state));
+    QString error;
+    const QImage image = m_viewport->renderImage(m_size, &error);
+    if (image.isNull())
+        return u"--render: frame %1: "_s.arg(m_next) + error;
+
+    // every frame due at this step (several when a step is longer than a frame)
+    for (; m_next < frameCount() && m_steps[static_cast<std::size_t>(m_next)] == state.step; ++m_next) {
+        const QString path = ui::sequenceFramePath(m_folder, m_next);
+        if (!image.save(path, "PNG"))
+            return u"--render: cannot write "_s + QDir::toNativeSeparators(path);
+    }
+    return {};
+}
+
+}  // namespace app

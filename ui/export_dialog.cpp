@@ -1,0 +1,246 @@
+#include "export_dialog.h"
+
+#include "image_sequence.h"
+#include "video_encoder.h"
+
+#include <QCheckBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace ui {
+
+namespace {
+
+// the boxes' ranges
+constexpr double kMaxFps = 1000.0;
+constexpr double kMaxDuration = 1.0e6;  // s
+constexpr int kMaxEvery = 1000000000;
+
+QSpinBox *sideBox(const char *name, QWidget *parent)
+{
+    auto *box = new QSpinBox(parent);
+    box->setObjectName(QString::fromLatin1(name));
+    box->setRange(1, 16384);
+    box->setSuffix(QStringLiteral(" px"));
+    return box;
+}
+
+QDoubleSpinBox *numberBox(const char *name, double minimum, double maximum, double value, const QString &suffix,
+                          QWidget *parent)
+{
+    auto *box = new QDoubleSpinBox(parent);
+    box->setObjectName(QString::fromLatin1(name));
+    box->setDecimals(3);
+    box->setRange(minimum, maximum);
+    box->setValue(value);
+    box->setSuffix(suffix);
+    return box;
+}
+
+}  // namespace
+
+ExportDialog::ExportDialog(Kind kind, BrowseFunction browse, QWidget *parent)
+    : QDialog(parent), m_kind(kind), m_browse(std::move(browse)), m_path(new QLineEdit(this)),
+      m_summary(new QLabel(this)),
+      m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this))
+{
+    setObjectName(QStringLiteral("exportDialog"));
+    const SequenceExport defaults;
+    auto *form = new QFormLayout;
+
+    // how long, and how often: a sequence's frame rate, a trace's every K steps
+    if (kind == Kind::Sequence) {
+        setWindowTitle(tr("Export Image Sequence"));
+        m_fps = numberBox("exportFps", 0.001, kMaxFps, defaults.fps, tr(" frames/s"), this);
+        m_fps->setToolTip(tr("Frames per simulated second; frame k shows the first step at or after k / rate"));
+        form->addRow(tr("Frame rate"), m_fps);
+    }
+    if (kind == Kind::Sequence || kind == Kind::Trace) {
+        m_duration = numberBox("exportDuration", 0.0, kMaxDuration,
+                               kind == Kind::Trace ? TraceExport{}.duration : defaults.duration, tr(" s"), this);
+        m_duration->setToolTip(tr("Simulated time to run from the current state"));
+        form->addRow(tr("Duration"), m_duration);
+    }
+    if (kind == Kind::Trace) {
+        setWindowTitle(tr("Export Trace CSV"));
+        m_every = new QSpinBox(this);
+        m_every->setObjectName(QStringLiteral("exportEvery"));
+        m_every->setRange(1, kMaxEvery);
+        m_every->setToolTip(tr("One set of rows every K steps, the current step first"));
+        form->addRow(tr("Rows every"), m_every);
+        m_every->setSuffix(tr(" steps"));
+    }
+
+    // the picture's size, for an image and a sequence
+    if (kind != Kind::Trace) {
+        if (kind == Kind::Image)
+            setWindowTitle(tr("Export Image"));
+        m_width = sideBox("exportWidth", this);
+        m_height = sideBox("exportHeight", this);
+        auto *size = new QHBoxLayout;
+        size->addWidget(m_width);
+        size->addWidget(new QLabel(QStringLiteral("×"), this));
+        size->addWidget(m_height);
+        form->addRow(tr("Size"), size);
+    }
+
+    // where: a file, or a folder for the frames
+    m_path->setObjectName(QStringLiteral("exportPath"));
+    auto *browseButton = new QPushButton(tr("&Browse..."), this);
+    browseButton->setObjectName(QStringLiteral("exportBrowse"));
+    connect(browseButton, &QPushButton::clicked, this, &ExportDialog::browse);
+    auto *where = new QHBoxLayout;
+    where->addWidget(m_path, 1);
+    where->addWidget(browseButton);
+    form->addRow(kind == Kind::Sequence ? tr("Folder") : tr("File"), where);
+
+    // the MP4, offered where ffmpeg is installed
+    if (kind == Kind::Sequence) {
+        m_video = new QCheckBox(tr("Also make an &MP4 from the frames (ffmpeg)"), this);
+        m_video->setObjectName(QStringLiteral("exportVideo"));
+        m_ffmpegNote = new QLabel(this);
+        m_ffmpegNote->setObjectName(QStringLiteral("exportFfmpegNote"));
+        m_ffmpegNote->setWordWrap(true);
+        form->addRow(QString(), m_video);
+        form->addRow(QString(), m_ffmpegNote);
+        setFfmpegFound(false);
+    }
+
+    // what will be written; OK only once there is somewhere to write it
+    m_summary->setObjectName(QStringLiteral("exportSummary"));
+    m_summary->setWordWrap(true);
+    auto *ok = m_buttons->button(QDialogButtonBox::Ok);
+    ok->setText(tr("&Export"));
+    connect(m_buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(m_path, &QLineEdit::textChanged, this, &ExportDialog::updateSummary);
+    for (QDoubleSpinBox *box : {m_fps, m_duration})
+        if (box)
+            connect(box, &QDoubleSpinBox::valueChanged, this, &ExportDialog::updateSummary);
+    for (QSpinBox *box : {m_every, m_width, m_height})
+        if (box)
+            connect(box, &QSpinBox::valueChanged, this, &ExportDialog::updateSummary);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(m_summary);
+    layout->addWidget(m_buttons);
+    updateSummary();
+}
+
+void ExportDialog::setPath(const QString &path)
+{
+    m_path->setText(path);
+}
+
+void ExportDialog::setImageSize(QSize size)
+{
+    if (m_width) {
+        m_width->setValue(size.width());
+        m_height->setValue(size.height());
+    }
+}
+
+void ExportDialog::setMaximumSide(int side)
+{
+    for (QSpinBox *box : {m_width, m_height})
+        if (box && side > 0) {
+            box->setMaximum(side);
+            box->setToolTip(tr("At most %1 px, the largest this OpenGL driver draws").arg(side));
+        }
+}
+
+void ExportDialog::setFfmpegFound(bool found)
+{
+    if (!m_video)
+        return;
+    m_video->setEnabled(found);
+    m_video->setChecked(found);
+    m_ffmpegNote->setText(found ? tr("The MP4 goes into the folder, named after it.")
+                                : VideoEncoder::missingText());
+}
+
+void ExportDialog::setTimeStep(double timeStep)
+{
+    m_timeStep = timeStep;
+    updateSummary();
+}
+
+ImageExport ExportDialog::image() const
+{
+    return {m_path->text().trimmed(), m_width ? QSize(m_width->value(), m_height->value()) : QSize()};
+}
+
+SequenceExport ExportDialog::sequence() const
+{
+    SequenceExport settings;
+    settings.folder = m_path->text().trimmed();
+    if (m_fps) {
+        settings.fps = m_fps->value();
+        settings.duration = m_duration->value();
+        settings.size = QSize(m_width->value(), m_height->value());
+        settings.video = m_video->isEnabled() && m_video->isChecked();
+    }
+    return settings;
+}
+
+TraceExport ExportDialog::trace() const
+{
+    TraceExport settings;
+    settings.path = m_path->text().trimmed();
+    if (m_every) {
+        settings.duration = m_duration->value();
+        settings.every = m_every->value();
+    }
+    return settings;
+}
+
+void ExportDialog::browse()
+{
+    if (!m_browse)
+        return;
+    const QString chosen = m_browse(m_path->text().trimmed());
+    if (!chosen.isEmpty())
+        m_path->setText(chosen);
+}
+
+void ExportDialog::updateSummary()
+{
+    m_buttons->button(QDialogButtonBox::Ok)->setEnabled(!m_path->text().trimmed().isEmpty());
+    switch (m_kind) {
+    case Kind::Image:
+        m_summary->setText(tr("The 3D view as it is, drawn at %1 × %2 px into a PNG.")
+                               .arg(m_width->value())
+                               .arg(m_height->value()));
+        break;
+    case Kind::Sequence: {
+        const int frames = sequenceFrameCount(m_fps->value(), m_duration->value());
+        m_summary->setText(tr("%1 frames (frame-00000.png on), run from the current state; frame k shows the first "
+                              "step at or after k / %2 s. Cancel stops after the frame being written.")
+                               .arg(frames)
+                               .arg(m_fps->value(), 0, 'g', 6));
+        break;
+    }
+    case Kind::Trace: {
+        const QString steps = m_timeStep > 0.0
+                                  ? tr("%1 steps").arg(std::llround(m_duration->value() / m_timeStep))
+                                  : tr("the steps");
+        m_summary->setText(tr("step,time,particle,x,y,z,vx,vy,vz, as springlab-sim --trace writes it, for %1 "
+                              "from the current state, every %2 steps (floats, as the view has them).")
+                               .arg(steps)
+                               .arg(m_every->value()));
+        break;
+    }
+    }
+}
+
+}  // namespace ui

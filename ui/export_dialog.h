@@ -1,0 +1,65 @@
+#pragma once
+// ExportDialog: File › Export's small dialog, for an image (width, height, file), an image sequence
+// (frame rate, duration, width, height, folder, and an MP4 where ffmpeg is installed, else a
+// clear note that it is not) or a trace (duration, every K steps, file). Browse asks the window
+// for a path, through the same hook as every file dialog, so tests answer it without a modal dialog.
+
+#include "export_settings.h"
+
+#include <QDialog>
+
+#include <functional>
+
+class QCheckBox;
+class QDialogButtonBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+
+namespace ui {
+
+class ExportDialog : public QDialog {
+    Q_OBJECT
+
+public:
+    using Kind = ExportKind;
+    // asked for a path when Browse is clicked, with the one typed so far; empty: cancelled
+    using BrowseFunction = std::function<QString(const QString &current)>;
+
+    ExportDialog(Kind kind, BrowseFunction browse, QWidget *parent = nullptr);
+
+    Kind kind() const { return m_kind; }
+    void setPath(const QString &path);
+    void setImageSize(QSize size);
+    // the largest side the view can draw (Viewport::maxImageSide); the size boxes stop there
+    void setMaximumSide(int side);
+    // whether the MP4 can be offered; if not, the dialog says that ffmpeg is not installed
+    void setFfmpegFound(bool found);
+    // s: the scene's time step, for the summary of what will be written
+    void setTimeStep(double timeStep);
+
+    ImageExport image() const;
+    SequenceExport sequence() const;
+    TraceExport trace() const;
+
+private:
+    void browse();
+    void updateSummary();
+
+    Kind m_kind;
+    BrowseFunction m_browse;
+    double m_timeStep = 0.0;
+    QSpinBox *m_width = nullptr;
+    QSpinBox *m_height = nullptr;
+    QDoubleSpinBox *m_fps = nullptr;
+    QDoubleSpinBox *m_duration = nullptr;
+    QSpinBox *m_every = nullptr;
+    QLineEdit *m_path = nullptr;
+    QCheckBox *m_video = nullptr;
+    QLabel *m_ffmpegNote = nullptr;
+    QLabel *m_summary = nullptr;
+    QDialogButtonBox *m_buttons = nullptr;
+};
+
+}  // namespace ui
