@@ -30,7 +30,8 @@ case "${1:-}" in
     exec build/release/app/springlab-sim "${@:-resources/scenes/springs.json}"
     ;;
   test)
-    install_missing "${packages[@]}"
+    # ffmpeg too, so that the MP4 export is tested rather than skipped
+    install_missing "${packages[@]}" ffmpeg
     build ci
     ctest --preset ci
     # the unit tests again under AddressSanitizer and UndefinedBehaviorSanitizer (leaks included)
