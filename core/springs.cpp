@@ -6,8 +6,9 @@
 #include <cstdint>
 
 // target clones where the compiler and CPU family support them (GCC on x86-64); elsewhere one
-// portable version
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+// portable version. Not under ThreadSanitizer: the clones' resolver runs while the program is
+// being loaded, before the sanitizer's runtime is up, and its instrumented code crashes there
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_THREAD__)
 #define SPRINGLAB_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define SPRINGLAB_SIMD_CLONES
