@@ -35,6 +35,8 @@
 #include <QTimer>
 #include <QtTest>
 
+#include "help_entries.h"
+
 #include "editor_test_setup.h"
 #include "frame_wait.h"
 #include "tests/io/trace_read.h"
@@ -414,16 +416,9 @@ void TestExport::traceHasARowPerParticleAndExportedStep()
 
 void TestExport::f1ListsTheExports()
 {
-    // the help is modal: read it from inside its own event loop, then close it
-    QStringList entries;
-    QTimer::singleShot(0, this, [&] {
-        if (auto *help = qobject_cast<ui::HelpDialog *>(QApplication::activeModalWidget())) {
-            entries = help->entries();
-            help->reject();
-        }
-    });
-    QTest::keyClick(m_window, Qt::Key_F1);
-    const QString all = entries.join(u'\n');
+    const std::optional<QStringList> entries = test::helpEntries(m_window);
+    QVERIFY(entries);
+    const QString all = entries->join(u'\n');
     QVERIFY2(all.contains(u"Shift+F2\tFile › Export › Image"_s), qPrintable(all));
     for (const QString &entry : {u"File › Export › Image Sequence"_s, u"MP4"_s, u"File › Export › Trace CSV"_s,
                                  u"--render DIR"_s, u"xvfb-run"_s})

@@ -27,6 +27,7 @@
 
 #include "editor_test_setup.h"
 #include "frame_wait.h"
+#include "help_entries.h"
 
 class TestGenerateDialog : public QObject {
     Q_OBJECT
@@ -319,16 +320,9 @@ void TestGenerateDialog::cancelAddsNothing()
 
 void TestGenerateDialog::f1ListsTheGenerators()
 {
-    // the help is modal: read it from inside its own event loop, then close it
-    QStringList entries;
-    QTimer::singleShot(0, this, [&] {
-        if (auto *help = qobject_cast<ui::HelpDialog *>(QApplication::activeModalWidget())) {
-            entries = help->entries();
-            help->reject();
-        }
-    });
-    QTest::keyClick(m_window, Qt::Key_F1);
-    const QString all = entries.join(QLatin1Char('\n'));
+    const std::optional<QStringList> entries = test::helpEntries(m_window);
+    QVERIFY(entries);
+    const QString all = entries->join(QLatin1Char('\n'));
     QVERIFY(all.contains(QStringLiteral("Ctrl+G\tEdit › Generate")));
     QVERIFY(all.contains(QStringLiteral("soft ball")));
 }
