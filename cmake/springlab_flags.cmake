@@ -18,6 +18,18 @@ if(SPRINGLAB_SANITIZE)
   add_link_options(-fsanitize=${SPRINGLAB_SANITIZE})
 endif()
 
+# ThreadSanitizer: every program keeps Mesa's software driver loaded to the end (see the file);
+# executables link it with springlab_sanitizer_support(<target>)
+if(SPRINGLAB_SANITIZE MATCHES "thread")
+  add_library(springlab_keep_gl_driver OBJECT ${PROJECT_SOURCE_DIR}/tests/sanitizers/keep_gl_driver_loaded.cpp)
+  target_link_libraries(springlab_keep_gl_driver PUBLIC ${CMAKE_DL_LIBS})
+endif()
+function(springlab_sanitizer_support target)
+  if(TARGET springlab_keep_gl_driver)
+    target_link_libraries(${target} PRIVATE springlab_keep_gl_driver)
+  endif()
+endfunction()
+
 # fuzzing (tests/fuzz): coverage for libFuzzer everywhere, and the sanitizers that turn a bad read
 # into a crash it can save; the fuzzer executables add libFuzzer's own main when they link
 if(SPRINGLAB_FUZZ)

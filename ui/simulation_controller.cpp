@@ -1,6 +1,7 @@
 #include "simulation_controller.h"
 
 #include "simulation_worker.h"
+#include "thread_handover.h"
 
 #include <QThread>
 
@@ -28,8 +29,9 @@ SimulationController::SimulationController(QObject *parent)
     connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
 
     // frames and blow-ups come back queued, onto this (the UI) thread
-    connect(m_worker, &SimulationWorker::frameReady, this, &SimulationController::takeFrame, Qt::QueuedConnection);
-    connect(m_worker, &SimulationWorker::blewUp, this, [this](const QString &message) {
+    m_frameConnection = connect(m_worker, &SimulationWorker::frameReady, this, &SimulationController::takeFrame,
+                                Qt::QueuedConnection);
+    m_blowUpConnection = connect(m_worker, &SimulationWorker::blewUp, this, [this](const QString &message) {
         setRunning(false);
         emit blewUp(message);
     }, Qt::QueuedConnection);
@@ -46,9 +48,17 @@ void SimulationController::shutDown()
     if (m_shutDown)
         return;
     m_shutDown = true;
+    // Cut the worker's connections to this side here, on the UI thread, so that their slot objects
+    // are freed on the thread that calls them: left for the worker's deletion on its own thread,
+    // they would be freed there after a hand-over under Qt's lock that ThreadSanitizer cannot see.
+    // (By their handles: a disconnect by sender would read the worker's QObject from this thread.)
+    disconnect(m_frameConnection);
+    disconnect(m_blowUpConnection);
     // the worker's event loop ends, its timer stops with it, and the worker is deleted on its thread
+    handOverRelease(m_worker);
     m_thread->quit();
     m_thread->wait();
+    handOverAcquire(&m_mailbox);
     m_worker = nullptr;
     setRunning(false);
 }
@@ -57,10 +67,8 @@ std::uint64_t SimulationController::post(Edit edit)
 {
     const std::uint64_t sequence = m_edits.push(std::move(edit));
     // one wake for a burst of edits; the worker applies them all at once
-    if (m_worker && !m_worker->wakePending().exchange(true)) {
-        SimulationWorker *worker = m_worker;
-        QMetaObject::invokeMethod(worker, [worker] { worker->wake(); }, Qt::QueuedConnection);
-    }
+    if (m_worker && !m_worker->wakePending().exchange(true))
+        SimulationWorker::postWake(m_worker);
     return sequence;
 }
 

@@ -90,6 +90,9 @@ private:
     std::uint64_t m_recordingRequests = 0;
     QThread *m_thread = nullptr;
     SimulationWorker *m_worker = nullptr;
+    // the worker's signals to this side, cut on this thread at shutDown()
+    QMetaObject::Connection m_frameConnection;
+    QMetaObject::Connection m_blowUpConnection;
     std::shared_ptr<const SimulationFrame> m_frame;
     bool m_running = false;
     bool m_shutDown = false;

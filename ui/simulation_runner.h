@@ -94,6 +94,10 @@ public:
     std::optional<std::uint64_t> scrubStep() const;
     // the state shown: the scrubbed step's while scrubbing, else the run's
     const core::State &shownState() const { return m_scrub ? m_scrub->state : m_state; }
+    // and the model it was stepped with and the scene that model came from: while scrubbing, the
+    // recorded step's, which may have fewer particles or springs than the scene now in the editor
+    std::shared_ptr<const core::Model> shownModel() const { return m_scrub ? m_scrub->model : m_model; }
+    std::shared_ptr<const core::SceneDesc> shownScene() const { return m_scrub ? m_scrub->scene : m_scene; }
 
     // what stopped the run by blowing up, once, explained at the last good state (what failed,
     // where, why and the fix: core::explainBlowup); the caller reports it

@@ -1,5 +1,9 @@
 #include "simulation_worker.h"
 
+#include "thread_handover.h"
+
+#include <QCoreApplication>
+#include <QEvent>
 #include <QTimer>
 #include <algorithm>
 
@@ -10,6 +14,8 @@ namespace {
 // how long rates are averaged before they are shown, s
 constexpr double kRateWindowSeconds = 0.5;
 
+const QEvent::Type kWakeEvent = static_cast<QEvent::Type>(QEvent::registerEventType());
+
 }  // namespace
 
 SimulationWorker::SimulationWorker(EditQueue &edits, LatestMailbox<SimulationFrame> &mailbox)
@@ -19,6 +25,32 @@ SimulationWorker::SimulationWorker(EditQueue &edits, LatestMailbox<SimulationFra
     m_timer->setTimerType(Qt::PreciseTimer);
     m_timer->setInterval(kTickIntervalMs);
     connect(m_timer, &QTimer::timeout, this, &SimulationWorker::tick);
+}
+
+SimulationWorker::~SimulationWorker()
+{
+    // deleted on its own thread once its event loop ended: see what the UI side did before, and
+    // hand what this thread did (its last frame in the mailbox) to the UI side's wait for the end
+    handOverAcquire(this);
+    handOverRelease(&m_mailbox);
+}
+
+void SimulationWorker::postWake(SimulationWorker *worker)
+{
+    // (an event rather than a queued functor: Qt frees the event inside its own code, whereas a
+    // functor's slot object would be freed in Springlab's, on the worker's thread)
+    auto *event = new QEvent(kWakeEvent);
+    handOverRelease(worker);
+    QCoreApplication::postEvent(worker, event);
+}
+
+void SimulationWorker::customEvent(QEvent *event)
+{
+    handOverAcquire(this);
+    if (event->type() == kWakeEvent)
+        wake();
+    else
+        QObject::customEvent(event);
 }
 
 void SimulationWorker::wake()
@@ -97,8 +129,9 @@ void SimulationWorker::publish()
 {
     auto frame = std::make_shared<SimulationFrame>();
     frame->snapshot = m_runner.snapshot();
-    frame->model = m_runner.model();
-    frame->scene = m_runner.scene();
+    // the snapshot's own model and scene, the recorded ones while a past step is shown
+    frame->model = m_runner.shownModel();
+    frame->scene = m_runner.shownScene();
     frame->appliedEdit = m_appliedEdit;
     frame->running = m_runner.isRunning();
     frame->realTimeFactor = m_realTimeFactor;

@@ -29,11 +29,15 @@ public:
 
     SimulationWorker(EditQueue &edits, LatestMailbox<SimulationFrame> &mailbox);
 
-    // called through a queued invocation: applies pending edits now, running or not
-    void wake();
+    // Posts the event that makes the worker apply pending edits now, running or not.
+    static void postWake(SimulationWorker *worker);
+    ~SimulationWorker() override;
 
     // the UI side sets this before queueing wake(), so that a burst of edits queues one wake
     std::atomic<bool> &wakePending() { return m_wakePending; }
+
+protected:
+    void customEvent(QEvent *event) override;
 
 signals:
     // a frame waits in the mailbox, and the mailbox was empty before it
@@ -42,6 +46,7 @@ signals:
     void blewUp(const QString &message);
 
 private:
+    void wake();
     void tick();
     void publish();
 

@@ -51,6 +51,7 @@ private slots:
     void stepsBackAndForthInsideTheRecording();
     void playGoesOnFromTheStepShown();
     void editWhileScrubbedDropsTheFuture();
+    void scrubbedStepShowsItsOwnScene();
     void longRunStaysWithinTheBudget();
     void breaksAreMarked();
     void noScrubbingWhileASessionIsRecorded();
@@ -179,6 +180,34 @@ void TestTimeline::editWhileScrubbedDropsTheFuture()
     // a step before the edit still shows the first run's bits
     runner.apply(ui::ScrubEdit{12});
     QCOMPARE(core::stateHash(runner.shownState()), hashes[12]);
+}
+
+// A step recorded before a particle was added is shown with the scene and model it was stepped
+// with, not the editor's newer one: the worker's frame pairs them with the snapshot, and a frame
+// whose scene had a particle more than its snapshot was a torn frame (found by the live-edit
+// stress under ThreadSanitizer, which scrubbed with the timeline slider's keys after an add).
+void TestTimeline::scrubbedStepShowsItsOwnScene()
+{
+    ui::SimulationRunner runner;
+    auto scene = clothScene();
+    runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 20, hashes);
+    auto grown = std::make_shared<core::SceneDesc>(*scene);
+    grown->particles.push_back(core::ParticleDesc{Eigen::Vector3d(0.0, 2.0, 0.0), Eigen::Vector3d::Zero(), 1.0, 0.05, false});
+    runner.apply(ui::SetSceneEdit{grown, ui::SceneChange::Structure});
+    stepAndRecord(runner, 20, hashes);
+
+    runner.apply(ui::ScrubEdit{10});
+    QVERIFY(runner.isScrubbing());
+    QVERIFY(runner.shownScene() == scene);
+    QCOMPARE(runner.shownModel()->particleCount(), int(scene->particles.size()));
+    QCOMPARE(runner.snapshot()->particleCount(), int(scene->particles.size()));
+    QVERIFY(runner.scene() == grown);  // the editor's scene is still the newer one
+
+    runner.apply(ui::ScrubEdit{35});
+    QVERIFY(runner.shownScene() == grown);
+    QCOMPARE(runner.snapshot()->particleCount(), int(grown->particles.size()));
 }
 
 void TestTimeline::longRunStaysWithinTheBudget()
