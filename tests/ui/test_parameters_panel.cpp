@@ -11,6 +11,7 @@
 #include "core/generators.h"
 
 #include <QAbstractItemView>
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QLabel>
@@ -267,6 +268,8 @@ void TestParametersPanel::choosingAnIntegratorIsOneUndoStep()
     QTest::mouseClick(box, Qt::LeftButton);
     QAbstractItemView *list = box->view();
     QTRY_VERIFY(list->isVisible());
+    // a release in the popup's first moments can be taken for the end of the click that opened it
+    QTest::qWait(QApplication::doubleClickInterval());
     const QPoint item = list->visualRect(list->model()->index(3, 0)).center();
     QTest::mouseMove(list->viewport(), item);
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, item);
