@@ -15,8 +15,11 @@ void addApplied(const Model &, State &state)
 void computeForces(const Model &model, State &state)
 {
     const StepPlan &plan = model.plan;
-    state.force.setZero();
-    timed(state, Stage::Gravity, plan.gravity, [&] { addGravity(model, state); });
+    // gravity, when there is some, starts the forces off (one pass instead of clearing and adding)
+    if (plan.gravity)
+        timed(state, Stage::Gravity, true, [&] { startWithGravity(model, state); });
+    else
+        state.force.setZero();
     timed(state, Stage::Drag, plan.drag, [&] { addDrag(model, state); });
     timed(state, Stage::Springs, plan.springs, [&] { addSprings(model, state); });
     timed(state, Stage::Applied, state.appliedCount > 0, [&] { addApplied(model, state); });

@@ -1,6 +1,8 @@
 #include "parallel.h"
 #include "passes.h"
 
+#include <algorithm>
+
 namespace core {
 
 Eigen::Matrix3Xd &scratch(State &state, int index)
@@ -13,17 +15,17 @@ Eigen::Matrix3Xd &scratch(State &state, int index)
 
 namespace {
 
-// one Euler update of the free particles [begin, end) of the list: the new velocity moves the
-// particle (symplectic) or the old one does (explicit). Flat arrays so that it vectorises; the same
-// IEEE operations in the same order as (h / m) f and h v written with Eigen columns.
+// one Euler update of the particles [begin, end), all free: the new velocity moves the particle
+// (symplectic) or the old one does (explicit). Flat arrays with unit stride so that it vectorises;
+// the same IEEE operations in the same order as (h / m) f and h v written with Eigen columns.
 template <bool Symplectic>
-void eulerUpdate(int begin, int end, const int *__restrict free, const double *__restrict invMass,
-                 const double *__restrict force, double *__restrict x, double *__restrict v, double h)
+void eulerUpdate(int begin, int end, const double *__restrict invMass, const double *__restrict force,
+                 double *__restrict x, double *__restrict v, double h)
 {
 #pragma omp simd
-    for (int f = begin; f < end; ++f) {
-        const int i = 3 * free[f];
-        const double kick = h * invMass[free[f]];
+    for (int p = begin; p < end; ++p) {
+        const int i = 3 * p;
+        const double kick = h * invMass[p];
         for (int axis = 0; axis < 3; ++axis) {
             const double old = v[i + axis];
             const double next = old + kick * force[i + axis];
@@ -37,9 +39,16 @@ template <bool Symplectic>
 void euler(const Model &model, State &state, double h)
 {
     computeForces(model, state);
-    parallelChunks(static_cast<int>(model.freeParticles.size()), [&](int begin, int end) {
-        eulerUpdate<Symplectic>(begin, end, model.freeParticles.data(), model.invMass.data(), state.force.data(),
-                                state.position.data(), state.velocity.data(), h);
+    // each thread its share of the particles, the free stretches within it
+    const std::vector<int> &ranges = model.freeRanges;
+    parallelChunks(model.particleCount(), [&](int first, int last) {
+        for (std::size_t r = 0; r < ranges.size(); r += 2) {
+            const int begin = std::max(first, ranges[r]);
+            const int end = std::min(last, ranges[r + 1]);
+            if (begin < end)
+                eulerUpdate<Symplectic>(begin, end, model.invMass.data(), state.force.data(), state.position.data(),
+                                        state.velocity.data(), h);
+        }
     });
 }
 

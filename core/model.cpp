@@ -37,6 +37,13 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
         if (!p.pinned)
             model->freeParticles.push_back(static_cast<int>(i));
     }
+    for (std::size_t f = 0; f < model->freeParticles.size(); ++f) {
+        const int i = model->freeParticles[f];
+        if (f == 0 || model->freeRanges.back() != i)
+            model->freeRanges.insert(model->freeRanges.end(), {i, i + 1});
+        else
+            model->freeRanges.back() = i + 1;
+    }
 
     // springs
     const auto springs = static_cast<Eigen::Index>(scene.springs.size());
@@ -71,6 +78,16 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
         const auto b = static_cast<std::size_t>(model->springB[static_cast<std::size_t>(k)]);
         model->springEnds[static_cast<std::size_t>(filled[a]++)] = static_cast<int>(2 * k);
         model->springEnds[static_cast<std::size_t>(filled[b]++)] = static_cast<int>(2 * k + 1);
+    }
+
+    // runs of springs whose ends both step by one
+    for (int k = 0; k < static_cast<int>(springs);) {
+        Model::SpringRun run{k, 1, model->springA[static_cast<std::size_t>(k)], model->springB[static_cast<std::size_t>(k)]};
+        while (k + run.count < springs && model->springA[static_cast<std::size_t>(k + run.count)] == run.a + run.count &&
+               model->springB[static_cast<std::size_t>(k + run.count)] == run.b + run.count)
+            ++run.count;
+        model->springRuns.push_back(run);
+        k += run.count;
     }
 
     // planes

@@ -41,6 +41,9 @@ struct Model {
     Eigen::VectorXd invMass;  // 1/kg, 0 when pinned
     Eigen::VectorXd radius;   // m
     std::vector<int> freeParticles;  // indices of the particles that are not pinned, ascending
+    // the same as stretches of consecutive indices, [freeRanges[2 r], freeRanges[2 r + 1]): the
+    // integrators' loops read and write them with unit stride
+    std::vector<int> freeRanges;
 
     // springs
     std::vector<int> springA;
@@ -54,6 +57,18 @@ struct Model {
     // and 2 k + 1 for its end b
     std::vector<int> springOffsets;
     std::vector<int> springEnds;
+    // the spring list cut into runs of consecutive springs whose two ends both step by one
+    // particle from one spring to the next, as a lattice's springs do when they are made row by
+    // row: a run's springs are (a + j, b + j), j = 0 … count - 1, springs first + j. Over a run
+    // the ends are read and the forces added with unit stride, with no gathers. The spring pass
+    // takes that road when the runs are long (usesSpringRuns()).
+    struct SpringRun {
+        int first = 0;  // the run's first spring
+        int count = 0;
+        int a = 0;      // end a of its first spring
+        int b = 0;      // end b of its first spring
+    };
+    std::vector<SpringRun> springRuns;
 
     // planes n·p = offset, unit normals
     Eigen::Matrix3Xd planeNormal;
@@ -64,6 +79,8 @@ struct Model {
     int particleCount() const { return static_cast<int>(mass.size()); }
     int springCount() const { return static_cast<int>(springA.size()); }
     int planeCount() const { return static_cast<int>(planeOffset.size()); }
+    // runs of 8 springs or more on average: shorter ones cost more in bookkeeping than they save
+    bool usesSpringRuns() const { return !springRuns.empty() && springCount() >= 8 * static_cast<int>(springRuns.size()); }
     bool isPinned(int particle) const { return invMass[particle] == 0.0; }
     double subStep() const { return timeStep / substeps; }
 };

@@ -8,8 +8,13 @@
 namespace core {
 
 void addGravity(const Model &model, State &state);               // gravity.cpp: m g
+void startWithGravity(const Model &model, State &state);         // gravity.cpp: forces = m g
 void addDrag(const Model &model, State &state);                  // drag.cpp: -c v
 void addSprings(const Model &model, State &state);               // springs.cpp: damped springs
+// the two ways addSprings() takes, by runs of lattice-like springs or by gathering each
+// particle's springs, public for the tests; neither checks the plan
+void addSpringRuns(const Model &model, State &state);
+void addSpringsGathered(const Model &model, State &state);
 void addSpringsReference(const Model &model, State &state);      // springs.cpp: the plain scatter loop
 void addApplied(const Model &model, State &state);               // forces.cpp: forces from outside
 void computeForces(const Model &model, State &state);            // forces.cpp: all of the above

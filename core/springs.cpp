@@ -2,6 +2,7 @@
 #include "parallel.h"
 #include "passes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -33,13 +34,37 @@ Eigen::Vector3d springForce(const Model &model, const State &state, int k)
     return (-model.stiffness[k] * stretch - model.damping[k] * approach) * u;
 }
 
-// the handout's damped spring of springs [begin, end) on their end a, three values per spring into
-// out. Flat arrays and no calls, so the compiler vectorises it across springs; the clones let one
+// the handout's damped spring on end a into out[0 .. 2], from its ends' positions and velocities.
+// Inlined into the kernels below, which the compiler vectorises across springs; the clones let one
 // binary use AVX2 or AVX-512 where the CPU has them. Each value comes from the same IEEE adds,
 // multiplies, divides and square roots as springForce above, in the same order and never
-// contracted (cmake/springlab_flags.cmake), so every clone and the reference give the same bits.
-// Breakable scenes pass their broken flags: a broken spring's force is a select to zero, which
-// keeps the loop vectorised; the others build without the flags and pay nothing for them.
+// contracted (cmake/springlab_flags.cmake), so every clone, both kernels and the reference give the
+// same bits. A broken spring's force is a select to zero, which keeps the loops vectorised.
+[[gnu::always_inline]] inline void dampedSpring(const double *xa, const double *xb, const double *va,
+                                                const double *vb, double restLength, double stiffness,
+                                                double damping, bool broken, double *out)
+{
+    const double dx = xa[0] - xb[0];
+    const double dy = xa[1] - xb[1];
+    const double dz = xa[2] - xb[2];
+    const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+    // coincident ends push along +y, as directionOr does; one division, as there
+    const bool separate = apart(length);
+    const double inverse = 1.0 / (separate ? length : 1.0);
+    const double ux = separate ? dx * inverse : 0.0;
+    const double uy = separate ? dy * inverse : 1.0;
+    const double uz = separate ? dz * inverse : 0.0;
+    const double approach = (va[0] - vb[0]) * ux + (va[1] - vb[1]) * uy + (va[2] - vb[2]) * uz;
+    double magnitude = -stiffness * (length - restLength) - damping * approach;
+    magnitude = broken ? 0.0 : magnitude;
+    out[0] = magnitude * ux;
+    out[1] = magnitude * uy;
+    out[2] = magnitude * uz;
+}
+
+// springs [begin, end) of any list, their ends gathered by index, three values per spring into out.
+// Scenes with breakable springs pass their broken flags; the others build without them and pay
+// nothing for them.
 template <bool Breakable>
 SPRINGLAB_SIMD_CLONES void springForces(int begin, int end, const int *__restrict springA,
                                         const int *__restrict springB, const double *__restrict restLength,
@@ -51,35 +76,135 @@ SPRINGLAB_SIMD_CLONES void springForces(int begin, int end, const int *__restric
     for (int k = begin; k < end; ++k) {
         const int a = 3 * springA[k];
         const int b = 3 * springB[k];
-        const double dx = x[a] - x[b];
-        const double dy = x[a + 1] - x[b + 1];
-        const double dz = x[a + 2] - x[b + 2];
-        const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
-        // coincident ends push along +y, as directionOr does
-        const bool apart = length > 0.0;
-        const double ux = apart ? dx / length : 0.0;
-        const double uy = apart ? dy / length : 1.0;
-        const double uz = apart ? dz / length : 0.0;
-        const double approach = (v[a] - v[b]) * ux + (v[a + 1] - v[b + 1]) * uy + (v[a + 2] - v[b + 2]) * uz;
-        double magnitude = -stiffness[k] * (length - restLength[k]) - damping[k] * approach;
-        if constexpr (Breakable)
-            magnitude = broken[k] != 0 ? 0.0 : magnitude;
-        out[3 * k] = magnitude * ux;
-        out[3 * k + 1] = magnitude * uy;
-        out[3 * k + 2] = magnitude * uz;
+        dampedSpring(x + a, x + b, v + a, v + b, restLength[k], stiffness[k], damping[k],
+                     Breakable && broken[k] != 0, out + 3 * k);
+    }
+}
+
+// springs j = 0 … count - 1 of a run, ends a + j and b + j: the ends are read with unit stride.
+// The arrays start at the run's first spring (parameters, flags) and at its first ends (x, v).
+template <bool Breakable>
+SPRINGLAB_SIMD_CLONES void runForces(int count, const double *__restrict restLength, const double *__restrict stiffness,
+                                     const double *__restrict damping, const std::uint8_t *__restrict broken,
+                                     const double *__restrict xa, const double *__restrict xb,
+                                     const double *__restrict va, const double *__restrict vb, double *__restrict out)
+{
+#pragma omp simd
+    for (int j = 0; j < count; ++j)
+        dampedSpring(xa + 3 * j, xb + 3 * j, va + 3 * j, vb + 3 * j, restLength[j], stiffness[j], damping[j],
+                     Breakable && broken[j] != 0, out + 3 * j);
+}
+
+// force[i] += sign · perSpring[i] over 3 × count values, unit stride
+SPRINGLAB_SIMD_CLONES void addForces(int count, double sign, const double *__restrict perSpring,
+                                     double *__restrict force)
+{
+#pragma omp simd
+    for (int i = 0; i < 3 * count; ++i)
+        force[i] = sign > 0.0 ? force[i] + perSpring[i] : force[i] - perSpring[i];
+}
+
+// springs per chunk of a run: 6 KB of forces, computed and added while they are in the L1 cache
+constexpr int kRunChunk = 256;
+
+// The run's springs j in [lo, hi), a chunk at a time: compute the chunk's forces, then add them
+// to the ends of those springs that lie in this thread's particles, j in [aLo, aHi) for end a and
+// [bLo, bHi) for end b. Within one run a particle is end a of at most one spring and end b of at
+// most one, and the plain loop adds the lower-numbered spring's force first: end b's first when
+// b > a, as that spring is (p - b) < (p - a). Chunk by chunk in ascending j, adding end b's
+// before end a's when b > a (and the other way round otherwise), every particle receives its
+// forces in the plain loop's order, whichever thread it falls to.
+template <bool Breakable>
+void runPiece(const Model &model, State &state, const Model::SpringRun &run, int lo, int hi, int aLo, int aHi,
+              int bLo, int bHi)
+{
+    double chunk[3 * kRunChunk];
+    const double *x = state.position.data();
+    const double *v = state.velocity.data();
+    double *f = state.force.data();
+    const std::uint8_t *broken = Breakable ? state.springBroken.data() + run.first : nullptr;
+    const auto addSide = [&](int begin, int end, int lowest, int highest, int particle, double sign) {
+        const int from = std::max(begin, lowest);
+        const int to = std::min(end, highest);
+        if (from < to)
+            addForces(to - from, sign, chunk + 3 * (from - begin), f + 3 * (particle + from));
+    };
+    for (int begin = lo; begin < hi; begin += kRunChunk) {
+        const int end = std::min(hi, begin + kRunChunk);
+        const int spring = run.first + begin;
+        runForces<Breakable>(end - begin, model.restLength.data() + spring, model.stiffness.data() + spring,
+                             model.damping.data() + spring, Breakable ? broken + begin : nullptr,
+                             x + 3 * (run.a + begin), x + 3 * (run.b + begin), v + 3 * (run.a + begin),
+                             v + 3 * (run.b + begin), chunk);
+        if (run.b > run.a) {
+            addSide(begin, end, bLo, bHi, run.b, -1.0);
+            addSide(begin, end, aLo, aHi, run.a, +1.0);
+        } else {
+            addSide(begin, end, aLo, aHi, run.a, +1.0);
+            addSide(begin, end, bLo, bHi, run.b, -1.0);
+        }
+    }
+}
+
+// every run's forces on particles [first, last): the springs with an end there, each once (a
+// spring whose other end is another thread's is computed by both, with the same bits)
+template <bool Breakable>
+void runsOnParticles(const Model &model, State &state, int first, int last)
+{
+    for (const Model::SpringRun &run : model.springRuns) {
+        const int aLo = std::max(0, first - run.a);
+        const int aHi = std::min(run.count, last - run.a);
+        const int bLo = std::max(0, first - run.b);
+        const int bHi = std::min(run.count, last - run.b);
+        const bool aSide = aLo < aHi;
+        const bool bSide = bLo < bHi;
+        if (!aSide && !bSide)
+            continue;
+        if (!aSide || !bSide) {
+            runPiece<Breakable>(model, state, run, aSide ? aLo : bLo, aSide ? aHi : bHi, aLo, aHi, bLo, bHi);
+        } else if (std::max(aLo, bLo) <= std::min(aHi, bHi)) {
+            runPiece<Breakable>(model, state, run, std::min(aLo, bLo), std::max(aHi, bHi), aLo, aHi, bLo, bHi);
+        } else {
+            // two separate stretches (the ends lie far apart in the numbering): skip the springs between
+            const bool aBelow = aLo < bLo;
+            runPiece<Breakable>(model, state, run, aBelow ? aLo : bLo, aBelow ? aHi : bHi, aLo, aHi, bLo, bHi);
+            runPiece<Breakable>(model, state, run, aBelow ? bLo : aLo, aBelow ? bHi : aHi, aLo, aHi, bLo, bHi);
+        }
     }
 }
 
 }  // namespace
 
-// Two passes with no write shared between iterations, so both split across threads with the same
-// bits: each spring's force on end a, then each particle sums the forces of its springs in
-// ascending spring order (+ at end a, - at end b, Newton's third law). That order is the order
-// in which addSpringsReference's scatter adds them, so the two agree to the bit.
 void addSprings(const Model &model, State &state)
 {
     if (!model.plan.springs)
         return;
+    if (model.usesSpringRuns())
+        addSpringRuns(model, state);
+    else
+        addSpringsGathered(model, state);
+}
+
+// Each thread takes a contiguous share of the particles and adds, run by run, the forces of the
+// springs with an end in its share, in the plain loop's order (runPiece): the same bits as
+// addSpringsReference on any number of threads.
+void addSpringRuns(const Model &model, State &state)
+{
+    const bool breakable = !state.springBroken.empty();
+    parallelChunks(model.particleCount(), [&](int first, int last) {
+        if (breakable)
+            runsOnParticles<true>(model, state, first, last);
+        else
+            runsOnParticles<false>(model, state, first, last);
+    });
+}
+
+// Two passes with no write shared between iterations, so both split across threads with the same
+// bits: each spring's force on end a, then each particle sums the forces of its springs in
+// ascending spring order (+ at end a, - at end b, Newton's third law). That order is the order
+// in which addSpringsReference's scatter adds them, so the two agree to the bit.
+void addSpringsGathered(const Model &model, State &state)
+{
     const int springs = model.springCount();
     Eigen::Matrix3Xd &perSpring = state.springForce;
     if (perSpring.cols() != springs)

@@ -23,8 +23,10 @@ using namespace Qt::Literals::StringLiterals;
 
 namespace {
 
-// the expected hash of kSteps steps of goldenScene(); see the note at the top before changing it
-constexpr std::uint64_t kGoldenHash = 0xe656d096402a9836ULL;
+// the expected hash of kSteps steps of goldenScene(); see the note at the top before changing it.
+// Last moved when the spring direction became one division and three multiplications (d · (1/l))
+// instead of three divisions (d / l): two divisions fewer per spring, a rounding different in the last bit.
+constexpr std::uint64_t kGoldenHash = 0x678db25e4e118604ULL;
 constexpr int kSteps = 1000;
 
 // a 10 × 10 net, free at every edge, falling onto a 5 × 4 × 5 pile of balls under its middle on the

@@ -1,5 +1,5 @@
-// The damped spring force against values worked out by hand, and Newton's third law; the
-// gathered, threaded pass against the plain scatter loop.
+// The damped spring force against values worked out by hand, and Newton's third law; both
+// threaded passes (gathered, and by runs of lattice-like springs) against the plain scatter loop.
 #include "core/generators.h"
 #include "core/passes.h"
 #include "core/step.h"
@@ -18,6 +18,9 @@ private slots:
     void zeroLengthGivesNoNaN();
     void pinnedEndIsStillPulled();
     void gatherEqualsThePlainLoopToTheBit();
+    void clothIsCutIntoRuns();
+    void runsEqualThePlainLoopToTheBit_data();
+    void runsEqualThePlainLoopToTheBit();
     void sameBitsOnOneAndTwoThreads();
 };
 
@@ -140,13 +143,115 @@ void TestSprings::gatherEqualsThePlainLoopToTheBit()
                 sim.state.position.col(sim.model->springA[std::size_t(k)]);
         sim.state.force.setRandom();  // on top of what is there, as in a step
         const Eigen::Matrix3Xd start = sim.state.force;
-        core::addSprings(*sim.model, sim.state);
+        core::addSpringsGathered(*sim.model, sim.state);
         const Eigen::Matrix3Xd gathered = sim.state.force;
         sim.state.force = start;
         core::addSpringsReference(*sim.model, sim.state);
         QVERIFY(gathered.cwiseNotEqual(start).any());
         QVERIFY2(gathered.cwiseEqual(sim.state.force).all(), qPrintable(QString("n = %1").arg(n)));
     }
+}
+
+void TestSprings::clothIsCutIntoRuns()
+{
+    // row by row, each kind of spring is a run per row (structural and bend along a row, the two
+    // shears) or one run for the whole cloth (structural and bend down the columns): 4 n runs
+    const int n = 30;
+    const test::Sim cloth = test::compile(movingCloth(n, 3u));
+    QCOMPARE(int(cloth.model->springRuns.size()), 4 * n);
+    QVERIFY(cloth.model->usesSpringRuns());
+    int covered = 0;
+    for (const core::Model::SpringRun &run : cloth.model->springRuns) {
+        QCOMPARE(run.first, covered);
+        for (int j = 0; j < run.count; ++j) {
+            QCOMPARE(cloth.model->springA[std::size_t(run.first + j)], run.a + j);
+            QCOMPARE(cloth.model->springB[std::size_t(run.first + j)], run.b + j);
+        }
+        covered += run.count;
+    }
+    QCOMPARE(covered, cloth.model->springCount());
+
+    // springs in no order at all: runs of one, and the pass gathers instead
+    core::SceneDesc scattered = test::quietScene();
+    for (int i = 0; i < 50; ++i)
+        scattered.particles.push_back(test::particle(Eigen::Vector3d(i, 0, 0)));
+    for (int k = 0; k < 49; ++k)
+        scattered.springs.push_back(core::SpringDesc{(k * 7) % 50, (k * 7 + 13) % 50, 10.0, 0.1, 1.0});
+    QVERIFY(!test::compile(scattered).model->usesSpringRuns());
+}
+
+void TestSprings::runsEqualThePlainLoopToTheBit_data()
+{
+    QTest::addColumn<int>("particles");
+    QTest::addColumn<bool>("breakable");
+    QTest::newRow("small, one thread's share") << 600 << false;
+    QTest::newRow("split across threads") << 20000 << false;
+    QTest::newRow("split, some springs broken") << 20000 << true;
+}
+
+// Runs of every shape: ends in order and reversed (b above a, b below a), one apart and far apart
+// (farther than a thread's share, so the two ends' springs lie in separate stretches), long and of
+// one spring, with coincident ends; the result must be the plain loop's to the bit on 1, 2 and 3
+// threads, whichever thread each particle falls to.
+void TestSprings::runsEqualThePlainLoopToTheBit()
+{
+    QFETCH(int, particles);
+    QFETCH(bool, breakable);
+    core::SceneDesc scene = test::quietScene();
+    std::uint32_t seed = 17u;
+    const auto next = [&seed](std::uint32_t range) {
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<int>((seed >> 8) % range);
+    };
+    for (int i = 0; i < particles; ++i)
+        scene.particles.push_back(test::particle(Eigen::Vector3d(next(1000) * 1e-3, next(1000) * 1e-3, next(1000) * 1e-3),
+                                                 Eigen::Vector3d(next(100) * 1e-2, next(100) * 1e-2, 0.0)));
+    const int offsets[] = {1, -1, 2, -3, particles / 2 + 1, -(particles / 2 + 7), 37};
+    int springs = 0;
+    while (springs < 6 * particles) {
+        const int offset = offsets[next(7)];
+        const int count = next(5) == 0 ? 1 : 1 + next(400);
+        const int low = std::max(0, -offset);
+        const int high = std::min(particles, particles - offset) - count;  // a + count - 1 < n, b too
+        if (high <= low)
+            continue;
+        const int a = low + next(std::uint32_t(high - low));
+        for (int j = 0; j < count; ++j, ++springs)
+            scene.springs.push_back(core::SpringDesc{a + j, a + offset + j, 10.0 + next(1000), next(10) * 0.1,
+                                                     0.5 + next(100) * 1e-2});
+    }
+    const core::Model probe = *core::compileModel(scene);
+    QVERIFY2(probe.usesSpringRuns(), "the scene should be cut into long runs");
+
+    const int before = core::threadCount();
+    const Eigen::Matrix3Xd start = Eigen::Matrix3Xd::Random(3, particles);  // on top, as in a step
+    Eigen::Matrix3Xd reference;
+    for (int threads : {1, 2, 3}) {
+        if (threads > 1 && core::maxThreadCount() < 2)
+            break;
+        core::setThreadCount(threads);
+        test::Sim sim = test::compile(scene);
+        for (int k = 0; k < sim.model->springCount(); k += 41)  // coincident ends: the other branch
+            sim.state.position.col(sim.model->springB[std::size_t(k)]) =
+                sim.state.position.col(sim.model->springA[std::size_t(k)]);
+        if (breakable) {
+            sim.state.springBroken.assign(std::size_t(sim.model->springCount()), 0);
+            for (int k = 5; k < sim.model->springCount(); k += 13)
+                sim.state.springBroken[std::size_t(k)] = 1;
+        }
+        sim.state.force = start;
+        core::addSpringRuns(*sim.model, sim.state);
+        const Eigen::Matrix3Xd byRuns = sim.state.force;
+        if (threads == 1) {
+            sim.state.force = start;
+            core::addSpringsReference(*sim.model, sim.state);
+            reference = sim.state.force;
+            QVERIFY(reference.cwiseNotEqual(start).any());
+        }
+        const Eigen::Index differing = (byRuns.array() != reference.array()).count();
+        QVERIFY2(differing == 0, qPrintable(QString("%1 threads: %2 values differ").arg(threads).arg(differing)));
+    }
+    core::setThreadCount(before);
 }
 
 void TestSprings::sameBitsOnOneAndTwoThreads()
