@@ -1,7 +1,7 @@
 // Start, run, load another scene and close while running, over and over: each cycle opens an
 // editor on one example, lets the worker step it, loads the next example while it runs and
 // closes the window while the worker is still stepping. Every cycle must get a frame of each scene
-// from the worker. Under AddressSanitizer with leak checking (tools/sanitize.sh runs 1000 cycles)
+// from the worker. Under AddressSanitizer with leak checking (tools/long_tests.sh runs 1000 cycles)
 // this is the test for crashes and leaks on the way in and out; SPRINGLAB_LIFECYCLE_CYCLES sets
 // the count (CI's plain build runs 20).
 
