@@ -1,7 +1,11 @@
 #include "parallel.h"
 #include "passes.h"
 
+#include "step.h"
+
 #include <algorithm>
+#include <atomic>
+#include <cmath>
 
 namespace core {
 
@@ -18,21 +22,27 @@ namespace {
 // one Euler update of the particles [begin, end), all free: the new velocity moves the particle
 // (symplectic) or the old one does (explicit). Flat arrays with unit stride so that it vectorises;
 // the same IEEE operations in the same order as (h / m) f and h v written with Eigen columns.
+// Returns whether any new value is not finite or past kBlowupBound, found in the same loop (the
+// finite check then need not read the arrays again).
 template <bool Symplectic>
-void eulerUpdate(int begin, int end, const double *__restrict invMass, const double *__restrict force,
+bool eulerUpdate(int begin, int end, const double *__restrict invMass, const double *__restrict force,
                  double *__restrict x, double *__restrict v, double h)
 {
-#pragma omp simd
+    int bad = 0;
+#pragma omp simd reduction(| : bad)
     for (int p = begin; p < end; ++p) {
         const int i = 3 * p;
         const double kick = h * invMass[p];
         for (int axis = 0; axis < 3; ++axis) {
             const double old = v[i + axis];
             const double next = old + kick * force[i + axis];
+            const double moved = x[i + axis] + h * (Symplectic ? next : old);
             v[i + axis] = next;
-            x[i + axis] += h * (Symplectic ? next : old);
+            x[i + axis] = moved;
+            bad |= (std::abs(next) <= kBlowupBound && std::abs(moved) <= kBlowupBound) ? 0 : 1;
         }
     }
+    return bad != 0;
 }
 
 template <bool Symplectic>
@@ -41,15 +51,17 @@ void euler(const Model &model, State &state, double h)
     computeForces(model, state);
     // each thread its share of the particles, the free stretches within it
     const std::vector<int> &ranges = model.freeRanges;
+    std::atomic<bool> bad = false;
     parallelChunks(model.particleCount(), [&](int first, int last) {
         for (std::size_t r = 0; r < ranges.size(); r += 2) {
             const int begin = std::max(first, ranges[r]);
             const int end = std::min(last, ranges[r + 1]);
-            if (begin < end)
-                eulerUpdate<Symplectic>(begin, end, model.invMass.data(), state.force.data(), state.position.data(),
-                                        state.velocity.data(), h);
+            if (begin < end && eulerUpdate<Symplectic>(begin, end, model.invMass.data(), state.force.data(),
+                                                       state.position.data(), state.velocity.data(), h))
+                bad.store(true, std::memory_order_relaxed);
         }
     });
+    state.freeParticlesChecked = !bad.load(std::memory_order_relaxed);
 }
 
 // the handout's scheme: the new velocity moves the particle

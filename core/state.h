@@ -71,6 +71,10 @@ struct State {
     std::array<Eigen::Matrix3Xd, 18> scratchArrays;
     // scratch of the spring pass: each spring's force on its end a (made on first use)
     Eigen::Matrix3Xd springForce;
+    // set by the Euler updates when every free particle's new position and velocity is finite and
+    // bounded (checked in the same loop that wrote them); the step clears it before integrating and
+    // when a contact pass moves particles, and the finite check then only checks the pinned ones
+    bool freeParticlesChecked = false;
 
     // breakable springs (the plan's springBreaks): 1 per spring once broken, for good; a broken
     // spring exerts no force and stores no energy. Empty when no spring can break. breaks lists

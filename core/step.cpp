@@ -41,6 +41,7 @@ bool step(const Model &model, State &state)
     for (int sub = 0; sub < model.substeps; ++sub) {
         // 1 and 2. forces at (x, v) and integration of every free particle: the integrator
         // evaluates the forces as often as its scheme needs (once for the Euler schemes)
+        state.freeParticlesChecked = false;  // until an integrator says it checked what it wrote
         integrateTimed(model, state, h);
         if (state.blowup) {  // an adaptive integrator that could not cover the sub-step
             state.blowup->step = state.step + 1;
@@ -48,7 +49,10 @@ bool step(const Model &model, State &state)
             return false;
         }
 
-        // 3. contacts as projections: particles against planes, then pairs
+        // 3. contacts as projections: particles against planes, then pairs (they move particles
+        // after the integrator's check)
+        if (plan.planeCollisions || plan.particleCollisions)
+            state.freeParticlesChecked = false;
         timed(state, Stage::PlaneCollisions, plan.planeCollisions, [&] { collidePlanes(model, state); });
         timed(state, Stage::ParticleCollisions, plan.particleCollisions, [&] { collideParticles(model, state); });
 

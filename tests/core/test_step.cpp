@@ -15,6 +15,8 @@ private slots:
     void substepsEqualSmallerSteps();
     void blowupIsCaughtAndNamed();
     void blownUpStateIsNotSteppedAgain();
+    void checkSeesEveryParticle_data();
+    void checkSeesEveryParticle();
     void appliedForcePushes();
     void sameSceneSameBits();
 };
@@ -133,6 +135,39 @@ void TestStep::blownUpStateIsNotSteppedAgain()
     QVERIFY(!core::step(*sim.model, sim.state));
     QVERIFY(sim.state.position == frozen);
     QCOMPARE(sim.state.step, std::uint64_t(0));
+}
+
+void TestStep::checkSeesEveryParticle_data()
+{
+    QTest::addColumn<int>("particle");
+    QTest::addColumn<bool>("contacts");
+    // free particles 1-2, 4-6 and 8 in stretches between the pinned 0, 3 and 7
+    for (int i = 0; i < 9; ++i) {
+        QTest::addRow("particle %d", i) << i << false;
+        QTest::addRow("particle %d, with contacts", i) << i << true;
+    }
+}
+
+// The symplectic Euler update checks what it writes, so the finite check reads only the pinned
+// particles after it (or everything after a contact pass): a bad value anywhere, free or pinned,
+// in any stretch, must still stop the run and be named.
+void TestStep::checkSeesEveryParticle()
+{
+    QFETCH(int, particle);
+    QFETCH(bool, contacts);
+    core::SceneDesc scene = test::quietScene();
+    scene.settings.planeCollisions = contacts;
+    scene.planes = {core::PlaneDesc{{0.0, 1.0, 0.0}, -100.0}};
+    for (int i = 0; i < 9; ++i)
+        scene.particles.push_back(test::particle({double(i), 0, 0}, {0, 0, 0}, 1.0, 0.1, i == 0 || i == 3 || i == 7));
+    test::Sim sim = test::compile(scene);
+    QVERIFY(core::step(*sim.model, sim.state));
+    // as an edit could leave it, or as a force could make it: past the bound
+    sim.state.position(1, particle) = 2 * core::kBlowupBound;
+    QVERIFY(!core::step(*sim.model, sim.state));
+    QVERIFY(sim.state.blowup.has_value());
+    QCOMPARE(sim.state.blowup->particle, particle);
+    QCOMPARE(sim.state.blowup->quantity, core::Blowup::Quantity::Position);
 }
 
 void TestStep::appliedForcePushes()
