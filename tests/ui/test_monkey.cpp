@@ -245,7 +245,8 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
     outcome.scene = window->document()->scene();
     outcome.undoSteps = window->document()->undoStack()->count();
     outcome.edits = edits;
-    const auto frame = test::settledFrame(*window->controller());
+    // a minute: under the sanitizers a large scene the monkey generated can take that long to step
+    const auto frame = test::settledFrame(*window->controller(), 60000);
     if (!frame)
         outcome.failure = QStringLiteral("seed %1: no frame from the worker after the events").arg(seed);
     else if (const auto problem = core::findProblem(outcome.scene))
