@@ -272,11 +272,12 @@ void TestParametersPanel::choosingAnIntegratorIsOneUndoStep()
     // click (a release in its first moments is taken for the end of the click that opened it, or
     // the hover has not arrived yet), so the click is repeated until the popup closes.
     const QPoint item = list->visualRect(list->model()->index(3, 0)).center();
-    for (int attempt = 0; attempt < 10 && list->isVisible(); ++attempt) {
-        QTest::qWait(QApplication::doubleClickInterval());
+    for (int attempt = 0; attempt < 10; ++attempt) {
+        QTest::qWait(QApplication::doubleClickInterval());  // Qt's own window for a dropped release
         QTest::mouseMove(list->viewport(), item);
         QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, item);
-        QTest::qWait(100);
+        if (QTest::qWaitFor([list] { return !list->isVisible(); }, 200))
+            break;
     }
     QTRY_VERIFY(!list->isVisible());
     QCOMPARE(m_document->scene().settings.integrator, core::Integrator::Rk4);
