@@ -48,6 +48,10 @@ bool eulerUpdate(int begin, int end, const double *__restrict invMass, const dou
 template <bool Symplectic>
 void euler(const Model &model, State &state, double h)
 {
+    if (model.usesSpringBlocks()) {
+        state.freeParticlesChecked = stepSpringBlocks(model, state, h, Symplectic);
+        return;
+    }
     computeForces(model, state);
     // each thread its share of the particles, the free stretches within it
     const std::vector<int> &ranges = model.freeRanges;

@@ -5,7 +5,9 @@
 #include "state.h"
 #include "validate.h"
 
+#include <algorithm>
 #include <cassert>
+#include <cstdlib>
 
 namespace core {
 
@@ -87,7 +89,28 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
                model->springB[static_cast<std::size_t>(k + run.count)] == run.b + run.count)
             ++run.count;
         model->springRuns.push_back(run);
+        model->springReach = std::max(model->springReach, std::abs(run.b - run.a));
         k += run.count;
+    }
+
+    // which runs reach into each block of particles, for the fused sub-step
+    if (model->usesSpringRuns() && model->springReach <= kSpringBlock) {
+        const int blocks = (static_cast<int>(n) + kSpringBlock - 1) / kSpringBlock;
+        std::vector<std::vector<int>> byBlock(static_cast<std::size_t>(blocks));
+        for (int r = 0; r < static_cast<int>(model->springRuns.size()); ++r) {
+            const Model::SpringRun &run = model->springRuns[static_cast<std::size_t>(r)];
+            for (const int end : {run.a, run.b})
+                for (int q = end / kSpringBlock; q <= (end + run.count - 1) / kSpringBlock; ++q) {
+                    std::vector<int> &list = byBlock[static_cast<std::size_t>(q)];
+                    if (list.empty() || list.back() != r)
+                        list.push_back(r);
+                }
+        }
+        model->blockRunOffsets.assign(1, 0);
+        for (const std::vector<int> &list : byBlock) {
+            model->blockRuns.insert(model->blockRuns.end(), list.begin(), list.end());
+            model->blockRunOffsets.push_back(static_cast<int>(model->blockRuns.size()));
+        }
     }
 
     // planes

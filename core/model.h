@@ -23,6 +23,10 @@ struct StepPlan {
     bool operator==(const StepPlan &) const = default;
 };
 
+// particles per block of the fused lattice sub-step (spring_blocks.cpp): a block's forces and its
+// positions and velocities with the springs' reach either side stay in the L2 cache
+inline constexpr int kSpringBlock = 4096;
+
 struct Model {
     // settings
     double timeStep = 0.01;  // s
@@ -69,6 +73,14 @@ struct Model {
         int b = 0;      // end b of its first spring
     };
     std::vector<SpringRun> springRuns;
+    // the farthest apart the two ends of a run lie in the numbering, max |b - a|: how far past a
+    // block of particles its springs reach
+    int springReach = 0;
+    // the runs with an end in each block of kSpringBlock particles, ascending: block q's are
+    // blockRuns[blockRunOffsets[q] .. blockRunOffsets[q + 1]). Made only for models that use the
+    // blocks (usesSpringBlocks())
+    std::vector<int> blockRunOffsets;
+    std::vector<int> blockRuns;
 
     // planes n·p = offset, unit normals
     Eigen::Matrix3Xd planeNormal;
@@ -81,6 +93,9 @@ struct Model {
     int planeCount() const { return static_cast<int>(planeOffset.size()); }
     // runs of 8 springs or more on average: shorter ones cost more in bookkeeping than they save
     bool usesSpringRuns() const { return !springRuns.empty() && springCount() >= 8 * static_cast<int>(springRuns.size()); }
+    // the Euler schemes step such a model a block of particles at a time, forces and update fused
+    // (spring_blocks.cpp): its springs must not reach past the next block
+    bool usesSpringBlocks() const { return plan.springs && usesSpringRuns() && springReach <= kSpringBlock; }
     bool isPinned(int particle) const { return invMass[particle] == 0.0; }
     double subStep() const { return timeStep / substeps; }
 };

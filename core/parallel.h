@@ -4,6 +4,8 @@
 // threads. Small loops stay on the calling thread without entering OpenMP at all: waking the
 // others costs more than they save, and even a one-thread OpenMP region allocates.
 
+#include <utility>
+
 #ifdef SPRINGLAB_OPENMP
 #include <omp.h>
 #endif
@@ -46,6 +48,72 @@ void parallelChunks(int count, Body &&body)
     }
 #endif
     body(0, count);
+}
+
+// For the tests of a two-phase pass: its shares run one after another on the calling thread, as
+// if there were `shares` threads, in ascending or descending order. In one order each thread moves
+// its particles before the next thread starts, in the other before the previous one does: the two
+// ways a real schedule can hand a neighbour's particles over too late. 0 shares: off.
+struct SequentialShares {
+    int shares = 0;
+    bool descending = false;
+};
+inline SequentialShares &sequentialShares()
+{
+    static SequentialShares setting;
+    return setting;
+}
+
+// how many shares parallelChunksInTwoPhases() cuts count into: the scratch to make for it
+inline int twoPhaseShares(int count)
+{
+    if (sequentialShares().shares > 0)
+        return sequentialShares().shares;
+#ifdef SPRINGLAB_OPENMP
+    if (count >= kParallelMinimum)
+        return omp_get_max_threads();
+#endif
+    (void)count;
+    return 1;
+}
+
+// each thread's contiguous share of [0, count): first(thread, begin, end) on every share, then,
+// once every thread has finished its first, second(thread, begin, end) on the same share. For a
+// pass whose threads must copy what their neighbours are about to overwrite
+template <typename First, typename Second>
+void parallelChunksInTwoPhases(int count, First &&first, Second &&second)
+{
+    const auto share = [count](long long thread, long long threads) {
+        return std::pair<int, int>(static_cast<int>(count * thread / threads), static_cast<int>(count * (thread + 1) / threads));
+    };
+    if (const SequentialShares order = sequentialShares(); order.shares > 0) {
+        for (int pass = 0; pass < 2; ++pass)
+            for (int k = 0; k < order.shares; ++k) {
+                const int thread = order.descending ? order.shares - 1 - k : k;
+                const auto [begin, end] = share(thread, order.shares);
+                if (pass == 0)
+                    first(thread, begin, end);
+                else
+                    second(thread, begin, end);
+            }
+        return;
+    }
+#ifdef SPRINGLAB_OPENMP
+    if (count >= kParallelMinimum) {
+#pragma omp parallel
+        {
+            const int threads = omp_get_num_threads();
+            const int thread = omp_get_thread_num();
+            const auto [begin, end] = share(thread, threads);
+            first(thread, begin, end);
+#pragma omp barrier
+            second(thread, begin, end);
+        }
+        return;
+    }
+#endif
+    first(0, 0, count);
+    second(0, 0, count);
 }
 
 }  // namespace core

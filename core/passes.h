@@ -24,6 +24,10 @@ void accelerations(const Model &model, const State &state, Eigen::Matrix3Xd &out
 // often as its scheme needs (integrate.cpp, with rk4.cpp, implicit_euler.cpp, adaptive_rk45.cpp)
 void integrate(const Model &model, State &state, double h);
 void rk4(const Model &model, State &state, double h);
+// the symplectic (or explicit) Euler sub-step of a model that usesSpringBlocks(): forces and update
+// fused, block by block, the same bits as computeForces() and the update; returns whether every new
+// value of the free particles is finite and bounded (spring_blocks.cpp)
+bool stepSpringBlocks(const Model &model, State &state, double h, bool symplectic);
 void implicitEuler(const Model &model, State &state, double h);
 void adaptiveRk45(const Model &model, State &state, double h);
 

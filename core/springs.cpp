@@ -1,3 +1,4 @@
+#include "spring_kernels.h"
 #include "geometry.h"
 #include "parallel.h"
 #include "passes.h"
@@ -5,15 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-
-// target clones where the compiler and CPU family support them (GCC on x86-64); elsewhere one
-// portable version. Not under ThreadSanitizer: the clones' resolver runs while the program is
-// being loaded, before the sanitizer's runtime is up, and its instrumented code crashes there
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_THREAD__)
-#define SPRINGLAB_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
-#else
-#define SPRINGLAB_SIMD_CLONES
-#endif
 
 namespace core {
 
@@ -32,34 +24,6 @@ Eigen::Vector3d springForce(const Model &model, const State &state, int k)
     const double stretch = length - model.restLength[k];
     const double approach = (v.col(a) - v.col(b)).dot(u);
     return (-model.stiffness[k] * stretch - model.damping[k] * approach) * u;
-}
-
-// the handout's damped spring on end a into out[0 .. 2], from its ends' positions and velocities.
-// Inlined into the kernels below, which the compiler vectorises across springs; the clones let one
-// binary use AVX2 or AVX-512 where the CPU has them. Each value comes from the same IEEE adds,
-// multiplies, divides and square roots as springForce above, in the same order and never
-// contracted (cmake/springlab_flags.cmake), so every clone, both kernels and the reference give the
-// same bits. A broken spring's force is a select to zero, which keeps the loops vectorised.
-[[gnu::always_inline]] inline void dampedSpring(const double *xa, const double *xb, const double *va,
-                                                const double *vb, double restLength, double stiffness,
-                                                double damping, bool broken, double *out)
-{
-    const double dx = xa[0] - xb[0];
-    const double dy = xa[1] - xb[1];
-    const double dz = xa[2] - xb[2];
-    const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
-    // coincident ends push along +y, as directionOr does; one division, as there
-    const bool separate = apart(length);
-    const double inverse = 1.0 / (separate ? length : 1.0);
-    const double ux = separate ? dx * inverse : 0.0;
-    const double uy = separate ? dy * inverse : 1.0;
-    const double uz = separate ? dz * inverse : 0.0;
-    const double approach = (va[0] - vb[0]) * ux + (va[1] - vb[1]) * uy + (va[2] - vb[2]) * uz;
-    double magnitude = -stiffness * (length - restLength) - damping * approach;
-    magnitude = broken ? 0.0 : magnitude;
-    out[0] = magnitude * ux;
-    out[1] = magnitude * uy;
-    out[2] = magnitude * uz;
 }
 
 // springs [begin, end) of any list, their ends gathered by index, three values per spring into out.
@@ -108,27 +72,16 @@ SPRINGLAB_SIMD_CLONES void addForces(int count, double sign, const double *__res
 constexpr int kRunChunk = 256;
 
 // The run's springs j in [lo, hi), a chunk at a time: compute the chunk's forces, then add them
-// to the ends of those springs that lie in this thread's particles, j in [aLo, aHi) for end a and
-// [bLo, bHi) for end b. Within one run a particle is end a of at most one spring and end b of at
-// most one, and the plain loop adds the lower-numbered spring's force first: end b's first when
-// b > a, as that spring is (p - b) < (p - a). Chunk by chunk in ascending j, adding end b's
-// before end a's when b > a (and the other way round otherwise), every particle receives its
-// forces in the plain loop's order, whichever thread it falls to.
+// to the ends of those springs that lie in this thread's particles (sides), in the plain loop's
+// order (addInPlainOrder).
 template <bool Breakable>
-void runPiece(const Model &model, State &state, const Model::SpringRun &run, int lo, int hi, int aLo, int aHi,
-              int bLo, int bHi)
+void runPiece(const Model &model, State &state, const Model::SpringRun &run, int lo, int hi, const RunSides &sides)
 {
     double chunk[3 * kRunChunk];
     const double *x = state.position.data();
     const double *v = state.velocity.data();
     double *f = state.force.data();
     const std::uint8_t *broken = Breakable ? state.springBroken.data() + run.first : nullptr;
-    const auto addSide = [&](int begin, int end, int lowest, int highest, int particle, double sign) {
-        const int from = std::max(begin, lowest);
-        const int to = std::min(end, highest);
-        if (from < to)
-            addForces(to - from, sign, chunk + 3 * (from - begin), f + 3 * (particle + from));
-    };
     for (int begin = lo; begin < hi; begin += kRunChunk) {
         const int end = std::min(hi, begin + kRunChunk);
         const int spring = run.first + begin;
@@ -136,13 +89,12 @@ void runPiece(const Model &model, State &state, const Model::SpringRun &run, int
                              model.damping.data() + spring, Breakable ? broken + begin : nullptr,
                              x + 3 * (run.a + begin), x + 3 * (run.b + begin), v + 3 * (run.a + begin),
                              v + 3 * (run.b + begin), chunk);
-        if (run.b > run.a) {
-            addSide(begin, end, bLo, bHi, run.b, -1.0);
-            addSide(begin, end, aLo, aHi, run.a, +1.0);
-        } else {
-            addSide(begin, end, aLo, aHi, run.a, +1.0);
-            addSide(begin, end, bLo, bHi, run.b, -1.0);
-        }
+        addInPlainOrder(run, sides, [&](int lowest, int highest, int particle, double sign) {
+            const int from = std::max(begin, lowest);
+            const int to = std::min(end, highest);
+            if (from < to)
+                addForces(to - from, sign, chunk + 3 * (from - begin), f + 3 * (particle + from));
+        });
     }
 }
 
@@ -151,26 +103,10 @@ void runPiece(const Model &model, State &state, const Model::SpringRun &run, int
 template <bool Breakable>
 void runsOnParticles(const Model &model, State &state, int first, int last)
 {
-    for (const Model::SpringRun &run : model.springRuns) {
-        const int aLo = std::max(0, first - run.a);
-        const int aHi = std::min(run.count, last - run.a);
-        const int bLo = std::max(0, first - run.b);
-        const int bHi = std::min(run.count, last - run.b);
-        const bool aSide = aLo < aHi;
-        const bool bSide = bLo < bHi;
-        if (!aSide && !bSide)
-            continue;
-        if (!aSide || !bSide) {
-            runPiece<Breakable>(model, state, run, aSide ? aLo : bLo, aSide ? aHi : bHi, aLo, aHi, bLo, bHi);
-        } else if (std::max(aLo, bLo) <= std::min(aHi, bHi)) {
-            runPiece<Breakable>(model, state, run, std::min(aLo, bLo), std::max(aHi, bHi), aLo, aHi, bLo, bHi);
-        } else {
-            // two separate stretches (the ends lie far apart in the numbering): skip the springs between
-            const bool aBelow = aLo < bLo;
-            runPiece<Breakable>(model, state, run, aBelow ? aLo : bLo, aBelow ? aHi : bHi, aLo, aHi, bLo, bHi);
-            runPiece<Breakable>(model, state, run, aBelow ? bLo : aLo, aBelow ? bHi : aHi, aLo, aHi, bLo, bHi);
-        }
-    }
+    for (const Model::SpringRun &run : model.springRuns)
+        forEachRunPiece(run, first, last, [&](int lo, int hi, const RunSides &sides) {
+            runPiece<Breakable>(model, state, run, lo, hi, sides);
+        });
 }
 
 }  // namespace

@@ -71,6 +71,9 @@ struct State {
     std::array<Eigen::Matrix3Xd, 18> scratchArrays;
     // scratch of the spring pass: each spring's force on its end a (made on first use)
     Eigen::Matrix3Xd springForce;
+    // scratch of the fused lattice sub-step (spring_blocks.cpp): each thread's window of particles
+    // and its block's forces (made on first use, and again when the thread count changes)
+    std::vector<double> blockScratch;
     // set by the Euler updates when every free particle's new position and velocity is finite and
     // bounded (checked in the same loop that wrote them); the step clears it before integrating and
     // when a contact pass moves particles, and the finite check then only checks the pinned ones

@@ -5,7 +5,10 @@
 #include "core/scene.h"
 #include "core/state.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace test {
 
@@ -37,6 +40,37 @@ inline Sim compile(const core::SceneDesc &scene)
     auto model = core::compileModel(scene);
     core::State state = core::makeState(*model, scene);
     return Sim{model, std::move(state)};
+}
+
+// a cheap deterministic generator for test scenes: next(range) is in [0, range)
+struct Lcg {
+    std::uint32_t seed;
+    int operator()(std::uint32_t range)
+    {
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<int>((seed >> 8) % range);
+    }
+};
+
+// About 6 springs per particle, in runs (a + j, a + offset + j) with each run's offset drawn from
+// offsets and one to maxCount springs (one run in five of a single spring), random parameters:
+// the springs of a lattice, cut and shuffled into every shape a run can take
+inline void addRandomRuns(core::SceneDesc &scene, const std::vector<int> &offsets, int maxCount, Lcg &next)
+{
+    const int n = static_cast<int>(scene.particles.size());
+    int springs = 0;
+    while (springs < 6 * n) {
+        const int offset = offsets[static_cast<std::size_t>(next(static_cast<std::uint32_t>(offsets.size())))];
+        const int count = next(5) == 0 ? 1 : 1 + next(static_cast<std::uint32_t>(maxCount));
+        const int low = std::max(0, -offset);
+        const int high = std::min(n, n - offset) - count;  // a + count - 1 < n, b too
+        if (high <= low)
+            continue;
+        const int a = low + next(static_cast<std::uint32_t>(high - low));
+        for (int j = 0; j < count; ++j, ++springs)
+            scene.springs.push_back(core::SpringDesc{a + j, a + offset + j, 10.0 + next(1000), next(10) * 0.1,
+                                                     0.5 + next(100) * 1e-2});
+    }
 }
 
 }  // namespace test

@@ -198,28 +198,11 @@ void TestSprings::runsEqualThePlainLoopToTheBit()
     QFETCH(int, particles);
     QFETCH(bool, breakable);
     core::SceneDesc scene = test::quietScene();
-    std::uint32_t seed = 17u;
-    const auto next = [&seed](std::uint32_t range) {
-        seed = seed * 1664525u + 1013904223u;
-        return static_cast<int>((seed >> 8) % range);
-    };
+    test::Lcg next{17u};
     for (int i = 0; i < particles; ++i)
         scene.particles.push_back(test::particle(Eigen::Vector3d(next(1000) * 1e-3, next(1000) * 1e-3, next(1000) * 1e-3),
                                                  Eigen::Vector3d(next(100) * 1e-2, next(100) * 1e-2, 0.0)));
-    const int offsets[] = {1, -1, 2, -3, particles / 2 + 1, -(particles / 2 + 7), 37};
-    int springs = 0;
-    while (springs < 6 * particles) {
-        const int offset = offsets[next(7)];
-        const int count = next(5) == 0 ? 1 : 1 + next(400);
-        const int low = std::max(0, -offset);
-        const int high = std::min(particles, particles - offset) - count;  // a + count - 1 < n, b too
-        if (high <= low)
-            continue;
-        const int a = low + next(std::uint32_t(high - low));
-        for (int j = 0; j < count; ++j, ++springs)
-            scene.springs.push_back(core::SpringDesc{a + j, a + offset + j, 10.0 + next(1000), next(10) * 0.1,
-                                                     0.5 + next(100) * 1e-2});
-    }
+    test::addRandomRuns(scene, {1, -1, 2, -3, particles / 2 + 1, -(particles / 2 + 7), 37}, 400, next);
     const core::Model probe = *core::compileModel(scene);
     QVERIFY2(probe.usesSpringRuns(), "the scene should be cut into long runs");
 

@@ -82,6 +82,9 @@ void TestLifecycle::startRunLoadAndCloseWhileRunning()
         QVERIFY(controller.isRunning());
         window->close();
         window.reset();
+        // the long runs report how far they got, so a stop names its cycle
+        if ((cycle + 1) % 50 == 0)
+            qInfo("cycle %d of %d done", cycle + 1, cycles);
     }
 }
 

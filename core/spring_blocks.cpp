@@ -1,0 +1,404 @@
+// The Euler sub-step of a lattice-like model (Model::usesSpringBlocks()), a block of particles at a
+// time, with every force pass and the update fused. Run separately, gravity, the springs and the
+// update each stream the particle arrays from memory, and the spring kernel spends its time turning
+// xyz triples into vectors, twelve reads per particle. Here each thread walks its share of the
+// particles block by block, and for each block
+//   1. takes the positions and velocities of the block and of the springs' reach either side into
+//      one array per component (the window), each particle once, as the window slides on;
+//   2. sums the block's forces there: gravity, drag, the springs run by run (Model::blockRuns), the
+//      applied forces, each particle in the plain passes' order;
+//   3. moves the block's free particles, checking what it writes.
+// The window holds the old values, so a block's springs see the state at the start of the sub-step
+// even after the block before it has moved. The particles just past a thread's share belong to the
+// next thread, which may move them first: each thread copies its neighbours' reach before any
+// thread moves anything (the first phase).
+//
+// Every force and every update comes from the same operations in the same order as the separate
+// passes (computeForces, then the Euler update), so the bits are theirs, on any number of threads.
+
+#include "spring_kernels.h"
+#include "parallel.h"
+#include "passes.h"
+#include "step.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cassert>
+#include <chrono>
+#include <cstring>
+
+namespace core {
+
+namespace {
+
+constexpr int kChunk = 256;  // springs per chunk: their forces (6 KB) are added while in the L1 cache
+
+// the two ends of the springs of a chunk, one array per component, already at the chunk's first
+struct EndLanes {
+    const double *x, *y, *z, *vx, *vy, *vz;
+};
+
+// the chunk's forces on end a, one array per component
+struct ForceLanes {
+    double *x, *y, *z;
+};
+
+template <bool Breakable>
+SPRINGLAB_SIMD_CLONES void chunkForces(int count, const double *__restrict restLength, const double *__restrict stiffness,
+                                       const double *__restrict damping, const std::uint8_t *__restrict broken,
+                                       EndLanes a, EndLanes b, ForceLanes out)
+{
+#pragma omp simd
+    for (int j = 0; j < count; ++j) {
+        const SpringEnds ends{a.x[j] - b.x[j], a.y[j] - b.y[j], a.z[j] - b.z[j],
+                              a.vx[j] - b.vx[j], a.vy[j] - b.vy[j], a.vz[j] - b.vz[j]};
+        dampedSpring(ends, restLength[j], stiffness[j], damping[j], Breakable && broken[j] != 0, out.x[j], out.y[j],
+                     out.z[j]);
+    }
+}
+
+// force[i] ± perSpring[i] over count values
+SPRINGLAB_SIMD_CLONES void addLane(int count, double sign, const double *__restrict perSpring, double *__restrict force)
+{
+#pragma omp simd
+    for (int i = 0; i < count; ++i)
+        force[i] = sign > 0.0 ? force[i] + perSpring[i] : force[i] - perSpring[i];
+}
+
+// One thread's scratch, carved out of State::blockScratch: the window of positions and velocities
+// (particles [lo, hi), index p - lo), the copy of the next thread's first particles (the trail,
+// index p - last), and the block's forces (index p - begin).
+struct Slot {
+    std::array<double *, 6> window;  // x, y, z, vx, vy, vz
+    std::array<double *, 6> trail;
+    std::array<double *, 3> force;
+    int lo = 0;
+    int hi = 0;
+};
+
+std::size_t slotSize(int reach)
+{
+    return 6 * static_cast<std::size_t>(kSpringBlock + 2 * reach) + 6 * static_cast<std::size_t>(reach) +
+           3 * static_cast<std::size_t>(kSpringBlock);
+}
+
+Slot slotAt(double *base, int reach)
+{
+    Slot slot;
+    const std::size_t window = static_cast<std::size_t>(kSpringBlock + 2 * reach);
+    for (int k = 0; k < 6; ++k)
+        slot.window[static_cast<std::size_t>(k)] = base + static_cast<std::size_t>(k) * window;
+    base += 6 * window;
+    for (int k = 0; k < 6; ++k)
+        slot.trail[static_cast<std::size_t>(k)] = base + static_cast<std::size_t>(k * reach);
+    base += 6 * static_cast<std::size_t>(reach);
+    for (int k = 0; k < 3; ++k)
+        slot.force[static_cast<std::size_t>(k)] = base + static_cast<std::size_t>(k * kSpringBlock);
+    return slot;
+}
+
+// particles [from, to) of the xyz triples x and v into the lanes out, at index p - origin
+void splitTriples(const double *x, const double *v, int from, int to, int origin, const std::array<double *, 6> &out)
+{
+    for (int axis = 0; axis < 3; ++axis) {
+        double *__restrict px = out[static_cast<std::size_t>(axis)] - origin;
+        double *__restrict pv = out[static_cast<std::size_t>(3 + axis)] - origin;
+#pragma omp simd
+        for (int p = from; p < to; ++p) {
+            px[p] = x[3 * p + axis];
+            pv[p] = v[3 * p + axis];
+        }
+    }
+}
+
+// what one sub-step needs, the same for every thread
+struct Pass {
+    const Model &model;
+    State &state;
+    double h;
+    int reach;  // Model::springReach
+};
+
+// the window extended to hold particles [slot.hi, to): this thread's own from the arrays (not moved
+// yet), the next thread's from the trail
+void extendWindow(const Pass &pass, Slot &slot, int last, int to)
+{
+    const int own = std::min(to, last);
+    if (slot.hi < own)
+        splitTriples(pass.state.position.data(), pass.state.velocity.data(), slot.hi, own, slot.lo, slot.window);
+    const int from = std::max(slot.hi, last);
+    if (from < to)
+        for (int k = 0; k < 6; ++k)
+            std::memcpy(slot.window[static_cast<std::size_t>(k)] + (from - slot.lo),
+                        slot.trail[static_cast<std::size_t>(k)] + (from - last),
+                        static_cast<std::size_t>(to - from) * sizeof(double));
+    slot.hi = std::max(slot.hi, to);
+}
+
+// the window's particles before lo dropped (they are out of every later block's reach)
+void slideWindow(Slot &slot, int lo)
+{
+    if (lo <= slot.lo)
+        return;
+    for (double *lane : slot.window)
+        std::memmove(lane, lane + (lo - slot.lo), static_cast<std::size_t>(slot.hi - lo) * sizeof(double));
+    slot.lo = lo;
+}
+
+// gravity and drag: the forces of particles [begin, end) set to 0 + m g - c v, as the passes do
+void startForces(const Pass &pass, const Slot &slot, int begin, int end)
+{
+    const Model &model = pass.model;
+    const double *mass = model.mass.data();
+    for (int axis = 0; axis < 3; ++axis) {
+        double *__restrict f = slot.force[static_cast<std::size_t>(axis)] - begin;
+        const double g = model.gravity[axis];
+        if (model.plan.gravity) {
+#pragma omp simd
+            for (int p = begin; p < end; ++p)
+                f[p] = 0.0 + g * mass[p];
+        } else {
+            std::fill(f + begin, f + end, 0.0);
+        }
+    }
+}
+
+void addDragForces(const Pass &pass, const Slot &slot, int begin, int end)
+{
+    const double c = pass.model.viscosity;
+    for (int axis = 0; axis < 3; ++axis) {
+        double *__restrict f = slot.force[static_cast<std::size_t>(axis)] - begin;
+        const double *__restrict v = slot.window[static_cast<std::size_t>(3 + axis)] - slot.lo;
+#pragma omp simd
+        for (int p = begin; p < end; ++p)
+            f[p] = f[p] - c * v[p];
+    }
+}
+
+void addAppliedForces(const Pass &pass, const Slot &slot, int begin, int end)
+{
+    const double *applied = pass.state.applied.data();
+    for (int axis = 0; axis < 3; ++axis) {
+        double *__restrict f = slot.force[static_cast<std::size_t>(axis)] - begin;
+#pragma omp simd
+        for (int p = begin; p < end; ++p)
+            f[p] = f[p] + applied[3 * p + axis];
+    }
+}
+
+// A run's springs j in [lo, hi), a chunk at a time, their forces added to the ends that lie in
+// the block [begin, end) (sides), in the plain loop's order (addInPlainOrder)
+template <bool Breakable>
+void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run, int lo, int hi,
+                const RunSides &sides, int begin)
+{
+    double chunk[3 * kChunk];
+    const ForceLanes out{chunk, chunk + kChunk, chunk + 2 * kChunk};
+    const Model &model = pass.model;
+    const auto ends = [&](int particle) {
+        const int i = particle - slot.lo;
+        return EndLanes{slot.window[0] + i, slot.window[1] + i, slot.window[2] + i,
+                        slot.window[3] + i, slot.window[4] + i, slot.window[5] + i};
+    };
+    for (int from = lo; from < hi; from += kChunk) {
+        const int to = std::min(hi, from + kChunk);
+        const int spring = run.first + from;
+        chunkForces<Breakable>(to - from, model.restLength.data() + spring, model.stiffness.data() + spring,
+                               model.damping.data() + spring,
+                               Breakable ? pass.state.springBroken.data() + spring : nullptr, ends(run.a + from),
+                               ends(run.b + from), out);
+        addInPlainOrder(run, sides, [&](int lowest, int highest, int firstEnd, double sign) {
+            const int j0 = std::max(from, lowest);
+            const int j1 = std::min(to, highest);
+            if (j0 < j1)
+                for (int axis = 0; axis < 3; ++axis)
+                    addLane(j1 - j0, sign, chunk + axis * kChunk + (j0 - from),
+                            slot.force[static_cast<std::size_t>(axis)] + (firstEnd + j0 - begin));
+        });
+    }
+}
+
+// every spring with an end in [begin, end), which lies in one block of the model's index
+template <bool Breakable>
+void springsOnBlock(const Pass &pass, const Slot &slot, int begin, int end)
+{
+    const Model &model = pass.model;
+    const auto q = static_cast<std::size_t>(begin / kSpringBlock);
+    for (int e = model.blockRunOffsets[q]; e < model.blockRunOffsets[q + 1]; ++e) {
+        const Model::SpringRun &run = model.springRuns[static_cast<std::size_t>(model.blockRuns[static_cast<std::size_t>(e)])];
+        forEachRunPiece(run, begin, end, [&](int lo, int hi, const RunSides &sides) {
+            runOnBlock<Breakable>(pass, slot, run, lo, hi, sides, begin);
+        });
+    }
+}
+
+// the Euler update of the free particles [from, to) of the block that starts at begin, from the
+// window's old values, written to the state's arrays; whether any new value is bad (as
+// integrate.cpp's eulerUpdate, the same operations)
+template <bool Symplectic>
+bool moveParticles(const Pass &pass, const Slot &slot, int from, int to, int begin)
+{
+    const double h = pass.h;
+    const double *__restrict invMass = pass.model.invMass.data();
+    double *__restrict x = pass.state.position.data();
+    double *__restrict v = pass.state.velocity.data();
+    int bad = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double *__restrict f = slot.force[static_cast<std::size_t>(axis)] - begin;
+        const double *__restrict oldX = slot.window[static_cast<std::size_t>(axis)] - slot.lo;
+        const double *__restrict oldV = slot.window[static_cast<std::size_t>(3 + axis)] - slot.lo;
+#pragma omp simd reduction(| : bad)
+        for (int p = from; p < to; ++p) {
+            const double kick = h * invMass[p];
+            const double next = oldV[p] + kick * f[p];
+            const double moved = oldX[p] + h * (Symplectic ? next : oldV[p]);
+            v[3 * p + axis] = next;
+            x[3 * p + axis] = moved;
+            bad |= (std::abs(next) <= kBlowupBound && std::abs(moved) <= kBlowupBound) ? 0 : 1;
+        }
+    }
+    return bad != 0;
+}
+
+// seconds since the last lap, added to one of the force stages' clocks
+class StageClock {
+public:
+    explicit StageClock(bool on) : m_on(on), m_last(on ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{}) {}
+    void lap(double &seconds)
+    {
+        if (!m_on)
+            return;
+        const auto now = std::chrono::steady_clock::now();
+        seconds += std::chrono::duration<double>(now - m_last).count();
+        m_last = now;
+    }
+
+private:
+    bool m_on;
+    std::chrono::steady_clock::time_point m_last;
+};
+
+// the force stages' seconds, as the first thread saw them (the threads run side by side)
+struct ForceSeconds {
+    double gravity = 0.0, drag = 0.0, springs = 0.0, applied = 0.0;
+};
+
+// one thread's share [first, last), block by block; whether any new value is bad. seconds, on the
+// first thread only, collects the force stages' time
+template <bool Breakable, bool Symplectic>
+bool stepShare(const Pass &pass, Slot &slot, int first, int last, ForceSeconds *seconds)
+{
+    const Model &model = pass.model;
+    const StepPlan &plan = model.plan;
+    const int n = model.particleCount();
+    const std::vector<int> &ranges = model.freeRanges;
+    std::size_t range = 0;  // the first free stretch that ends past the block's start
+    while (range < ranges.size() && ranges[range + 1] <= first)
+        range += 2;
+    ForceSeconds elsewhere;  // the time of the update and of clearing: not a force stage's
+    ForceSeconds &clock = seconds ? *seconds : elsewhere;
+    StageClock stages(seconds != nullptr);
+    bool bad = false;
+    for (int begin = first; begin < last;) {
+        const int end = std::min(last, (begin / kSpringBlock + 1) * kSpringBlock);
+        startForces(pass, slot, begin, end);
+        stages.lap(plan.gravity ? clock.gravity : elsewhere.gravity);
+        if (plan.drag) {
+            addDragForces(pass, slot, begin, end);
+            stages.lap(clock.drag);
+        }
+        springsOnBlock<Breakable>(pass, slot, begin, end);
+        stages.lap(clock.springs);
+        if (pass.state.appliedCount > 0) {
+            addAppliedForces(pass, slot, begin, end);
+            stages.lap(clock.applied);
+        }
+        for (; range < ranges.size() && ranges[range] < end; range += 2) {
+            const int from = std::max(begin, ranges[range]);
+            const int to = std::min(end, ranges[range + 1]);
+            if (from < to && moveParticles<Symplectic>(pass, slot, from, to, begin))
+                bad = true;
+            if (ranges[range + 1] > end)
+                break;  // goes on into the next block
+        }
+        stages.lap(elsewhere.applied);
+        begin = end;
+        if (begin < last) {
+            slideWindow(slot, std::max(0, begin - pass.reach));
+            extendWindow(pass, slot, last, std::min(n, std::min(last, begin + kSpringBlock) + pass.reach));
+            stages.lap(clock.springs);
+        }
+    }
+    return bad;
+}
+
+template <bool Breakable, bool Symplectic>
+bool stepBlocks(const Pass &pass, double *scratch, ForceSeconds &seconds)
+{
+    const Model &model = pass.model;
+    const int n = model.particleCount();
+    const int reach = pass.reach;
+    const std::size_t size = slotSize(reach);
+    std::atomic<bool> bad = false;
+    parallelChunksInTwoPhases(
+        n,
+        [&](int thread, int first, int last) {
+            // before anyone moves: the reach before the share (the window's start) and after it
+            Slot slot = slotAt(scratch + static_cast<std::size_t>(thread) * size, reach);
+            const int lo = std::max(0, first - reach);
+            splitTriples(pass.state.position.data(), pass.state.velocity.data(), lo, first, lo, slot.window);
+            const int trailEnd = std::min(n, last + reach);
+            if (last < trailEnd)
+                splitTriples(pass.state.position.data(), pass.state.velocity.data(), last, trailEnd, last, slot.trail);
+        },
+        [&](int thread, int first, int last) {
+            if (first >= last)
+                return;
+            Slot slot = slotAt(scratch + static_cast<std::size_t>(thread) * size, reach);
+            slot.lo = std::max(0, first - reach);
+            slot.hi = first;
+            const int firstEnd = std::min(last, (first / kSpringBlock + 1) * kSpringBlock);
+            extendWindow(pass, slot, last, std::min(n, firstEnd + reach));
+            if (stepShare<Breakable, Symplectic>(pass, slot, first, last, thread == 0 ? &seconds : nullptr))
+                bad.store(true, std::memory_order_relaxed);
+        });
+    return bad.load(std::memory_order_relaxed);
+}
+
+void addStage(State &state, Stage stage, bool ran, double seconds)
+{
+    if (!ran)
+        return;
+    StageTiming &timing = state.profile[stage];
+    timing.calls += 1;
+    timing.seconds += seconds;
+}
+
+}  // namespace
+
+bool stepSpringBlocks(const Model &model, State &state, double h, bool symplectic)
+{
+    assert(model.usesSpringBlocks());
+    const int reach = model.springReach;
+    const std::size_t size = slotSize(reach) * static_cast<std::size_t>(twoPhaseShares(model.particleCount()));
+    if (state.blockScratch.size() != size)
+        state.blockScratch.resize(size);  // on first use, and when the thread count changes
+    const bool breakable = !state.springBroken.empty();
+    const Pass pass{model, state, h, reach};
+    ForceSeconds seconds;
+    double *scratch = state.blockScratch.data();
+    bool bad = false;
+    if (breakable)
+        bad = symplectic ? stepBlocks<true, true>(pass, scratch, seconds) : stepBlocks<true, false>(pass, scratch, seconds);
+    else
+        bad = symplectic ? stepBlocks<false, true>(pass, scratch, seconds) : stepBlocks<false, false>(pass, scratch, seconds);
+    addStage(state, Stage::Gravity, model.plan.gravity, seconds.gravity);
+    addStage(state, Stage::Drag, model.plan.drag, seconds.drag);
+    addStage(state, Stage::Springs, true, seconds.springs);
+    addStage(state, Stage::Applied, state.appliedCount > 0, seconds.applied);
+    state.forceEvaluations += 1;
+    return !bad;
+}
+
+}  // namespace core

@@ -1,0 +1,110 @@
+#pragma once
+// What the vectorised spring kernels (springs.cpp, spring_blocks.cpp) share: the target clones
+// they are built with, the handout's damped spring, and how a run of springs is cut at the edges of
+// a stretch of particles and in which order its forces reach their ends.
+
+#include "geometry.h"
+#include "model.h"
+
+#include <algorithm>
+
+#include <cmath>
+
+// target clones where the compiler and CPU family support them (GCC on x86-64); elsewhere one
+// portable version. Not under ThreadSanitizer: the clones' resolver runs while the program is
+// being loaded, before the sanitizer's runtime is up, and its instrumented code crashes there
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_THREAD__)
+#define SPRINGLAB_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
+#else
+#define SPRINGLAB_SIMD_CLONES
+#endif
+
+namespace core {
+
+// One spring's ends: the difference of their positions, d = xa - xb, and of their velocities.
+struct SpringEnds {
+    double dx, dy, dz;
+    double dvx, dvy, dvz;
+};
+
+// The handout's damped spring on end a, -k (l - l0) u - kc ((va - vb)·u) u with u = d / l, into
+// (fx, fy, fz). Inlined into kernels that the compiler vectorises across springs; the clones let
+// one binary use AVX2 or AVX-512 where the CPU has them. Each value comes from the same IEEE adds,
+// multiplies, divides and square roots as the reference (springs.cpp's springForce), in the same
+// order and never contracted (cmake/springlab_flags.cmake), so every clone, every kernel and the
+// reference give the same bits. A broken spring's force is a select to zero, which keeps the loops
+// vectorised.
+[[gnu::always_inline]] inline void dampedSpring(const SpringEnds &e, double restLength, double stiffness,
+                                                double damping, bool broken, double &fx, double &fy, double &fz)
+{
+    const double length = std::sqrt(e.dx * e.dx + e.dy * e.dy + e.dz * e.dz);
+    // coincident ends push along +y, as directionOr does; one division, as there
+    const bool separate = apart(length);
+    const double inverse = 1.0 / (separate ? length : 1.0);
+    const double ux = separate ? e.dx * inverse : 0.0;
+    const double uy = separate ? e.dy * inverse : 1.0;
+    const double uz = separate ? e.dz * inverse : 0.0;
+    const double approach = e.dvx * ux + e.dvy * uy + e.dvz * uz;
+    double magnitude = -stiffness * (length - restLength) - damping * approach;
+    magnitude = broken ? 0.0 : magnitude;
+    fx = magnitude * ux;
+    fy = magnitude * uy;
+    fz = magnitude * uz;
+}
+
+// the same from xyz triples (positions and velocities stored particle by particle), into out[0 .. 2]
+[[gnu::always_inline]] inline void dampedSpring(const double *xa, const double *xb, const double *va,
+                                                const double *vb, double restLength, double stiffness,
+                                                double damping, bool broken, double *out)
+{
+    const SpringEnds ends{xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2], va[0] - vb[0], va[1] - vb[1], va[2] - vb[2]};
+    dampedSpring(ends, restLength, stiffness, damping, broken, out[0], out[1], out[2]);
+}
+
+// The springs j of a run whose end a (j in [aLo, aHi)) or end b (j in [bLo, bHi)) lies in a
+// stretch of particles
+struct RunSides {
+    int aLo, aHi, bLo, bHi;
+};
+
+// piece(lo, hi, sides) for the springs of the run with an end in particles [first, last): once for
+// one stretch of springs j in [lo, hi), or twice when the two ends lie so far apart in the
+// numbering that the springs between touch neither side
+template <typename Piece>
+void forEachRunPiece(const Model::SpringRun &run, int first, int last, Piece &&piece)
+{
+    const RunSides s{std::max(0, first - run.a), std::min(run.count, last - run.a), std::max(0, first - run.b),
+                     std::min(run.count, last - run.b)};
+    const bool aSide = s.aLo < s.aHi;
+    const bool bSide = s.bLo < s.bHi;
+    if (!aSide && !bSide)
+        return;
+    if (!aSide || !bSide) {
+        piece(aSide ? s.aLo : s.bLo, aSide ? s.aHi : s.bHi, s);
+    } else if (std::max(s.aLo, s.bLo) <= std::min(s.aHi, s.bHi)) {
+        piece(std::min(s.aLo, s.bLo), std::max(s.aHi, s.bHi), s);
+    } else {
+        const bool aBelow = s.aLo < s.bLo;
+        piece(aBelow ? s.aLo : s.bLo, aBelow ? s.aHi : s.bHi, s);
+        piece(aBelow ? s.bLo : s.aLo, aBelow ? s.bHi : s.aHi, s);
+    }
+}
+
+// A chunk's forces added to its springs' ends, add(lowest, highest, firstEnd, sign) for each side.
+// Within one run a particle is end a of at most one spring and end b of at most one, and the plain
+// loop adds the lower-numbered spring's force first: end b's when b > a, as that spring is
+// (p - b) < (p - a). Chunk by chunk in ascending j, in this order, every particle receives its
+// forces in the plain loop's order, whichever stretch or thread it falls to.
+template <typename AddSide>
+void addInPlainOrder(const Model::SpringRun &run, const RunSides &s, AddSide &&add)
+{
+    if (run.b > run.a) {
+        add(s.bLo, s.bHi, run.b, -1.0);
+        add(s.aLo, s.aHi, run.a, +1.0);
+    } else {
+        add(s.aLo, s.aHi, run.a, +1.0);
+        add(s.bLo, s.bHi, run.b, -1.0);
+    }
+}
+
+}  // namespace core

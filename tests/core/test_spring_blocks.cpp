@@ -1,0 +1,273 @@
+// The fused lattice sub-step (core/spring_blocks.cpp) against the separate passes it replaces:
+// the same bits on random runs of every shape, with and without gravity, drag, applied forces,
+// pins and broken springs, on 1 and 2 threads; which models take it; its index of runs by block;
+// its finite check; and its profile.
+
+#include "core/generators.h"
+#include "core/parallel.h"
+#include "core/passes.h"
+#include "core/step.h"
+#include "core/threads.h"
+
+#include "scene_builder.h"
+
+#include <QtTest>
+
+#include <cstdint>
+
+class TestSpringBlocks : public QObject {
+    Q_OBJECT
+
+private slots:
+    void latticeModelsUseBlocks();
+    void indexListsEveryRunOfEachBlock();
+    void blocksEqualTheSeparatePassesToTheBit_data();
+    void blocksEqualTheSeparatePassesToTheBit();
+    void badValueStopsTheStep();
+    void profileCountsEachForceStage();
+};
+
+namespace {
+
+struct Options {
+    int particles = 600;
+    bool gravity = false;
+    bool drag = false;
+    bool pins = false;
+};
+
+// Springs in runs whose ends lie 1 to kSpringBlock apart, in order and reversed, long and of one
+// spring, so that runs cross blocks and thread shares on either side
+core::SceneDesc randomRuns(const Options &options, std::uint32_t seed)
+{
+    core::SceneDesc scene = test::quietScene();
+    if (options.gravity)
+        scene.settings.gravity = Eigen::Vector3d(0.3, -9.81, 0.1);
+    scene.settings.viscosity = options.drag ? 0.37 : 0.0;
+    scene.settings.timeStep = 1e-3;
+    test::Lcg next{seed};
+    const int n = options.particles;
+    for (int i = 0; i < n; ++i) {
+        const bool pinned = options.pins && (i % 97 == 3 || (i >= 1000 && i < 1100));
+        scene.particles.push_back(test::particle(Eigen::Vector3d(next(1000) * 1e-3, next(1000) * 1e-3, next(1000) * 1e-3),
+                                                 pinned ? Eigen::Vector3d::Zero()
+                                                        : Eigen::Vector3d(next(100) * 1e-2, next(100) * 1e-2, -0.2),
+                                                 0.5 + next(100) * 1e-2, 0.01, pinned));
+    }
+    test::addRandomRuns(scene, {1, -1, 2, -3, 37, 1025, -1025, core::kSpringBlock, -core::kSpringBlock}, 600, next);
+    return scene;
+}
+
+// the separate passes and the Euler update with Eigen columns, the way the fused step must match
+void separateSubStep(const core::Model &model, core::State &state, double h, bool symplectic)
+{
+    if (model.plan.gravity)
+        core::startWithGravity(model, state);
+    else
+        state.force.setZero();
+    core::addDrag(model, state);
+    core::addSpringsReference(model, state);
+    core::addApplied(model, state);
+    for (int p : model.freeParticles) {
+        const double kick = h * model.invMass[p];
+        const Eigen::Vector3d old = state.velocity.col(p);
+        const Eigen::Vector3d next = old + kick * state.force.col(p);
+        state.position.col(p) += h * (symplectic ? next : old);
+        state.velocity.col(p) = next;
+    }
+}
+
+}  // namespace
+
+void TestSpringBlocks::latticeModelsUseBlocks()
+{
+    core::ClothOptions cloth;
+    cloth.cols = cloth.rows = 40;
+    QVERIFY(core::compileModel(core::makeCloth(cloth))->usesSpringBlocks());
+
+    // ends farther apart than a block: the springs would reach past the next block
+    core::SceneDesc far = test::quietScene();
+    const int n = 3 * core::kSpringBlock;
+    for (int i = 0; i < n; ++i)
+        far.particles.push_back(test::particle(Eigen::Vector3d(i * 1e-3, 0, 0)));
+    for (int i = 0; i + core::kSpringBlock + 1 < n; ++i)
+        far.springs.push_back(core::SpringDesc{i, i + core::kSpringBlock + 1, 10.0, 0.1, 1.0});
+    const auto farModel = core::compileModel(far);
+    QVERIFY(farModel->usesSpringRuns());
+    QCOMPARE(farModel->springReach, core::kSpringBlock + 1);
+    QVERIFY(!farModel->usesSpringBlocks());
+
+    // one block apart exactly: still within reach
+    for (core::SpringDesc &spring : far.springs)
+        spring.b -= 1;
+    QVERIFY(core::compileModel(far)->usesSpringBlocks());
+
+    // no springs: nothing to fuse
+    far.springs.clear();
+    QVERIFY(!core::compileModel(far)->usesSpringBlocks());
+}
+
+void TestSpringBlocks::indexListsEveryRunOfEachBlock()
+{
+    Options options;
+    options.particles = 20000;
+    const auto model = core::compileModel(randomRuns(options, 3u));
+    QVERIFY(model->usesSpringBlocks());
+    const int blocks = (model->particleCount() + core::kSpringBlock - 1) / core::kSpringBlock;
+    QCOMPARE(int(model->blockRunOffsets.size()), blocks + 1);
+    for (int q = 0; q < blocks; ++q) {
+        const int lo = q * core::kSpringBlock;
+        const int hi = lo + core::kSpringBlock;
+        std::vector<int> expected;
+        for (int r = 0; r < int(model->springRuns.size()); ++r) {
+            const core::Model::SpringRun &run = model->springRuns[std::size_t(r)];
+            const auto touches = [&](int end) { return end < hi && end + run.count > lo; };
+            if (touches(run.a) || touches(run.b))
+                expected.push_back(r);
+        }
+        const std::vector<int> listed(model->blockRuns.begin() + model->blockRunOffsets[std::size_t(q)],
+                                      model->blockRuns.begin() + model->blockRunOffsets[std::size_t(q) + 1]);
+        QVERIFY(!expected.empty());
+        QCOMPARE(listed, expected);
+    }
+}
+
+void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit_data()
+{
+    QTest::addColumn<int>("particles");
+    QTest::addColumn<bool>("symplectic");
+    QTest::addColumn<bool>("gravity");
+    QTest::addColumn<bool>("drag");
+    QTest::addColumn<bool>("applied");
+    QTest::addColumn<bool>("pins");
+    QTest::addColumn<bool>("breakable");
+    QTest::newRow("one block, springs only") << 600 << true << false << false << false << false << false;
+    QTest::newRow("blocks, everything") << 20000 << true << true << true << true << true << false;
+    QTest::newRow("blocks, explicit Euler") << 20000 << false << true << true << false << true << false;
+    QTest::newRow("blocks, some springs broken") << 20000 << true << true << false << false << true << true;
+    QTest::newRow("blocks, no gravity, applied") << 13001 << true << false << false << true << false << false;
+}
+
+// three sub-steps fused and separate from the same state: every position and velocity equal to the
+// bit, however the particles are shared out (shares cut inside blocks, runs crossing the cuts)
+void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit()
+{
+    QFETCH(int, particles);
+    QFETCH(bool, symplectic);
+    QFETCH(bool, gravity);
+    QFETCH(bool, drag);
+    QFETCH(bool, applied);
+    QFETCH(bool, pins);
+    QFETCH(bool, breakable);
+    Options options;
+    options.particles = particles;
+    options.gravity = gravity;
+    options.drag = drag;
+    options.pins = pins;
+    core::SceneDesc scene = randomRuns(options, 29u);
+    scene.settings.integrator = symplectic ? core::Integrator::SymplecticEuler : core::Integrator::ExplicitEuler;
+
+    const auto prepare = [&](test::Sim &sim) {
+        for (int k = 0; k < sim.model->springCount(); k += 41)  // coincident ends: the other branch
+            sim.state.position.col(sim.model->springB[std::size_t(k)]) =
+                sim.state.position.col(sim.model->springA[std::size_t(k)]);
+        if (breakable) {
+            sim.state.springBroken.assign(std::size_t(sim.model->springCount()), 0);
+            for (int k = 5; k < sim.model->springCount(); k += 13)
+                sim.state.springBroken[std::size_t(k)] = 1;
+        }
+        if (applied)
+            for (int p = 7; p < particles; p += 501)
+                core::setAppliedForce(sim.state, p, Eigen::Vector3d(0.5, -1.5, 2.5 + p * 1e-3));
+    };
+    const double h = 1e-3;
+
+    test::Sim separate = test::compile(scene);
+    QVERIFY(separate.model->usesSpringBlocks());
+    QCOMPARE(separate.model->plan.gravity, gravity);
+    QCOMPARE(separate.model->plan.drag, drag);
+    prepare(separate);
+    const Eigen::Matrix3Xd start = separate.state.position;
+    for (int sub = 0; sub < 3; ++sub)
+        separateSubStep(*separate.model, separate.state, h, symplectic);
+    QVERIFY(separate.state.position.cwiseNotEqual(start).any());
+
+    // 1 and 2 threads, then 3 and 5 shares run one after another in both orders: each thread's
+    // neighbours move their particles before it reads them, on either side, whatever the schedule
+    struct Run {
+        int threads;
+        int sequential;
+        bool descending;
+    };
+    const int before = core::threadCount();
+    for (const Run run : {Run{1, 0, false}, Run{2, 0, false}, Run{1, 3, false}, Run{1, 3, true}, Run{1, 5, false},
+                          Run{1, 5, true}}) {
+        if (run.threads > core::maxThreadCount())
+            continue;
+        core::setThreadCount(run.threads);
+        core::sequentialShares() = core::SequentialShares{run.sequential, run.descending};
+        test::Sim fused = test::compile(scene);
+        prepare(fused);
+        for (int sub = 0; sub < 3; ++sub) {
+            fused.state.freeParticlesChecked = false;
+            core::integrate(*fused.model, fused.state, h);
+            QVERIFY(fused.state.freeParticlesChecked);  // it checked what it wrote, and all was well
+        }
+        core::sequentialShares() = core::SequentialShares{};
+        const Eigen::Index positions = (fused.state.position.array() != separate.state.position.array()).count();
+        const Eigen::Index velocities = (fused.state.velocity.array() != separate.state.velocity.array()).count();
+        QVERIFY2(positions == 0 && velocities == 0,
+                 qPrintable(QString("%1 threads, %2 shares in turn%3: %4 positions and %5 velocities differ")
+                                .arg(run.threads)
+                                .arg(run.sequential)
+                                .arg(run.descending ? " from the last" : "")
+                                .arg(positions)
+                                .arg(velocities)));
+    }
+    core::setThreadCount(before);
+}
+
+// a free particle's velocity past the bound in the middle of a block, on the far side of a thread
+// share: the step stops and names it
+void TestSpringBlocks::badValueStopsTheStep()
+{
+    Options options;
+    options.particles = 20000;
+    for (int culprit : {0, 9001, 19999}) {
+        test::Sim sim = test::compile(randomRuns(options, 7u));
+        QVERIFY(sim.model->usesSpringBlocks());
+        QVERIFY(core::step(*sim.model, sim.state));
+        sim.state.velocity(1, culprit) = 2.0 * core::kBlowupBound;
+        QVERIFY(!core::step(*sim.model, sim.state));
+        QVERIFY(sim.state.blowup.has_value());
+        QCOMPARE(sim.state.blowup->particle, culprit);
+        QCOMPARE(sim.state.blowup->step, std::uint64_t(2));
+    }
+}
+
+void TestSpringBlocks::profileCountsEachForceStage()
+{
+    Options options;
+    options.particles = 9000;
+    options.gravity = true;
+    core::SceneDesc scene = randomRuns(options, 5u);
+    scene.settings.substeps = 4;
+    test::Sim sim = test::compile(scene);
+    QVERIFY(sim.model->usesSpringBlocks());
+    QVERIFY(core::step(*sim.model, sim.state));
+    QVERIFY(core::step(*sim.model, sim.state));
+    const core::Profile &profile = sim.state.profile;
+    QCOMPARE(profile[core::Stage::Gravity].calls, std::uint64_t(8));
+    QCOMPARE(profile[core::Stage::Springs].calls, std::uint64_t(8));
+    QCOMPARE(profile[core::Stage::Integrate].calls, std::uint64_t(8));
+    QVERIFY(profile[core::Stage::Springs].seconds > 0.0);
+    QVERIFY(profile[core::Stage::Integrate].seconds > 0.0);
+    // no drag and nothing applied: neither called nor timed
+    QCOMPARE(profile[core::Stage::Drag].calls, std::uint64_t(0));
+    QCOMPARE(profile[core::Stage::Drag].seconds, 0.0);
+    QCOMPARE(profile[core::Stage::Applied].calls, std::uint64_t(0));
+    QCOMPARE(sim.state.forceEvaluations, std::uint64_t(8));
+}
+
+QTEST_APPLESS_MAIN(TestSpringBlocks)
+#include "test_spring_blocks.moc"
