@@ -20,7 +20,7 @@ endif()
 
 # ThreadSanitizer: every program keeps Mesa's software driver loaded to the end (see the file);
 # executables link it with springlab_sanitizer_support(<target>)
-if(SPRINGLAB_SANITIZE MATCHES "thread")
+if(SPRINGLAB_SANITIZE MATCHES "thread|address")
   add_library(springlab_keep_gl_driver OBJECT ${PROJECT_SOURCE_DIR}/tests/sanitizers/keep_gl_driver_loaded.cpp)
   target_link_libraries(springlab_keep_gl_driver PUBLIC ${CMAKE_DL_LIBS})
 endif()

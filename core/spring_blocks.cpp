@@ -66,6 +66,18 @@ SPRINGLAB_SIMD_CLONES void addLane(int count, double sign, const double *__restr
         force[i] = sign > 0.0 ? force[i] + perSpring[i] : force[i] - perSpring[i];
 }
 
+// force[i] ± first[i], then ± second[i], over count values: a particle that is end a of one of the
+// chunk's springs and end b of another gets both in one read and one write
+SPRINGLAB_SIMD_CLONES void addTwoLanes(int count, double firstSign, const double *__restrict first, double secondSign,
+                                       const double *__restrict second, double *__restrict force)
+{
+#pragma omp simd
+    for (int i = 0; i < count; ++i) {
+        const double once = firstSign > 0.0 ? force[i] + first[i] : force[i] - first[i];
+        force[i] = secondSign > 0.0 ? once + second[i] : once - second[i];
+    }
+}
+
 // One thread's scratch, carved out of State::blockScratch: the window of positions and velocities
 // (particles [lo, hi), index p - lo), the copy of the next thread's first particles (the trail,
 // index p - last), and the block's forces (index p - begin).
@@ -98,17 +110,26 @@ Slot slotAt(double *base, int reach)
     return slot;
 }
 
-// particles [from, to) of the xyz triples x and v into the lanes out, at index p - origin
-void splitTriples(const double *x, const double *v, int from, int to, int origin, const std::array<double *, 6> &out)
+// particles [from, to) of the xyz triples x and v into the lanes out, at index p - origin. One
+// loop over the particles with all six values in it: the compiler turns the triples into lanes with
+// shuffles, which cost far less than a gather per component
+SPRINGLAB_SIMD_CLONES void splitTriples(const double *__restrict x, const double *__restrict v, int from, int to,
+                                        int origin, const std::array<double *, 6> &out)
 {
-    for (int axis = 0; axis < 3; ++axis) {
-        double *__restrict px = out[static_cast<std::size_t>(axis)] - origin;
-        double *__restrict pv = out[static_cast<std::size_t>(3 + axis)] - origin;
+    double *__restrict px = out[0] - origin;
+    double *__restrict py = out[1] - origin;
+    double *__restrict pz = out[2] - origin;
+    double *__restrict qx = out[3] - origin;
+    double *__restrict qy = out[4] - origin;
+    double *__restrict qz = out[5] - origin;
 #pragma omp simd
-        for (int p = from; p < to; ++p) {
-            px[p] = x[3 * p + axis];
-            pv[p] = v[3 * p + axis];
-        }
+    for (int p = from; p < to; ++p) {
+        px[p] = x[3 * p];
+        py[p] = x[3 * p + 1];
+        pz[p] = x[3 * p + 2];
+        qx[p] = v[3 * p];
+        qy[p] = v[3 * p + 1];
+        qz[p] = v[3 * p + 2];
     }
 }
 
@@ -187,6 +208,59 @@ void addAppliedForces(const Pass &pass, const Slot &slot, int begin, int end)
     }
 }
 
+// The forces of a chunk of a run's springs, j in [from, to), added to their ends in the block that
+// starts at begin. The particles that are end a of one of these springs and those that are end b
+// are two stretches; where they overlap each particle gets both forces in one pass, in the plain
+// loop's order (addInPlainOrder: end b's first when b > a). Two passes over overlapping stretches
+// would each read values the other has only just written, a few lanes apart, and stall.
+void addChunk(const Slot &slot, const Model::SpringRun &run, const RunSides &sides, int from, int to, int begin,
+              const double *chunk)
+{
+    struct Side {
+        int lo, hi;   // particles, relative to the block
+        int spring;   // the chunk index of the spring at particle lo
+        double sign;
+    };
+    std::array<Side, 2> order{};
+    int count = 0;
+    addInPlainOrder(run, sides, [&](int lowest, int highest, int firstEnd, double sign) {
+        const int j0 = std::max(from, lowest);
+        const int j1 = std::min(to, highest);
+        if (j0 < j1)
+            order[static_cast<std::size_t>(count++)] = Side{firstEnd + j0 - begin, firstEnd + j1 - begin, j0 - from, sign};
+    });
+    const auto one = [&](const Side &side, int lo, int hi) {
+        if (lo < hi)
+            for (int axis = 0; axis < 3; ++axis)
+                addLane(hi - lo, side.sign, chunk + axis * kChunk + side.spring + (lo - side.lo),
+                        slot.force[static_cast<std::size_t>(axis)] + lo);
+    };
+    if (count == 1) {
+        one(order[0], order[0].lo, order[0].hi);
+        return;
+    }
+    if (count == 0)
+        return;
+    const Side &first = order[0];
+    const Side &second = order[1];
+    const int lo = std::max(first.lo, second.lo);
+    const int hi = std::min(first.hi, second.hi);
+    if (lo >= hi) {  // apart: each on its own, in either order
+        one(first, first.lo, first.hi);
+        one(second, second.lo, second.hi);
+        return;
+    }
+    one(first, first.lo, lo);
+    one(second, second.lo, lo);
+    for (int axis = 0; axis < 3; ++axis) {
+        const double *lane = chunk + axis * kChunk;
+        addTwoLanes(hi - lo, first.sign, lane + first.spring + (lo - first.lo), second.sign,
+                    lane + second.spring + (lo - second.lo), slot.force[static_cast<std::size_t>(axis)] + lo);
+    }
+    one(first, hi, first.hi);
+    one(second, hi, second.hi);
+}
+
 // A run's springs j in [lo, hi), a chunk at a time, their forces added to the ends that lie in
 // the block [begin, end) (sides), in the plain loop's order (addInPlainOrder)
 template <bool Breakable>
@@ -208,14 +282,7 @@ void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run,
                                model.damping.data() + spring,
                                Breakable ? pass.state.springBroken.data() + spring : nullptr, ends(run.a + from),
                                ends(run.b + from), out);
-        addInPlainOrder(run, sides, [&](int lowest, int highest, int firstEnd, double sign) {
-            const int j0 = std::max(from, lowest);
-            const int j1 = std::min(to, highest);
-            if (j0 < j1)
-                for (int axis = 0; axis < 3; ++axis)
-                    addLane(j1 - j0, sign, chunk + axis * kChunk + (j0 - from),
-                            slot.force[static_cast<std::size_t>(axis)] + (firstEnd + j0 - begin));
-        });
+        addChunk(slot, run, sides, from, to, begin, chunk);
     }
 }
 
@@ -237,28 +304,49 @@ void springsOnBlock(const Pass &pass, const Slot &slot, int begin, int end)
 // window's old values, written to the state's arrays; whether any new value is bad (as
 // integrate.cpp's eulerUpdate, the same operations)
 template <bool Symplectic>
-bool moveParticles(const Pass &pass, const Slot &slot, int from, int to, int begin)
+SPRINGLAB_SIMD_CLONES bool moveLanes(int from, int to, double h, const double *__restrict invMass,
+                                     const std::array<const double *, 3> &force, const std::array<const double *, 6> &old,
+                                     double *__restrict x, double *__restrict v)
 {
-    const double h = pass.h;
-    const double *__restrict invMass = pass.model.invMass.data();
-    double *__restrict x = pass.state.position.data();
-    double *__restrict v = pass.state.velocity.data();
+    const double *__restrict fx = force[0];
+    const double *__restrict fy = force[1];
+    const double *__restrict fz = force[2];
+    const double *__restrict px = old[0];
+    const double *__restrict py = old[1];
+    const double *__restrict pz = old[2];
+    const double *__restrict qx = old[3];
+    const double *__restrict qy = old[4];
+    const double *__restrict qz = old[5];
     int bad = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double *__restrict f = slot.force[static_cast<std::size_t>(axis)] - begin;
-        const double *__restrict oldX = slot.window[static_cast<std::size_t>(axis)] - slot.lo;
-        const double *__restrict oldV = slot.window[static_cast<std::size_t>(3 + axis)] - slot.lo;
+    // one loop with all three components, so that the triples are written with shuffles, not scatters
 #pragma omp simd reduction(| : bad)
-        for (int p = from; p < to; ++p) {
-            const double kick = h * invMass[p];
-            const double next = oldV[p] + kick * f[p];
-            const double moved = oldX[p] + h * (Symplectic ? next : oldV[p]);
+    for (int p = from; p < to; ++p) {
+        const double kick = h * invMass[p];
+        const double f[3] = {fx[p], fy[p], fz[p]};
+        const double oldX[3] = {px[p], py[p], pz[p]};
+        const double oldV[3] = {qx[p], qy[p], qz[p]};
+        for (int axis = 0; axis < 3; ++axis) {
+            const double next = oldV[axis] + kick * f[axis];
+            const double moved = oldX[axis] + h * (Symplectic ? next : oldV[axis]);
             v[3 * p + axis] = next;
             x[3 * p + axis] = moved;
             bad |= (std::abs(next) <= kBlowupBound && std::abs(moved) <= kBlowupBound) ? 0 : 1;
         }
     }
     return bad != 0;
+}
+
+template <bool Symplectic>
+bool moveParticles(const Pass &pass, const Slot &slot, int from, int to, int begin)
+{
+    std::array<const double *, 3> force{};
+    std::array<const double *, 6> old{};
+    for (std::size_t k = 0; k < 3; ++k)
+        force[k] = slot.force[k] - begin;
+    for (std::size_t k = 0; k < 6; ++k)
+        old[k] = slot.window[k] - slot.lo;
+    return moveLanes<Symplectic>(from, to, pass.h, pass.model.invMass.data(), force, old, pass.state.position.data(),
+                                 pass.state.velocity.data());
 }
 
 // seconds since the last lap, added to one of the force stages' clocks
