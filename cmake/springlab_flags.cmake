@@ -18,7 +18,7 @@ if(SPRINGLAB_SANITIZE)
   add_link_options(-fsanitize=${SPRINGLAB_SANITIZE})
 endif()
 
-# ThreadSanitizer: every program keeps Mesa's software driver loaded to the end (see the file);
+# the sanitizer builds: every program keeps Mesa's software driver loaded to the end (see the file);
 # executables link it with springlab_sanitizer_support(<target>)
 if(SPRINGLAB_SANITIZE MATCHES "thread|address")
   add_library(springlab_keep_gl_driver OBJECT ${PROJECT_SOURCE_DIR}/tests/sanitizers/keep_gl_driver_loaded.cpp)
