@@ -330,7 +330,10 @@ SPRINGLAB_SIMD_CLONES bool moveLanes(int from, int to, double h, const double *_
             const double moved = oldX[axis] + h * (Symplectic ? next : oldV[axis]);
             v[3 * p + axis] = next;
             x[3 * p + axis] = moved;
-            bad |= (std::abs(next) <= kBlowupBound && std::abs(moved) <= kBlowupBound) ? 0 : 1;
+            // & rather than &&: no branch, so that the loop vectorises (NaN fails both tests)
+            const int fine = static_cast<int>(std::abs(next) <= kBlowupBound) &
+                             static_cast<int>(std::abs(moved) <= kBlowupBound);
+            bad |= fine ^ 1;
         }
     }
     return bad != 0;
@@ -384,14 +387,15 @@ bool stepShare(const Pass &pass, Slot &slot, int first, int last, ForceSeconds *
     std::size_t range = 0;  // the first free stretch that ends past the block's start
     while (range < ranges.size() && ranges[range + 1] <= first)
         range += 2;
-    ForceSeconds elsewhere;  // the time of the update and of clearing: not a force stage's
-    ForceSeconds &clock = seconds ? *seconds : elsewhere;
+    ForceSeconds unused;            // the other threads' laps
+    double notForces = 0.0;         // clearing the forces and the update: integrateTimed's share
+    ForceSeconds &clock = seconds ? *seconds : unused;
     StageClock stages(seconds != nullptr);
     bool bad = false;
     for (int begin = first; begin < last;) {
         const int end = std::min(last, (begin / kSpringBlock + 1) * kSpringBlock);
         startForces(pass, slot, begin, end);
-        stages.lap(plan.gravity ? clock.gravity : elsewhere.gravity);
+        stages.lap(plan.gravity ? clock.gravity : notForces);
         if (plan.drag) {
             addDragForces(pass, slot, begin, end);
             stages.lap(clock.drag);
@@ -410,7 +414,7 @@ bool stepShare(const Pass &pass, Slot &slot, int first, int last, ForceSeconds *
             if (ranges[range + 1] > end)
                 break;  // goes on into the next block
         }
-        stages.lap(elsewhere.applied);
+        stages.lap(notForces);
         begin = end;
         if (begin < last) {
             slideWindow(slot, std::max(0, begin - pass.reach));
