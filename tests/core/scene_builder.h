@@ -73,4 +73,17 @@ inline void addRandomRuns(core::SceneDesc &scene, const std::vector<int> &offset
     }
 }
 
+// the spring kernels' other roads: every 41st spring's ends made coincident (the fixed-axis
+// branch) and, when breakable, every 13th spring from the 5th broken
+inline void coincideAndBreak(Sim &sim, bool breakable)
+{
+    for (int k = 0; k < sim.model->springCount(); k += 41)
+        sim.state.position.col(sim.model->springB[std::size_t(k)]) = sim.state.position.col(sim.model->springA[std::size_t(k)]);
+    if (breakable) {
+        sim.state.springBroken.assign(std::size_t(sim.model->springCount()), 0);
+        for (int k = 5; k < sim.model->springCount(); k += 13)
+            sim.state.springBroken[std::size_t(k)] = 1;
+    }
+}
+
 }  // namespace test

@@ -168,14 +168,7 @@ void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit()
     scene.settings.integrator = symplectic ? core::Integrator::SymplecticEuler : core::Integrator::ExplicitEuler;
 
     const auto prepare = [&](test::Sim &sim) {
-        for (int k = 0; k < sim.model->springCount(); k += 41)  // coincident ends: the other branch
-            sim.state.position.col(sim.model->springB[std::size_t(k)]) =
-                sim.state.position.col(sim.model->springA[std::size_t(k)]);
-        if (breakable) {
-            sim.state.springBroken.assign(std::size_t(sim.model->springCount()), 0);
-            for (int k = 5; k < sim.model->springCount(); k += 13)
-                sim.state.springBroken[std::size_t(k)] = 1;
-        }
+        test::coincideAndBreak(sim, breakable);
         if (applied)
             for (int p = 7; p < particles; p += 501)
                 core::setAppliedForce(sim.state, p, Eigen::Vector3d(0.5, -1.5, 2.5 + p * 1e-3));

@@ -214,14 +214,7 @@ void TestSprings::runsEqualThePlainLoopToTheBit()
             break;
         core::setThreadCount(threads);
         test::Sim sim = test::compile(scene);
-        for (int k = 0; k < sim.model->springCount(); k += 41)  // coincident ends: the other branch
-            sim.state.position.col(sim.model->springB[std::size_t(k)]) =
-                sim.state.position.col(sim.model->springA[std::size_t(k)]);
-        if (breakable) {
-            sim.state.springBroken.assign(std::size_t(sim.model->springCount()), 0);
-            for (int k = 5; k < sim.model->springCount(); k += 13)
-                sim.state.springBroken[std::size_t(k)] = 1;
-        }
+        test::coincideAndBreak(sim, breakable);
         sim.state.force = start;
         core::addSpringRuns(*sim.model, sim.state);
         const Eigen::Matrix3Xd byRuns = sim.state.force;
