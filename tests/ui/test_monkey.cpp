@@ -5,8 +5,10 @@
 // editor must still be alive (the worker publishes a frame for the latest edit) and the document
 // must hold a valid scene. The events come from the seed alone (std::mt19937 with a fixed
 // seed per example); a failure names the seed and the event, and SPRINGLAB_MONKEY_SEED and
-// SPRINGLAB_MONKEY_EVENTS rerun one case. With the simulation paused and each event waiting for
-// the worker, two runs of one seed end in the same scene (reproducibleFromTheSeed).
+// SPRINGLAB_MONKEY_EVENTS rerun one case. With the simulation paused, the window's layout settled
+// before the first event, and after each event its dialog closed, the window active again and the
+// worker caught up, two runs of one seed end in the same scene (reproducibleFromTheSeed); when
+// they do not, the failure names the first event after which they differed.
 
 #include "ui/main_window.h"
 #include "ui/scene_document.h"
@@ -58,6 +60,46 @@ const KeyPress kKeys[] = {
 const char *const kTyped[] = {"0", "1", "-1", "0.5", "1e3", "1e300", "-1e300", "nan", "inf", "-0", "abc", "", "2.5e-7",
                               "99999999999999999999", "1,5", " 3 "};
 
+// true once a widget's size has stayed the same for 200 ms in a row, false after 10 s
+bool settledSize(const QWidget &widget)
+{
+    QElapsedTimer clock, held;
+    clock.start();
+    held.start();
+    QSize size = widget.size();
+    while (clock.elapsed() < 10000) {
+        QTest::qWait(20);
+        if (widget.size() != size) {
+            size = widget.size();
+            held.restart();
+        } else if (held.elapsed() >= 200) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// one line of a paused run's trace: after which event, and what the window was then
+QString describe(int event, const QString &what, const ui::MainWindow &window, int edits)
+{
+    const auto name = [](const QObject *object) {
+        return object ? QString::fromLatin1(object->metaObject()->className()) : QStringLiteral("none");
+    };
+    return QStringLiteral("event %1 (%2): undo steps %3, edits %4, viewport %5x%6, active %7, focus %8")
+        .arg(event).arg(what).arg(window.document()->undoStack()->count()).arg(edits)
+        .arg(window.viewport()->width()).arg(window.viewport()->height())
+        .arg(name(QApplication::activeWindow()), name(QApplication::focusWidget()));
+}
+
+// the first event after which two traces differ, and the two lines there
+QString whereTheyPart(const QStringList &first, const QStringList &second)
+{
+    for (qsizetype e = 0; e < std::min(first.size(), second.size()); ++e)
+        if (first[e] != second[e])
+            return QStringLiteral("they part after\n  %1\n  %2").arg(first[e], second[e]);
+    return QStringLiteral("their traces are the same");
+}
+
 // F4 and Step run the simulation: the reproducible run leaves them out
 bool runsTheSimulation(const KeyPress &press)
 {
@@ -84,7 +126,14 @@ private:
         int undoSteps = 0;
         int edits = 0;  // changes the document announced
         QString failure;  // empty when the editor survived with a valid scene
+        QStringList trace;  // paused runs: what each event did, to find where two runs part
     };
+    static Outcome failed(const QString &why)
+    {
+        Outcome outcome;
+        outcome.failure = why;
+        return outcome;
+    }
     // `events` seeded events on a fresh window opened on `example`; `paused`: the simulation
     // never runs and each event waits for the worker, so that nothing depends on timing
     Outcome run(const QString &example, std::uint32_t seed, int events, bool paused);
@@ -137,26 +186,32 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
     window->show();
     window->activateWindow();
     if (!QTest::qWaitForWindowActive(window.get()))
-        return {{}, 0, 0, QStringLiteral("the window never became active")};
+        return failed(QStringLiteral("the window never became active"));
     QString error;
     if (!window->openExample(example, &error))
-        return {{}, 0, 0, error};
+        return failed(error);
     int edits = 0;
     QObject::connect(window->document(), &ui::SceneDocument::sceneChanged, window.get(), [&edits] { ++edits; });
     if (paused && window->controller()->isRunning())
         QTest::keyClick(window.get(), Qt::Key_F4);
 
     // any modal dialog the window opens itself (help, about, a folder chooser) is closed at once
-    QTimer closer;
-    QObject::connect(&closer, &QTimer::timeout, [] {
+    const auto closeModal = [] {
         if (QWidget *modal = QApplication::activeModalWidget()) {
             if (auto *dialog = qobject_cast<QDialog *>(modal))
                 dialog->reject();
             else
                 modal->close();
         }
-    });
+    };
+    QTimer closer;
+    QObject::connect(&closer, &QTimer::timeout, closeModal);
     closer.start(5);
+    // The paused run's events must meet the same window each time. Its docks settle their widths
+    // through the X server after it is shown (a scroll bar comes or goes), which moves every click;
+    // so it starts once the viewport's size has held for a while.
+    if (paused && !settledSize(*window->viewport()))
+        return failed(QStringLiteral("the viewport's size never settled"));
 
     // the menu actions, except Quit (which would end the test, not test the editor)
     QList<QAction *> actions;
@@ -168,10 +223,12 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
         return action->objectName() == QStringLiteral("actionPlay") || action->objectName() == QStringLiteral("actionStep");
     };
 
+    QStringList trace;
     ui::Viewport *viewport = window->viewport();
     const auto somewhere = [&] { return QPoint(below(viewport->width()), below(viewport->height())); };
     for (int e = 0; e < events; ++e) {
         const int kind = below(100);
+        QString what = QString::number(kind);  // the kind of event, or the menu action's name
         if (kind < 30) {
             // click or drag on the viewport
             const Qt::MouseButton buttons[] = {Qt::LeftButton, Qt::LeftButton, Qt::LeftButton, Qt::RightButton,
@@ -224,24 +281,38 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
             }
         } else {
             QAction *action = actions[below(int(actions.size()))];
-            if (action->isEnabled() && !(paused && isPlay(action)))
+            if (action->isEnabled() && !(paused && isPlay(action))) {
+                what = action->objectName();
                 action->trigger();
+            }
         }
         if (paused) {
+            // A dialog closed by the timer above hands the activation back through the X server,
+            // later under load; a key sent before then misses the window's shortcuts. So the
+            // window's modal dialog is closed here and the window active again before the next.
+            closeModal();
+            if (QApplication::activeWindow() != window.get()) {
+                window->activateWindow();
+                if (!QTest::qWaitForWindowActive(window.get()))
+                    return failed(QStringLiteral("seed %1, event %2: the window never became active again").arg(seed).arg(e));
+            }
             if (!test::settledFrame(*window->controller()))
-                return {{}, 0, 0, QStringLiteral("seed %1, event %2: the worker stopped answering").arg(seed).arg(e)};
+                return failed(QStringLiteral("seed %1, event %2: the worker stopped answering").arg(seed).arg(e));
         } else if (e % kEventsPerFrame == 0) {
             // let the window catch up (draw, take the worker's frame) every few events, as a
             // user's events arrive between frames; drawing after every one would only be slow
             QCoreApplication::processEvents();
         }
         if (window->isHidden())
-            return {{}, 0, 0, QStringLiteral("seed %1, event %2: the window closed").arg(seed).arg(e)};
+            return failed(QStringLiteral("seed %1, event %2: the window closed").arg(seed).arg(e));
+        if (paused)
+            trace << describe(e, what, *window, edits);
     }
     closer.stop();
 
     // alive: the worker answers with a frame of the latest scene; valid: the validator accepts it
     Outcome outcome;
+    outcome.trace = trace;
     outcome.scene = window->document()->scene();
     outcome.undoSteps = window->document()->undoStack()->count();
     outcome.edits = edits;
@@ -284,10 +355,11 @@ void TestMonkey::reproducibleFromTheSeed()
     QVERIFY2(first.failure.isEmpty(), qPrintable(first.failure));
     const Outcome second = run(QStringLiteral("springs"), 77u, 400, true);
     QVERIFY2(second.failure.isEmpty(), qPrintable(second.failure));
-    QCOMPARE(second.undoSteps, first.undoSteps);
-    QVERIFY(second.scene == first.scene);
+    const bool same = second.undoSteps == first.undoSteps && second.edits == first.edits && second.scene == first.scene;
+    QVERIFY2(same, qPrintable(QStringLiteral("two runs of seed 77 ended apart (undo steps %1 and %2, edits %3 and %4); %5")
+                                  .arg(first.undoSteps).arg(second.undoSteps).arg(first.edits).arg(second.edits)
+                                  .arg(whereTheyPart(first.trace, second.trace))));
     QVERIFY(first.edits > 0);
-    QCOMPARE(second.edits, first.edits);
 }
 
 QTEST_MAIN(TestMonkey)
