@@ -44,16 +44,25 @@ struct ForceLanes {
     double *x, *y, *z;
 };
 
+// a chunk's broken flags as doubles (1 or 0), for chunkForces: compared there as bytes, they
+// made the compiler use two lanes where it could use eight
+SPRINGLAB_SIMD_CLONES void widenFlags(int count, const std::uint8_t *__restrict flags, double *__restrict out)
+{
+#pragma omp simd
+    for (int j = 0; j < count; ++j)
+        out[j] = flags[j] != 0 ? 1.0 : 0.0;
+}
+
 template <bool Breakable>
 SPRINGLAB_SIMD_CLONES void chunkForces(int count, const double *__restrict restLength, const double *__restrict stiffness,
-                                       const double *__restrict damping, const std::uint8_t *__restrict broken,
+                                       const double *__restrict damping, const double *__restrict broken,
                                        EndLanes a, EndLanes b, ForceLanes out)
 {
 #pragma omp simd
     for (int j = 0; j < count; ++j) {
         const SpringEnds ends{a.x[j] - b.x[j], a.y[j] - b.y[j], a.z[j] - b.z[j],
                               a.vx[j] - b.vx[j], a.vy[j] - b.vy[j], a.vz[j] - b.vz[j]};
-        dampedSpring(ends, restLength[j], stiffness[j], damping[j], Breakable && broken[j] != 0, out.x[j], out.y[j],
+        dampedSpring(ends, restLength[j], stiffness[j], damping[j], Breakable && broken[j] != 0.0, out.x[j], out.y[j],
                      out.z[j]);
     }
 }
@@ -268,6 +277,7 @@ void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run,
                 const RunSides &sides, int begin)
 {
     double chunk[3 * kChunk];
+    double broken[Breakable ? kChunk : 1];
     const ForceLanes out{chunk, chunk + kChunk, chunk + 2 * kChunk};
     const Model &model = pass.model;
     const auto ends = [&](int particle) {
@@ -278,9 +288,10 @@ void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run,
     for (int from = lo; from < hi; from += kChunk) {
         const int to = std::min(hi, from + kChunk);
         const int spring = run.first + from;
+        if constexpr (Breakable)
+            widenFlags(to - from, pass.state.springBroken.data() + spring, broken);
         chunkForces<Breakable>(to - from, model.restLength.data() + spring, model.stiffness.data() + spring,
-                               model.damping.data() + spring,
-                               Breakable ? pass.state.springBroken.data() + spring : nullptr, ends(run.a + from),
+                               model.damping.data() + spring, Breakable ? broken : nullptr, ends(run.a + from),
                                ends(run.b + from), out);
         addChunk(slot, run, sides, from, to, begin, chunk);
     }

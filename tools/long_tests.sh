@@ -8,7 +8,9 @@
 #    ThreadSanitizer slows it tenfold), and the live-edit stress for 60 s.
 # 2. AddressSanitizer + UBSan build (build/asan), leak checking on: 1000 cycles of start, run,
 #    load another scene and close while running; the monkey's 10 000 events per example.
-# 3. The scene loader fuzzed for an hour.
+# 3. The kernels built for AVX2 alone (build/avx2): the unit tests, so that the clone a CPU without
+#    AVX-512 runs gives the same bits (this machine would pick the AVX-512 one).
+# 4. The scene loader fuzzed for an hour.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -32,5 +34,9 @@ cmake --preset asan >/dev/null
 cmake --build --preset asan
 SPRINGLAB_LIFECYCLE_CYCLES=1000 ctest --preset asan --timeout 7200 -R '^test_lifecycle$'
 ctest --preset asan --timeout 7200 -R '^test_monkey$'
+
+cmake --preset avx2 >/dev/null
+cmake --build --preset avx2
+ctest --preset avx2 -L unit
 
 bash tools/fuzz.sh 3600
