@@ -26,6 +26,7 @@
 #include "frame_wait.h"
 
 #include <algorithm>
+#include <map>
 #include <vector>
 
 namespace {
@@ -114,6 +115,7 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
     };
 
     std::vector<qint64> handled;  // ms per event
+    std::map<QString, qint64> longestOf;  // the longest of each kind of event
     QElapsedTimer total;
     total.start();
     int round = 0;
@@ -121,15 +123,16 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
     while (total.elapsed() < 1000LL * seconds) {
         const QString example = examples[round % examples.size()];
         QElapsedTimer event;
-        const auto timed = [&](auto &&what) {
+        const auto timed = [&](const char *kind, auto &&what) {
             event.start();
             what();
             QCoreApplication::processEvents();
             handled.push_back(event.elapsed());
+            longestOf[kind] = std::max(longestOf[kind], handled.back());
         };
 
         // load, and run
-        timed([&] { QVERIFY2(window.openExample(example, &error), qPrintable(error)); });
+        timed("load", [&] { QVERIFY2(window.openExample(example, &error), qPrintable(error)); });
         controller.play();
         QVERIFY(test::settledFrame(controller));
         for (int i = 0; i < 6; ++i) {
@@ -137,9 +140,9 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
             // a parameter slider, by its keys
             const QList<QAbstractSlider *> sliders = window.findChildren<QAbstractSlider *>();
             if (!sliders.isEmpty())
-                timed([&] { QTest::keyClick(sliders[(round + i) % sliders.size()], i % 2 ? Qt::Key_PageUp : Qt::Key_PageDown); });
+                timed("slider", [&] { QTest::keyClick(sliders[(round + i) % sliders.size()], i % 2 ? Qt::Key_PageUp : Qt::Key_PageDown); });
             // a particle added in the middle of the view
-            timed([&] {
+            timed("add", [&] {
                 tools->setTool(ui::Tool::AddParticle);
                 QTest::mouseClick(viewport, Qt::LeftButton, {}, viewport->rect().center() + QPoint(7 * i, 5 * i));
             });
@@ -147,11 +150,11 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
                 continue;
             // pinned, dragged
             if (const auto at = drawnAt((round + i) % particles)) {
-                timed([&] {
+                timed("pin", [&] {
                     tools->setTool(ui::Tool::Pin);
                     QTest::mouseClick(viewport, Qt::LeftButton, {}, *at);
                 });
-                timed([&] {
+                timed("drag", [&] {
                     tools->setTool(ui::Tool::Drag);
                     QTest::mousePress(viewport, Qt::LeftButton, {}, *at);
                     QTest::mouseMove(viewport, *at + QPoint(20, -15));
@@ -160,16 +163,16 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
             }
             // selected and deleted, then undone every other time
             if (const auto at = drawnAt(particles - 1)) {
-                timed([&] {
+                timed("delete", [&] {
                     tools->setTool(ui::Tool::Select);
                     QTest::mouseClick(viewport, Qt::LeftButton, {}, *at);
                     QTest::keyClick(&window, Qt::Key_Delete);
                 });
                 if (i % 2 == 0)
-                    timed([&] { QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier); });
+                    timed("undo", [&] { QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier); });
             }
         }
-        timed([&] { QVERIFY2(window.saveTo(m_files.filePath(QStringLiteral("stress.json")), &error), qPrintable(error)); });
+        timed("save", [&] { QVERIFY2(window.saveTo(m_files.filePath(QStringLiteral("stress.json")), &error), qPrintable(error)); });
         ++round;
     }
 
@@ -183,6 +186,10 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
     const qint64 median = handled[handled.size() / 2];
     const qint64 p99 = handled[handled.size() * 99 / 100];
     const qint64 longest = handled.back();
+    QStringList kinds;
+    for (const auto &[kind, ms] : longestOf)
+        kinds << QStringLiteral("%1 %2").arg(kind).arg(ms);
+    qInfo("the longest of each kind, ms: %s", qPrintable(kinds.join(QStringLiteral(", "))));
     qInfo("%d rounds, %d events, %d frames taken; ms to handle an event: median %lld, 99th percentile %lld, "
           "longest %lld",
           round, int(handled.size()), frames, median, p99, longest);
