@@ -183,9 +183,7 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
         }
     });
     window->resize(800, 600);  // small: software GL draws every pixel
-    window->show();
-    window->activateWindow();
-    if (!QTest::qWaitForWindowActive(window.get()))
+    if (!test::showActive(*window))
         return failed(QStringLiteral("the window never became active"));
     QString error;
     if (!window->openExample(example, &error))
@@ -291,11 +289,8 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
             // later under load; a key sent before then misses the window's shortcuts. So the
             // window's modal dialog is closed here and the window active again before the next.
             closeModal();
-            if (QApplication::activeWindow() != window.get()) {
-                window->activateWindow();
-                if (!QTest::qWaitForWindowActive(window.get()))
-                    return failed(QStringLiteral("seed %1, event %2: the window never became active again").arg(seed).arg(e));
-            }
+            if (QApplication::activeWindow() != window.get() && !test::showActive(*window))
+                return failed(QStringLiteral("seed %1, event %2: the window never became active again").arg(seed).arg(e));
             if (!test::settledFrame(*window->controller()))
                 return failed(QStringLiteral("seed %1, event %2: the worker stopped answering").arg(seed).arg(e));
         } else if (e % kEventsPerFrame == 0) {
@@ -312,7 +307,7 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
 
     // alive: the worker answers with a frame of the latest scene; valid: the validator accepts it
     Outcome outcome;
-    outcome.trace = trace;
+    outcome.trace = std::move(trace);
     outcome.scene = window->document()->scene();
     outcome.undoSteps = window->document()->undoStack()->count();
     outcome.edits = edits;
