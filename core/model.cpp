@@ -8,8 +8,79 @@
 #include <algorithm>
 #include <cassert>
 #include <cstdlib>
+#include <utility>
 
 namespace core {
+
+namespace {
+
+// the runs with an end in each block of kSpringBlock particles, ascending (Model::blockRuns)
+void indexByBlock(const std::vector<Model::SpringRun> &runs, int particles, std::vector<int> &offsets,
+                  std::vector<int> &list)
+{
+    const int blocks = (particles + kSpringBlock - 1) / kSpringBlock;
+    std::vector<std::vector<int>> byBlock(static_cast<std::size_t>(blocks));
+    for (int r = 0; r < static_cast<int>(runs.size()); ++r) {
+        const Model::SpringRun &run = runs[static_cast<std::size_t>(r)];
+        for (const int end : {run.a, run.b})
+            for (int q = end / kSpringBlock; q <= (end + run.count - 1) / kSpringBlock; ++q) {
+                std::vector<int> &blockList = byBlock[static_cast<std::size_t>(q)];
+                if (blockList.empty() || blockList.back() != r)
+                    blockList.push_back(r);
+            }
+    }
+    offsets.assign(1, 0);
+    for (const std::vector<int> &blockList : byBlock) {
+        list.insert(list.end(), blockList.begin(), blockList.end());
+        offsets.push_back(static_cast<int>(list.size()));
+    }
+}
+
+// whether run `next`, which follows `last` in the list, can join it (Model::JoinedRuns)
+bool joins(const Model::SpringRun &last, const Model::SpringRun &next)
+{
+    const int gap = next.a - (last.a + last.count);
+    return last.count < kJoinRunsBelow && next.count < kJoinRunsBelow && next.b - next.a == last.b - last.a &&
+           gap >= 0 && gap <= kJoinGap;
+}
+
+// Model::joined, or nothing where no two runs join
+void joinShortRuns(Model &model)
+{
+    const std::vector<Model::SpringRun> &runs = model.springRuns;
+    bool any = false;
+    for (std::size_t r = 1; r < runs.size() && !any; ++r)
+        any = joins(runs[r - 1], runs[r]);
+    if (!any)
+        return;
+    // the joined runs, each with its springs' place in the padded arrays
+    std::vector<Model::SpringRun> &joined = model.joined.runs;
+    std::vector<std::pair<int, int>> pieces;  // (padded index, spring) of each run's first spring
+    int padded = 0;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+        const Model::SpringRun &run = runs[r];
+        if (r > 0 && joins(runs[r - 1], run)) {
+            Model::SpringRun &into = joined.back();
+            into.count = run.a - into.a + run.count;
+        } else {
+            joined.push_back(Model::SpringRun{padded, run.count, run.a, run.b});
+        }
+        pieces.emplace_back(joined.back().first + (run.a - joined.back().a), run.first);
+        padded = joined.back().first + joined.back().count;
+    }
+    // padding: no rest length, stiffness or damping, so a force of ±0
+    model.joined.restLength.setZero(padded);
+    model.joined.stiffness.setZero(padded);
+    model.joined.damping.setZero(padded);
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+        const auto [at, spring] = pieces[r];
+        model.joined.restLength.segment(at, runs[r].count) = model.restLength.segment(spring, runs[r].count);
+        model.joined.stiffness.segment(at, runs[r].count) = model.stiffness.segment(spring, runs[r].count);
+        model.joined.damping.segment(at, runs[r].count) = model.damping.segment(spring, runs[r].count);
+    }
+}
+
+}  // namespace
 
 std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
 {
@@ -93,24 +164,12 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
         k += run.count;
     }
 
-    // which runs reach into each block of particles, for the fused sub-step
+    // which runs reach into each block of particles, and the short ones joined, for the fused sub-step
     if (model->usesSpringRuns() && model->springReach <= kSpringBlock) {
-        const int blocks = (static_cast<int>(n) + kSpringBlock - 1) / kSpringBlock;
-        std::vector<std::vector<int>> byBlock(static_cast<std::size_t>(blocks));
-        for (int r = 0; r < static_cast<int>(model->springRuns.size()); ++r) {
-            const Model::SpringRun &run = model->springRuns[static_cast<std::size_t>(r)];
-            for (const int end : {run.a, run.b})
-                for (int q = end / kSpringBlock; q <= (end + run.count - 1) / kSpringBlock; ++q) {
-                    std::vector<int> &list = byBlock[static_cast<std::size_t>(q)];
-                    if (list.empty() || list.back() != r)
-                        list.push_back(r);
-                }
-        }
-        model->blockRunOffsets.assign(1, 0);
-        for (const std::vector<int> &list : byBlock) {
-            model->blockRuns.insert(model->blockRuns.end(), list.begin(), list.end());
-            model->blockRunOffsets.push_back(static_cast<int>(model->blockRuns.size()));
-        }
+        indexByBlock(model->springRuns, static_cast<int>(n), model->blockRunOffsets, model->blockRuns);
+        joinShortRuns(*model);
+        if (!model->joined.runs.empty())
+            indexByBlock(model->joined.runs, static_cast<int>(n), model->joined.blockRunOffsets, model->joined.blockRuns);
     }
 
     // planes

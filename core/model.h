@@ -26,6 +26,9 @@ struct StepPlan {
 // particles per block of the fused lattice sub-step (spring_blocks.cpp): a block's forces and its
 // positions and velocities with the springs' reach either side stay in the L2 cache
 inline constexpr int kSpringBlock = 4096;
+// Model::joined: runs this short are worth joining, across gaps of at most this many particles
+inline constexpr int kJoinRunsBelow = 512;
+inline constexpr int kJoinGap = 8;
 
 struct Model {
     // settings
@@ -81,6 +84,25 @@ struct Model {
     // blocks (usesSpringBlocks())
     std::vector<int> blockRunOffsets;
     std::vector<int> blockRuns;
+    // The runs once more for the fused sub-step, short ones joined: runs shorter than
+    // kJoinRunsBelow with the same offset b - a that follow each other in the list, each starting a
+    // few particles (at most kJoinGap) past the last one's end, become one run. The particles in
+    // between are ends of padding springs with no rest length, stiffness or damping, whose force is
+    // exactly zero, and a force sum never is -0 (it starts at 0 + m g), so adding the padding's ±0
+    // changes no bit. A 64 × 64 cloth's rows of 63 springs become a run of 4095, which the kernels
+    // take in full vectors instead of a remainder and a dozen calls a row. A joined run's `first`
+    // indexes the three arrays here, one value per spring of the run, padding included. The
+    // broken flags are the state's, one per spring of the list, so a state with flags steps by
+    // springRuns. Empty where no run was joined.
+    struct JoinedRuns {
+        std::vector<SpringRun> runs;
+        Eigen::VectorXd restLength;  // m
+        Eigen::VectorXd stiffness;   // N/m
+        Eigen::VectorXd damping;     // N·s/m
+        std::vector<int> blockRunOffsets;  // as blockRunOffsets and blockRuns, for these runs
+        std::vector<int> blockRuns;
+    };
+    JoinedRuns joined;
 
     // planes n·p = offset, unit normals
     Eigen::Matrix3Xd planeNormal;

@@ -5,8 +5,9 @@
 // particles block by block, and for each block
 //   1. takes the positions and velocities of the block and of the springs' reach either side into
 //      one array per component (the window), each particle once, as the window slides on;
-//   2. sums the block's forces there: gravity, drag, the springs run by run (Model::blockRuns), the
-//      applied forces, each particle in the plain passes' order;
+//   2. sums the block's forces there: gravity, drag, the springs run by run (Model::blockRuns, or
+//      the short runs joined into long ones, Model::joined), the applied forces, each particle in
+//      the plain passes' order;
 //   3. moves the block's free particles, checking what it writes.
 // The window holds the old values, so a block's springs see the state at the start of the sub-step
 // even after the block before it has moved. The particles just past a thread's share belong to the
@@ -142,12 +143,34 @@ SPRINGLAB_SIMD_CLONES void splitTriples(const double *__restrict x, const double
     }
 }
 
+// the runs a sub-step walks and their springs' parameters: the joined runs (Model::joined), or the
+// list's own where none were joined or the state has broken flags (one per spring of the list)
+struct RunSet {
+    const std::vector<Model::SpringRun> &runs;
+    const std::vector<int> &blockRunOffsets;
+    const std::vector<int> &blockRuns;
+    const double *restLength;
+    const double *stiffness;
+    const double *damping;
+};
+
+RunSet runSetFor(const Model &model, bool breakable)
+{
+    const Model::JoinedRuns &joined = model.joined;
+    if (breakable || joined.runs.empty())
+        return RunSet{model.springRuns, model.blockRunOffsets, model.blockRuns, model.restLength.data(),
+                      model.stiffness.data(), model.damping.data()};
+    return RunSet{joined.runs, joined.blockRunOffsets, joined.blockRuns, joined.restLength.data(),
+                  joined.stiffness.data(), joined.damping.data()};
+}
+
 // what one sub-step needs, the same for every thread
 struct Pass {
     const Model &model;
     State &state;
     double h;
     int reach;  // Model::springReach
+    RunSet runs;
 };
 
 // the window extended to hold particles [slot.hi, to): this thread's own from the arrays (not moved
@@ -279,7 +302,7 @@ void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run,
     double chunk[3 * kChunk];
     double broken[Breakable ? kChunk : 1];
     const ForceLanes out{chunk, chunk + kChunk, chunk + 2 * kChunk};
-    const Model &model = pass.model;
+    const RunSet &set = pass.runs;
     const auto ends = [&](int particle) {
         const int i = particle - slot.lo;
         return EndLanes{slot.window[0] + i, slot.window[1] + i, slot.window[2] + i,
@@ -290,8 +313,8 @@ void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run,
         const int spring = run.first + from;
         if constexpr (Breakable)
             widenFlags(to - from, pass.state.springBroken.data() + spring, broken);
-        chunkForces<Breakable>(to - from, model.restLength.data() + spring, model.stiffness.data() + spring,
-                               model.damping.data() + spring, Breakable ? broken : nullptr, ends(run.a + from),
+        chunkForces<Breakable>(to - from, set.restLength + spring, set.stiffness + spring, set.damping + spring,
+                               Breakable ? broken : nullptr, ends(run.a + from),
                                ends(run.b + from), out);
         addChunk(slot, run, sides, from, to, begin, chunk);
     }
@@ -301,10 +324,10 @@ void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run,
 template <bool Breakable>
 void springsOnBlock(const Pass &pass, const Slot &slot, int begin, int end)
 {
-    const Model &model = pass.model;
+    const RunSet &set = pass.runs;
     const auto q = static_cast<std::size_t>(begin / kSpringBlock);
-    for (int e = model.blockRunOffsets[q]; e < model.blockRunOffsets[q + 1]; ++e) {
-        const Model::SpringRun &run = model.springRuns[static_cast<std::size_t>(model.blockRuns[static_cast<std::size_t>(e)])];
+    for (int e = set.blockRunOffsets[q]; e < set.blockRunOffsets[q + 1]; ++e) {
+        const Model::SpringRun &run = set.runs[static_cast<std::size_t>(set.blockRuns[static_cast<std::size_t>(e)])];
         forEachRunPiece(run, begin, end, [&](int lo, int hi, const RunSides &sides) {
             runOnBlock<Breakable>(pass, slot, run, lo, hi, sides, begin);
         });
@@ -488,7 +511,7 @@ bool stepSpringBlocks(const Model &model, State &state, double h, bool symplecti
     if (state.blockScratch.size() != size)
         state.blockScratch.resize(size);  // on first use, and when the thread count changes
     const bool breakable = !state.springBroken.empty();
-    const Pass pass{model, state, h, reach};
+    const Pass pass{model, state, h, reach, runSetFor(model, breakable)};
     ForceSeconds seconds;
     double *scratch = state.blockScratch.data();
     bool bad = false;

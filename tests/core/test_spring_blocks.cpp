@@ -21,6 +21,7 @@ class TestSpringBlocks : public QObject {
 private slots:
     void latticeModelsUseBlocks();
     void indexListsEveryRunOfEachBlock();
+    void joinsShortRunsAcrossSmallGaps();
     void blocksEqualTheSeparatePassesToTheBit_data();
     void blocksEqualTheSeparatePassesToTheBit();
     void badValueStopsTheStep();
@@ -34,7 +35,27 @@ struct Options {
     bool gravity = false;
     bool drag = false;
     bool pins = false;
+    bool rows = false;  // rows of runs a few particles apart, most of them joined (Model::joined)
 };
+
+// Runs of one offset after another in the list and in the numbering, as a lattice's rows are:
+// lengths up to past kJoinRunsBelow and gaps up to past kJoinGap, so that some join and some do not
+void addRows(core::SceneDesc &scene, test::Lcg &next)
+{
+    const int n = static_cast<int>(scene.particles.size());
+    for (const int offset : {1, -1, 2, 37, -37, 300}) {
+        int a = std::max(0, -offset) + next(50);
+        while (true) {
+            const int count = 1 + next(core::kJoinRunsBelow + 100);
+            if (a + count + std::max(0, offset) > n)
+                break;
+            for (int j = 0; j < count; ++j)
+                scene.springs.push_back(core::SpringDesc{a + j, a + offset + j, 10.0 + next(1000), next(10) * 0.1,
+                                                         0.5 + next(100) * 1e-2});
+            a += count + 1 + next(core::kJoinGap + 3);
+        }
+    }
+}
 
 // Springs in runs whose ends lie 1 to kSpringBlock apart, in order and reversed, long and of one
 // spring, so that runs cross blocks and thread shares on either side
@@ -54,6 +75,8 @@ core::SceneDesc randomRuns(const Options &options, std::uint32_t seed)
                                                         : Eigen::Vector3d(next(100) * 1e-2, next(100) * 1e-2, -0.2),
                                                  0.5 + next(100) * 1e-2, 0.01, pinned));
     }
+    if (options.rows)
+        addRows(scene, next);
     test::addRandomRuns(scene, {1, -1, 2, -3, 37, 1025, -1025, core::kSpringBlock, -core::kSpringBlock}, 600, next);
     return scene;
 }
@@ -132,6 +155,74 @@ void TestSpringBlocks::indexListsEveryRunOfEachBlock()
     }
 }
 
+// A cloth's rows joined: one run per kind of spring, each the list's runs of that kind end to end,
+// their parameters in place and padding with none in the gaps; long runs and wide gaps stay apart
+void TestSpringBlocks::joinsShortRunsAcrossSmallGaps()
+{
+    core::ClothOptions cloth;
+    cloth.rows = cloth.cols = 64;
+    const auto model = core::compileModel(core::makeCloth(cloth));
+    QVERIFY(model->usesSpringBlocks());
+    const core::Model::JoinedRuns &joined = model->joined;
+    QCOMPARE(int(joined.runs.size()), 6);  // structural, shear and bend, two directions each
+    int covered = 0;
+    std::size_t r = 0;
+    for (const core::Model::SpringRun &into : joined.runs) {
+        QCOMPARE(into.first, covered);
+        // the list's runs that make it up, in order, each at its place
+        int springs = 0;
+        for (; r < model->springRuns.size() && model->springRuns[r].a < into.a + into.count &&
+               model->springRuns[r].b - model->springRuns[r].a == into.b - into.a;
+             ++r) {
+            const core::Model::SpringRun &run = model->springRuns[r];
+            const int at = into.first + run.a - into.a;
+            QCOMPARE(joined.restLength.segment(at, run.count), model->restLength.segment(run.first, run.count));
+            QCOMPARE(joined.stiffness.segment(at, run.count), model->stiffness.segment(run.first, run.count));
+            QCOMPARE(joined.damping.segment(at, run.count), model->damping.segment(run.first, run.count));
+            springs += run.count;
+        }
+        // what is not a spring is padding: nothing at all
+        const int padding = into.count - springs;
+        QCOMPARE(int((joined.stiffness.segment(into.first, into.count).array() == 0.0).count()), padding);
+        QCOMPARE(int((joined.damping.segment(into.first, into.count).array() == 0.0).count()), padding);
+        QVERIFY(padding < into.count / 8);
+        covered += into.count;
+    }
+    QCOMPARE(r, model->springRuns.size());
+    QCOMPARE(int(joined.stiffness.size()), covered);
+
+    // rows of kJoinRunsBelow springs or more, or kJoinGap + 1 particles apart, stay the list's runs
+    for (const bool wide : {false, true}) {
+        core::SceneDesc rows = test::quietScene();
+        const int length = wide ? 40 : core::kJoinRunsBelow;
+        const int step = length + (wide ? core::kJoinGap + 1 : 1);
+        for (int i = 0; i < 8 * step; ++i)
+            rows.particles.push_back(test::particle(Eigen::Vector3d(i * 1e-2, 0, 0)));
+        for (int row = 0; row < 7; ++row)
+            for (int j = 0; j < length; ++j)
+                rows.springs.push_back(core::SpringDesc{row * step + j, row * step + j + 1, 10.0, 0.1, 1e-2});
+        const auto apart = core::compileModel(rows);
+        QVERIFY(apart->usesSpringBlocks());
+        QCOMPARE(int(apart->springRuns.size()), 7);
+        QVERIFY(apart->joined.runs.empty());
+        // one particle nearer or one spring shorter: they join
+        for (core::SpringDesc &spring : rows.springs) {
+            const int row = spring.a / step;
+            if (wide) {
+                spring.a -= row;
+                spring.b -= row;
+            }
+        }
+        if (!wide)
+            rows.springs.erase(std::remove_if(rows.springs.begin(), rows.springs.end(),
+                                              [&](const core::SpringDesc &spring) { return spring.a % step == length - 1; }),
+                               rows.springs.end());
+        const auto near = core::compileModel(rows);
+        QCOMPARE(int(near->springRuns.size()), 7);
+        QCOMPARE(int(near->joined.runs.size()), 1);
+    }
+}
+
 void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit_data()
 {
     QTest::addColumn<int>("particles");
@@ -141,11 +232,15 @@ void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit_data()
     QTest::addColumn<bool>("applied");
     QTest::addColumn<bool>("pins");
     QTest::addColumn<bool>("breakable");
-    QTest::newRow("one block, springs only") << 600 << true << false << false << false << false << false;
-    QTest::newRow("blocks, everything") << 20000 << true << true << true << true << true << false;
-    QTest::newRow("blocks, explicit Euler") << 20000 << false << true << true << false << true << false;
-    QTest::newRow("blocks, some springs broken") << 20000 << true << true << false << false << true << true;
-    QTest::newRow("blocks, no gravity, applied") << 13001 << true << false << false << true << false << false;
+    QTest::addColumn<bool>("rows");
+    QTest::newRow("one block, springs only") << 600 << true << false << false << false << false << false << false;
+    QTest::newRow("blocks, everything") << 20000 << true << true << true << true << true << false << false;
+    QTest::newRow("blocks, explicit Euler") << 20000 << false << true << true << false << true << false << false;
+    QTest::newRow("blocks, some springs broken") << 20000 << true << true << false << false << true << true << false;
+    QTest::newRow("blocks, no gravity, applied") << 13001 << true << false << false << true << false << false << false;
+    QTest::newRow("one block, joined rows") << 3000 << true << true << false << false << false << false << true;
+    QTest::newRow("blocks, joined rows, everything") << 20000 << true << true << true << true << true << false << true;
+    QTest::newRow("blocks, rows, some springs broken") << 20000 << true << true << false << false << true << true << true;
 }
 
 // three sub-steps fused and separate from the same state: every position and velocity equal to the
@@ -159,11 +254,13 @@ void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit()
     QFETCH(bool, applied);
     QFETCH(bool, pins);
     QFETCH(bool, breakable);
+    QFETCH(bool, rows);
     Options options;
     options.particles = particles;
     options.gravity = gravity;
     options.drag = drag;
     options.pins = pins;
+    options.rows = rows;
     core::SceneDesc scene = randomRuns(options, 29u);
     scene.settings.integrator = symplectic ? core::Integrator::SymplecticEuler : core::Integrator::ExplicitEuler;
 
@@ -177,6 +274,7 @@ void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit()
 
     test::Sim separate = test::compile(scene);
     QVERIFY(separate.model->usesSpringBlocks());
+    QCOMPARE(!separate.model->joined.runs.empty(), rows);  // the random runs alone never join
     QCOMPARE(separate.model->plan.gravity, gravity);
     QCOMPARE(separate.model->plan.drag, drag);
     prepare(separate);
