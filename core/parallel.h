@@ -15,12 +15,24 @@ namespace core {
 // the fewest iterations worth splitting
 inline constexpr int kParallelMinimum = 4096;
 
+// whether a loop of count iterations is split across threads: large enough, and more than one
+// thread to split it across (a one-thread region still costs a call into the runtime and a wake)
+inline bool splitAcrossThreads(int count)
+{
+#ifdef SPRINGLAB_OPENMP
+    return count >= kParallelMinimum && omp_get_max_threads() > 1;
+#else
+    (void)count;
+    return false;
+#endif
+}
+
 // body(i) for i in [0, count), split across the threads when count is large enough
 template <typename Body>
 void parallelFor(int count, Body &&body)
 {
 #ifdef SPRINGLAB_OPENMP
-    if (count >= kParallelMinimum) {
+    if (splitAcrossThreads(count)) {
 #pragma omp parallel for schedule(static)
         for (int i = 0; i < count; ++i)
             body(i);
@@ -37,7 +49,7 @@ template <typename Body>
 void parallelChunks(int count, Body &&body)
 {
 #ifdef SPRINGLAB_OPENMP
-    if (count >= kParallelMinimum) {
+    if (splitAcrossThreads(count)) {
 #pragma omp parallel
         {
             const long long threads = omp_get_num_threads();
@@ -70,7 +82,7 @@ inline int twoPhaseShares(int count)
     if (sequentialShares().shares > 0)
         return sequentialShares().shares;
 #ifdef SPRINGLAB_OPENMP
-    if (count >= kParallelMinimum)
+    if (splitAcrossThreads(count))
         return omp_get_max_threads();
 #endif
     (void)count;
@@ -99,7 +111,7 @@ void parallelChunksInTwoPhases(int count, First &&first, Second &&second)
         return;
     }
 #ifdef SPRINGLAB_OPENMP
-    if (count >= kParallelMinimum) {
+    if (splitAcrossThreads(count)) {
 #pragma omp parallel
         {
             const int threads = omp_get_num_threads();
