@@ -7,7 +7,9 @@
 //      one array per component (the window), each particle once, as the window slides on;
 //   2. sums the block's forces there: gravity, drag, the springs run by run (Model::blockRuns, or
 //      the short runs joined into long ones, Model::joined), the applied forces, each particle in
-//      the plain passes' order;
+//      the plain passes' order. A run whose ends lie kFarEnds or more apart adds each spring's
+//      force to its ends as it computes it; one whose ends are nearer computes a chunk of forces,
+//      then adds them (addChunk), as its ends share vectors;
 //   3. moves the block's free particles, checking what it writes.
 // The window holds the old values, so a block's springs see the state at the start of the sub-step
 // even after the block before it has moved. The particles just past a thread's share belong to the
@@ -27,7 +29,9 @@
 #include <atomic>
 #include <cassert>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
+#include <type_traits>
 
 namespace core {
 
@@ -65,6 +69,43 @@ SPRINGLAB_SIMD_CLONES void chunkForces(int count, const double *__restrict restL
                               a.vx[j] - b.vx[j], a.vy[j] - b.vy[j], a.vz[j] - b.vz[j]};
         dampedSpring(ends, restLength[j], stiffness[j], damping[j], Breakable && broken[j] != 0.0, out.x[j], out.y[j],
                      out.z[j]);
+    }
+}
+
+// Which ends of a stretch of springs lie in the block: their forces are added there
+enum Ends { EndA = 1, EndB = 2, BothEnds = 3 };
+
+// The ends of a run at least kFarEnds apart in the numbering: its springs' forces go straight to
+// their ends' sums, +f at end a and -f at end b, as each is computed. A spring's two ends are then
+// never in one vector, and a particle's end-b force (spring q - b) is added a vector or more before
+// or after its end-a force (spring q - a), in the plain loop's order either way (ascending j).
+// safelen: the compiler must not take more than 8 springs at once, nor move one vector's reads
+// of the sums above the last one's writes (the pointers may alias, so they are not restrict).
+// The divider bounds this loop, and the sums' reads and writes fit in the slots it leaves.
+constexpr int kFarEnds = 8;
+
+template <bool Breakable, int Sides>
+SPRINGLAB_SIMD_CLONES void chunkForcesAdded(int count, const double *__restrict restLength,
+                                            const double *__restrict stiffness, const double *__restrict damping,
+                                            const double *__restrict broken, EndLanes a, EndLanes b, ForceLanes toA,
+                                            ForceLanes toB)
+{
+#pragma omp simd safelen(kFarEnds)
+    for (int j = 0; j < count; ++j) {
+        const SpringEnds ends{a.x[j] - b.x[j], a.y[j] - b.y[j], a.z[j] - b.z[j],
+                              a.vx[j] - b.vx[j], a.vy[j] - b.vy[j], a.vz[j] - b.vz[j]};
+        double fx, fy, fz;
+        dampedSpring(ends, restLength[j], stiffness[j], damping[j], Breakable && broken[j] != 0.0, fx, fy, fz);
+        if constexpr ((Sides & EndB) != 0) {
+            toB.x[j] = toB.x[j] - fx;
+            toB.y[j] = toB.y[j] - fy;
+            toB.z[j] = toB.z[j] - fz;
+        }
+        if constexpr ((Sides & EndA) != 0) {
+            toA.x[j] = toA.x[j] + fx;
+            toA.y[j] = toA.y[j] + fy;
+            toA.z[j] = toA.z[j] + fz;
+        }
     }
 }
 
@@ -293,6 +334,49 @@ void addChunk(const Slot &slot, const Model::SpringRun &run, const RunSides &sid
     one(second, hi, second.hi);
 }
 
+// The springs j in [from, to) of a run whose ends are kFarEnds or more apart, their forces added
+// straight to the ends that lie in the block that starts at begin: the chunk cut where an end
+// enters or leaves the block, each stretch with the ends it has there
+template <bool Breakable>
+void addFarChunk(const Pass &pass, const Slot &slot, const Model::SpringRun &run, const RunSides &sides, int from,
+                 int to, int begin, const double *broken)
+{
+    const RunSet &set = pass.runs;
+    std::array<int, 6> cuts{from, to, std::clamp(sides.aLo, from, to), std::clamp(sides.aHi, from, to),
+                            std::clamp(sides.bLo, from, to), std::clamp(sides.bHi, from, to)};
+    std::sort(cuts.begin(), cuts.end());
+    const auto lanes = [&](const std::array<double *, 6> &window, int lane0, int particle) {
+        const int i = particle - lane0;
+        return EndLanes{window[0] + i, window[1] + i, window[2] + i, window[3] + i, window[4] + i, window[5] + i};
+    };
+    const auto sums = [&](int particle) {
+        const int i = particle - begin;
+        return ForceLanes{slot.force[0] + i, slot.force[1] + i, slot.force[2] + i};
+    };
+    for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+        const int x = cuts[c];
+        const int y = cuts[c + 1];
+        if (x >= y)
+            continue;
+        const int here = (sides.aLo <= x && y <= sides.aHi ? EndA : 0) | (sides.bLo <= x && y <= sides.bHi ? EndB : 0);
+        const int spring = run.first + x;
+        const double *flags = Breakable ? broken + (x - from) : nullptr;
+        const EndLanes a = lanes(slot.window, slot.lo, run.a + x);
+        const EndLanes b = lanes(slot.window, slot.lo, run.b + x);
+        const auto kernel = [&](auto chosen) {
+            constexpr int Sides = decltype(chosen)::value;
+            chunkForcesAdded<Breakable, Sides>(y - x, set.restLength + spring, set.stiffness + spring,
+                                               set.damping + spring, flags, a, b, sums(run.a + x), sums(run.b + x));
+        };
+        if (here == BothEnds)
+            kernel(std::integral_constant<int, BothEnds>{});
+        else if (here == EndA)
+            kernel(std::integral_constant<int, EndA>{});
+        else if (here == EndB)
+            kernel(std::integral_constant<int, EndB>{});
+    }
+}
+
 // A run's springs j in [lo, hi), a chunk at a time, their forces added to the ends that lie in
 // the block [begin, end) (sides), in the plain loop's order (addInPlainOrder)
 template <bool Breakable>
@@ -308,11 +392,16 @@ void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run,
         return EndLanes{slot.window[0] + i, slot.window[1] + i, slot.window[2] + i,
                         slot.window[3] + i, slot.window[4] + i, slot.window[5] + i};
     };
+    const bool far = std::abs(run.b - run.a) >= kFarEnds;
     for (int from = lo; from < hi; from += kChunk) {
         const int to = std::min(hi, from + kChunk);
         const int spring = run.first + from;
         if constexpr (Breakable)
             widenFlags(to - from, pass.state.springBroken.data() + spring, broken);
+        if (far) {
+            addFarChunk<Breakable>(pass, slot, run, sides, from, to, begin, Breakable ? broken : nullptr);
+            continue;
+        }
         chunkForces<Breakable>(to - from, set.restLength + spring, set.stiffness + spring, set.damping + spring,
                                Breakable ? broken : nullptr, ends(run.a + from),
                                ends(run.b + from), out);
