@@ -29,16 +29,20 @@ void addGrid(SceneDesc &scene, int rows, int cols, double spacing, double height
                 false});
 }
 
-// joins (r, c) to (r + dr, c + dc) for every grid point where both exist
-void joinGrid(SceneDesc &scene, int rows, int cols, int dr, int dc, double stiffness, double damping)
+// joins (r, c) to (r + dr, c + dc) for every grid point where both exist, at rest at the grid's
+// distance: every spring of one kind has the same rest length to the bit (the distances of the
+// particles' coordinates differ in the last bits), so that the spring pass reads one value for
+// all of them (Model::SpringRun::uniform)
+void joinGrid(SceneDesc &scene, int rows, int cols, double spacing, int dr, int dc, double stiffness, double damping)
 {
+    const double rest = spacing * std::sqrt(static_cast<double>(dr * dr + dc * dc));
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < cols; ++c) {
             const int r2 = r + dr;
             const int c2 = c + dc;
             if (r2 < 0 || r2 >= rows || c2 < 0 || c2 >= cols)
                 continue;
-            addSpring(scene, r * cols + c, r2 * cols + c2, stiffness, damping);
+            scene.springs.push_back(SpringDesc{r * cols + c, r2 * cols + c2, stiffness, damping, rest});
         }
 }
 
@@ -49,8 +53,8 @@ SceneDesc makeNet(const NetOptions &o)
     SceneDesc scene;
     scene.name = "net";
     addGrid(scene, o.rows, o.cols, o.spacing, o.height, o.mass, o.radius);
-    joinGrid(scene, o.rows, o.cols, 0, 1, o.stiffness, o.damping);
-    joinGrid(scene, o.rows, o.cols, 1, 0, o.stiffness, o.damping);
+    joinGrid(scene, o.rows, o.cols, o.spacing, 0, 1, o.stiffness, o.damping);
+    joinGrid(scene, o.rows, o.cols, o.spacing, 1, 0, o.stiffness, o.damping);
     if (o.pinEdges)
         for (int c = 0; c < o.cols; ++c) {
             scene.particles[static_cast<std::size_t>(c)].pinned = true;
@@ -66,12 +70,12 @@ SceneDesc makeCloth(const ClothOptions &o)
     scene.settings.substeps = o.substeps;
     addGrid(scene, o.rows, o.cols, o.spacing, o.height, o.mass, o.radius);
     // structural, then shear (both diagonals), then bend (every second neighbour)
-    joinGrid(scene, o.rows, o.cols, 0, 1, o.structuralStiffness, o.damping);
-    joinGrid(scene, o.rows, o.cols, 1, 0, o.structuralStiffness, o.damping);
-    joinGrid(scene, o.rows, o.cols, 1, 1, o.shearStiffness, o.damping);
-    joinGrid(scene, o.rows, o.cols, 1, -1, o.shearStiffness, o.damping);
-    joinGrid(scene, o.rows, o.cols, 0, 2, o.bendStiffness, o.damping);
-    joinGrid(scene, o.rows, o.cols, 2, 0, o.bendStiffness, o.damping);
+    joinGrid(scene, o.rows, o.cols, o.spacing, 0, 1, o.structuralStiffness, o.damping);
+    joinGrid(scene, o.rows, o.cols, o.spacing, 1, 0, o.structuralStiffness, o.damping);
+    joinGrid(scene, o.rows, o.cols, o.spacing, 1, 1, o.shearStiffness, o.damping);
+    joinGrid(scene, o.rows, o.cols, o.spacing, 1, -1, o.shearStiffness, o.damping);
+    joinGrid(scene, o.rows, o.cols, o.spacing, 0, 2, o.bendStiffness, o.damping);
+    joinGrid(scene, o.rows, o.cols, o.spacing, 2, 0, o.bendStiffness, o.damping);
     if (o.pinCorners) {
         scene.particles.front().pinned = true;
         scene.particles[static_cast<std::size_t>(o.cols - 1)].pinned = true;

@@ -36,6 +36,15 @@ void indexByBlock(const std::vector<Model::SpringRun> &runs, int particles, std:
     }
 }
 
+// whether springs [first, last) all have spring first's rest length, stiffness and damping, to the bit
+bool sameParameters(const Model &model, int first, int last)
+{
+    const auto same = [&](const Eigen::VectorXd &values) {
+        return (values.segment(first, last - first).array() == values[first]).all();
+    };
+    return same(model.restLength) && same(model.stiffness) && same(model.damping);
+}
+
 // whether run `next`, which follows `last` in the list, can join it (Model::JoinedRuns)
 bool joins(const Model::SpringRun &last, const Model::SpringRun &next)
 {
@@ -62,8 +71,9 @@ void joinShortRuns(Model &model)
         if (r > 0 && joins(runs[r - 1], run)) {
             Model::SpringRun &into = joined.back();
             into.count = run.a - into.a + run.count;
+            into.uniform = false;  // the padding's parameters are not the springs'
         } else {
-            joined.push_back(Model::SpringRun{padded, run.count, run.a, run.b});
+            joined.push_back(Model::SpringRun{padded, run.count, run.a, run.b, run.uniform});
         }
         pieces.emplace_back(joined.back().first + (run.a - joined.back().a), run.first);
         padded = joined.back().first + joined.back().count;
@@ -159,6 +169,7 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
         while (k + run.count < springs && model->springA[static_cast<std::size_t>(k + run.count)] == run.a + run.count &&
                model->springB[static_cast<std::size_t>(k + run.count)] == run.b + run.count)
             ++run.count;
+        run.uniform = sameParameters(*model, run.first, run.first + run.count);
         model->springRuns.push_back(run);
         model->springReach = std::max(model->springReach, std::abs(run.b - run.a));
         k += run.count;

@@ -27,7 +27,7 @@ struct StepPlan {
 // positions and velocities with the springs' reach either side stay in the L2 cache
 inline constexpr int kSpringBlock = 4096;
 // Model::joined: runs this short are worth joining, across gaps of at most this many particles
-inline constexpr int kJoinRunsBelow = 512;
+inline constexpr int kJoinRunsBelow = 128;
 inline constexpr int kJoinGap = 8;
 
 struct Model {
@@ -74,6 +74,9 @@ struct Model {
         int count = 0;
         int a = 0;      // end a of its first spring
         int b = 0;      // end b of its first spring
+        // every spring of the run has the first's rest length, stiffness and damping: the kernels
+        // read them once, not once a spring (a cloth's run is one kind of spring)
+        bool uniform = false;
     };
     std::vector<SpringRun> springRuns;
     // the farthest apart the two ends of a run lie in the numbering, max |b - a|: how far past a

@@ -58,16 +58,18 @@ SPRINGLAB_SIMD_CLONES void widenFlags(int count, const std::uint8_t *__restrict 
         out[j] = flags[j] != 0 ? 1.0 : 0.0;
 }
 
-template <bool Breakable>
+// Uniform: every spring has the first's parameters (Model::SpringRun::uniform), read once
+template <bool Breakable, bool Uniform>
 SPRINGLAB_SIMD_CLONES void chunkForces(int count, const double *__restrict restLength, const double *__restrict stiffness,
                                        const double *__restrict damping, const double *__restrict broken,
                                        EndLanes a, EndLanes b, ForceLanes out)
 {
 #pragma omp simd
     for (int j = 0; j < count; ++j) {
+        const int k = Uniform ? 0 : j;
         const SpringEnds ends{a.x[j] - b.x[j], a.y[j] - b.y[j], a.z[j] - b.z[j],
                               a.vx[j] - b.vx[j], a.vy[j] - b.vy[j], a.vz[j] - b.vz[j]};
-        dampedSpring(ends, restLength[j], stiffness[j], damping[j], Breakable && broken[j] != 0.0, out.x[j], out.y[j],
+        dampedSpring(ends, restLength[k], stiffness[k], damping[k], Breakable && broken[j] != 0.0, out.x[j], out.y[j],
                      out.z[j]);
     }
 }
@@ -84,7 +86,7 @@ enum Ends { EndA = 1, EndB = 2, BothEnds = 3 };
 // The divider bounds this loop, and the sums' reads and writes fit in the slots it leaves.
 constexpr int kFarEnds = 8;
 
-template <bool Breakable, int Sides>
+template <bool Breakable, bool Uniform, int Sides>
 SPRINGLAB_SIMD_CLONES void chunkForcesAdded(int count, const double *__restrict restLength,
                                             const double *__restrict stiffness, const double *__restrict damping,
                                             const double *__restrict broken, EndLanes a, EndLanes b, ForceLanes toA,
@@ -92,19 +94,27 @@ SPRINGLAB_SIMD_CLONES void chunkForcesAdded(int count, const double *__restrict 
 {
 #pragma omp simd safelen(kFarEnds)
     for (int j = 0; j < count; ++j) {
+        const int k = Uniform ? 0 : j;
         const SpringEnds ends{a.x[j] - b.x[j], a.y[j] - b.y[j], a.z[j] - b.z[j],
                               a.vx[j] - b.vx[j], a.vy[j] - b.vy[j], a.vz[j] - b.vz[j]};
         double fx, fy, fz;
-        dampedSpring(ends, restLength[j], stiffness[j], damping[j], Breakable && broken[j] != 0.0, fx, fy, fz);
-        if constexpr ((Sides & EndB) != 0) {
-            toB.x[j] = toB.x[j] - fx;
-            toB.y[j] = toB.y[j] - fy;
-            toB.z[j] = toB.z[j] - fz;
+        dampedSpring(ends, restLength[k], stiffness[k], damping[k], Breakable && broken[j] != 0.0, fx, fy, fz);
+        // both ends' sums read before either is written: where the ends lie a multiple of 512
+        // particles apart (4 KiB), a read after the other end's write would wait on it, as the
+        // CPU matches addresses by their low 12 bits
+        constexpr bool atA = (Sides & EndA) != 0;
+        constexpr bool atB = (Sides & EndB) != 0;
+        const double ax = atA ? toA.x[j] : 0.0, ay = atA ? toA.y[j] : 0.0, az = atA ? toA.z[j] : 0.0;
+        const double bx = atB ? toB.x[j] : 0.0, by = atB ? toB.y[j] : 0.0, bz = atB ? toB.z[j] : 0.0;
+        if constexpr (atB) {
+            toB.x[j] = bx - fx;
+            toB.y[j] = by - fy;
+            toB.z[j] = bz - fz;
         }
-        if constexpr ((Sides & EndA) != 0) {
-            toA.x[j] = toA.x[j] + fx;
-            toA.y[j] = toA.y[j] + fy;
-            toA.z[j] = toA.z[j] + fz;
+        if constexpr (atA) {
+            toA.x[j] = ax + fx;
+            toA.y[j] = ay + fy;
+            toA.z[j] = az + fz;
         }
     }
 }
@@ -359,14 +369,16 @@ void addFarChunk(const Pass &pass, const Slot &slot, const Model::SpringRun &run
         if (x >= y)
             continue;
         const int here = (sides.aLo <= x && y <= sides.aHi ? EndA : 0) | (sides.bLo <= x && y <= sides.bHi ? EndB : 0);
-        const int spring = run.first + x;
+        const int spring = run.uniform ? run.first : run.first + x;
         const double *flags = Breakable ? broken + (x - from) : nullptr;
         const EndLanes a = lanes(slot.window, slot.lo, run.a + x);
         const EndLanes b = lanes(slot.window, slot.lo, run.b + x);
         const auto kernel = [&](auto chosen) {
             constexpr int Sides = decltype(chosen)::value;
-            chunkForcesAdded<Breakable, Sides>(y - x, set.restLength + spring, set.stiffness + spring,
-                                               set.damping + spring, flags, a, b, sums(run.a + x), sums(run.b + x));
+            const auto added = run.uniform ? chunkForcesAdded<Breakable, true, Sides>
+                                           : chunkForcesAdded<Breakable, false, Sides>;
+            added(y - x, set.restLength + spring, set.stiffness + spring, set.damping + spring, flags, a, b,
+                  sums(run.a + x), sums(run.b + x));
         };
         if (here == BothEnds)
             kernel(std::integral_constant<int, BothEnds>{});
@@ -395,16 +407,16 @@ void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run,
     const bool far = std::abs(run.b - run.a) >= kFarEnds;
     for (int from = lo; from < hi; from += kChunk) {
         const int to = std::min(hi, from + kChunk);
-        const int spring = run.first + from;
         if constexpr (Breakable)
-            widenFlags(to - from, pass.state.springBroken.data() + spring, broken);
+            widenFlags(to - from, pass.state.springBroken.data() + run.first + from, broken);
         if (far) {
             addFarChunk<Breakable>(pass, slot, run, sides, from, to, begin, Breakable ? broken : nullptr);
             continue;
         }
-        chunkForces<Breakable>(to - from, set.restLength + spring, set.stiffness + spring, set.damping + spring,
-                               Breakable ? broken : nullptr, ends(run.a + from),
-                               ends(run.b + from), out);
+        const int spring = run.uniform ? run.first : run.first + from;
+        const auto forces = run.uniform ? chunkForces<Breakable, true> : chunkForces<Breakable, false>;
+        forces(to - from, set.restLength + spring, set.stiffness + spring, set.damping + spring,
+               Breakable ? broken : nullptr, ends(run.a + from), ends(run.b + from), out);
         addChunk(slot, run, sides, from, to, begin, chunk);
     }
 }

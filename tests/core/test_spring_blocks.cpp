@@ -13,6 +13,8 @@
 
 #include <QtTest>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 class TestSpringBlocks : public QObject {
@@ -22,6 +24,7 @@ private slots:
     void latticeModelsUseBlocks();
     void indexListsEveryRunOfEachBlock();
     void joinsShortRunsAcrossSmallGaps();
+    void runsOfOneKindAreUniform();
     void blocksEqualTheSeparatePassesToTheBit_data();
     void blocksEqualTheSeparatePassesToTheBit();
     void badValueStopsTheStep();
@@ -39,7 +42,8 @@ struct Options {
 };
 
 // Runs of one offset after another in the list and in the numbering, as a lattice's rows are:
-// lengths up to past kJoinRunsBelow and gaps up to past kJoinGap, so that some join and some do not
+// lengths up to past kJoinRunsBelow and gaps up to past kJoinGap, so that some join and some do not;
+// one row in three of one kind of spring (Model::SpringRun::uniform)
 void addRows(core::SceneDesc &scene, test::Lcg &next)
 {
     const int n = static_cast<int>(scene.particles.size());
@@ -49,9 +53,15 @@ void addRows(core::SceneDesc &scene, test::Lcg &next)
             const int count = 1 + next(core::kJoinRunsBelow + 100);
             if (a + count + std::max(0, offset) > n)
                 break;
-            for (int j = 0; j < count; ++j)
-                scene.springs.push_back(core::SpringDesc{a + j, a + offset + j, 10.0 + next(1000), next(10) * 0.1,
-                                                         0.5 + next(100) * 1e-2});
+            const bool oneKind = next(3) == 0;
+            core::SpringDesc spring{0, 0, 10.0 + next(1000), next(10) * 0.1, 0.5 + next(100) * 1e-2};
+            for (int j = 0; j < count; ++j) {
+                if (!oneKind)
+                    spring = core::SpringDesc{0, 0, 10.0 + next(1000), next(10) * 0.1, 0.5 + next(100) * 1e-2};
+                spring.a = a + j;
+                spring.b = a + offset + j;
+                scene.springs.push_back(spring);
+            }
             a += count + 1 + next(core::kJoinGap + 3);
         }
     }
@@ -223,6 +233,31 @@ void TestSpringBlocks::joinsShortRunsAcrossSmallGaps()
     }
 }
 
+// A generated cloth's runs each hold one kind of spring, to the bit: one rest length, stiffness and
+// damping. One value an ulp off, and its run is not
+void TestSpringBlocks::runsOfOneKindAreUniform()
+{
+    core::ClothOptions options;
+    options.rows = options.cols = 200;  // rows too long to join
+    core::SceneDesc cloth = core::makeCloth(options);
+    const auto model = core::compileModel(cloth);
+    QVERIFY(model->joined.runs.empty());
+    QCOMPARE(int(model->springRuns.size()), 200 + 199 + 199 + 200 + 2);  // rows of each kind, two columns
+    for (const core::Model::SpringRun &run : model->springRuns)
+        QVERIFY(run.uniform);
+    for (const int field : {0, 1, 2}) {
+        core::SceneDesc nudged = cloth;
+        core::SpringDesc &spring = nudged.springs[1000];
+        double &value = field == 0 ? spring.restLength : field == 1 ? spring.stiffness : spring.damping;
+        value = std::nextafter(value, 1.0);
+        const auto changed = core::compileModel(nudged);
+        const auto uniformRuns = std::count_if(changed->springRuns.begin(), changed->springRuns.end(),
+                                               [](const core::Model::SpringRun &run) { return run.uniform; });
+        QCOMPARE(int(uniformRuns), int(changed->springRuns.size()) - 1);
+        QVERIFY(!changed->springRuns[std::size_t(1000 / 199)].uniform);
+    }
+}
+
 void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit_data()
 {
     QTest::addColumn<int>("particles");
@@ -275,6 +310,13 @@ void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit()
     test::Sim separate = test::compile(scene);
     QVERIFY(separate.model->usesSpringBlocks());
     QCOMPARE(!separate.model->joined.runs.empty(), rows);  // the random runs alone never join
+    if (rows) {  // and are never of one kind; some rows are, and some of those stay alone
+        const auto uniform = [](const std::vector<core::Model::SpringRun> &runs) {
+            return std::count_if(runs.begin(), runs.end(), [](const core::Model::SpringRun &run) { return run.uniform && run.count > 1; });
+        };
+        QVERIFY(uniform(separate.model->springRuns) > 0);
+        QVERIFY(uniform(separate.model->joined.runs) > 0);
+    }
     QCOMPARE(separate.model->plan.gravity, gravity);
     QCOMPARE(separate.model->plan.drag, drag);
     prepare(separate);
