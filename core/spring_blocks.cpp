@@ -99,15 +99,22 @@ SPRINGLAB_SIMD_CLONES void chunkForcesAdded(int count, const double *__restrict 
                               a.vx[j] - b.vx[j], a.vy[j] - b.vy[j], a.vz[j] - b.vz[j]};
         double fx, fy, fz;
         dampedSpring(ends, restLength[k], stiffness[k], damping[k], Breakable && broken[j] != 0.0, fx, fy, fz);
-        if constexpr ((Sides & EndB) != 0) {
-            toB.x[j] = toB.x[j] - fx;
-            toB.y[j] = toB.y[j] - fy;
-            toB.z[j] = toB.z[j] - fz;
+        // both ends' sums read before either is written: where the ends lie a multiple of 512
+        // particles apart (4 KiB), a read after the other end's write would wait on it, as the
+        // CPU matches addresses by their low 12 bits
+        constexpr bool atA = (Sides & EndA) != 0;
+        constexpr bool atB = (Sides & EndB) != 0;
+        const double ax = atA ? toA.x[j] : 0.0, ay = atA ? toA.y[j] : 0.0, az = atA ? toA.z[j] : 0.0;
+        const double bx = atB ? toB.x[j] : 0.0, by = atB ? toB.y[j] : 0.0, bz = atB ? toB.z[j] : 0.0;
+        if constexpr (atB) {
+            toB.x[j] = bx - fx;
+            toB.y[j] = by - fy;
+            toB.z[j] = bz - fz;
         }
-        if constexpr ((Sides & EndA) != 0) {
-            toA.x[j] = toA.x[j] + fx;
-            toA.y[j] = toA.y[j] + fy;
-            toA.z[j] = toA.z[j] + fz;
+        if constexpr (atA) {
+            toA.x[j] = ax + fx;
+            toA.y[j] = ay + fy;
+            toA.z[j] = az + fz;
         }
     }
 }
