@@ -175,14 +175,6 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
         k += run.count;
     }
 
-    // which runs reach into each block of particles, and the short ones joined, for the fused sub-step
-    if (model->usesSpringRuns() && model->springReach <= kSpringBlock) {
-        indexByBlock(model->springRuns, static_cast<int>(n), model->blockRunOffsets, model->blockRuns);
-        joinShortRuns(*model);
-        if (!model->joined.runs.empty())
-            indexByBlock(model->joined.runs, static_cast<int>(n), model->joined.blockRunOffsets, model->joined.blockRuns);
-    }
-
     // planes
     const auto planes = static_cast<Eigen::Index>(scene.planes.size());
     model->planeNormal.resize(3, planes);
@@ -202,6 +194,16 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
     plan.springBreaks = springs > 0 && model->breakStrain.maxCoeff() > 0.0;
     plan.planeCollisions = anythingFree && s.planeCollisions && planes > 0;
     plan.particleCollisions = anythingFree && s.particleCollisions && n >= 2;
+
+    // which runs reach into each block of particles, for the fused sub-step, and the short ones
+    // joined where no spring can break (a state with broken flags steps by the list's runs)
+    if (model->usesSpringRuns() && model->springReach <= kSpringBlock) {
+        indexByBlock(model->springRuns, static_cast<int>(n), model->blockRunOffsets, model->blockRuns);
+        if (!plan.springBreaks)
+            joinShortRuns(*model);
+        if (!model->joined.runs.empty())
+            indexByBlock(model->joined.runs, static_cast<int>(n), model->joined.blockRunOffsets, model->joined.blockRuns);
+    }
 
     // auto substeps: as many as the stability limit at the initial state asks, and no fewer than the
     // scene's own

@@ -99,7 +99,8 @@ struct Model {
     // take in full vectors instead of a remainder and a dozen calls a row. A joined run's `first`
     // indexes the three arrays here, one value per spring of the run, padding included. The
     // broken flags are the state's, one per spring of the list, so a state with flags steps by
-    // springRuns. Empty where no run was joined.
+    // springRuns; so does a model whose springs can break, which has none. Empty where no run was
+    // joined.
     struct JoinedRuns {
         std::vector<SpringRun> runs;
         Eigen::VectorXd restLength;  // m

@@ -201,6 +201,14 @@ void TestSpringBlocks::joinsShortRunsAcrossSmallGaps()
     QCOMPARE(r, model->springRuns.size());
     QCOMPARE(int(joined.stiffness.size()), covered);
 
+    // springs that can break: the state's flags are the list's, so nothing is joined
+    core::SceneDesc tearable = core::makeCloth(cloth);
+    tearable.springs[17].breakStrain = 0.2;
+    const auto breakable = core::compileModel(tearable);
+    QVERIFY(breakable->plan.springBreaks);
+    QVERIFY(breakable->usesSpringBlocks());
+    QVERIFY(breakable->joined.runs.empty());
+
     // rows of kJoinRunsBelow springs or more, or kJoinGap + 1 particles apart, stay the list's runs
     for (const bool wide : {false, true}) {
         core::SceneDesc rows = test::quietScene();
