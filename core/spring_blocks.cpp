@@ -353,6 +353,14 @@ void addChunk(const Slot &slot, const Model::SpringRun &run, const RunSides &sid
     one(second, hi, second.hi);
 }
 
+// the window's lanes from particle on
+EndLanes windowLanes(const Slot &slot, int particle)
+{
+    const int i = particle - slot.lo;
+    return EndLanes{slot.window[0] + i, slot.window[1] + i, slot.window[2] + i,
+                    slot.window[3] + i, slot.window[4] + i, slot.window[5] + i};
+}
+
 // The springs j in [from, to) of a run whose ends are kFarEnds or more apart, their forces added
 // straight to the ends that lie in the block that starts at begin: the chunk cut where an end
 // enters or leaves the block, each stretch with the ends it has there
@@ -364,10 +372,6 @@ void addFarChunk(const Pass &pass, const Slot &slot, const Model::SpringRun &run
     std::array<int, 6> cuts{from, to, std::clamp(sides.aLo, from, to), std::clamp(sides.aHi, from, to),
                             std::clamp(sides.bLo, from, to), std::clamp(sides.bHi, from, to)};
     std::sort(cuts.begin(), cuts.end());
-    const auto lanes = [&](const std::array<double *, 6> &window, int lane0, int particle) {
-        const int i = particle - lane0;
-        return EndLanes{window[0] + i, window[1] + i, window[2] + i, window[3] + i, window[4] + i, window[5] + i};
-    };
     const auto sums = [&](int particle) {
         const int i = particle - begin;
         return ForceLanes{slot.force[0] + i, slot.force[1] + i, slot.force[2] + i};
@@ -380,8 +384,8 @@ void addFarChunk(const Pass &pass, const Slot &slot, const Model::SpringRun &run
         const int here = (sides.aLo <= x && y <= sides.aHi ? EndA : 0) | (sides.bLo <= x && y <= sides.bHi ? EndB : 0);
         const int spring = run.uniform ? run.first : run.first + x;
         const double *flags = Breakable ? broken + (x - from) : nullptr;
-        const EndLanes a = lanes(slot.window, slot.lo, run.a + x);
-        const EndLanes b = lanes(slot.window, slot.lo, run.b + x);
+        const EndLanes a = windowLanes(slot, run.a + x);
+        const EndLanes b = windowLanes(slot, run.b + x);
         const auto kernel = [&](auto chosen) {
             constexpr int Sides = decltype(chosen)::value;
             const auto added = run.uniform ? chunkForcesAdded<Breakable, true, Sides>
@@ -408,11 +412,6 @@ void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run,
     double broken[Breakable ? kChunk : 1];
     const ForceLanes out{chunk, chunk + kChunk, chunk + 2 * kChunk};
     const RunSet &set = pass.runs;
-    const auto ends = [&](int particle) {
-        const int i = particle - slot.lo;
-        return EndLanes{slot.window[0] + i, slot.window[1] + i, slot.window[2] + i,
-                        slot.window[3] + i, slot.window[4] + i, slot.window[5] + i};
-    };
     const bool far = std::abs(run.b - run.a) >= kFarEnds;
     for (int from = lo; from < hi; from += kChunk) {
         const int to = std::min(hi, from + kChunk);
@@ -425,7 +424,7 @@ void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run,
         const int spring = run.uniform ? run.first : run.first + from;
         const auto forces = run.uniform ? chunkForces<Breakable, true> : chunkForces<Breakable, false>;
         forces(to - from, set.restLength + spring, set.stiffness + spring, set.damping + spring,
-               Breakable ? broken : nullptr, ends(run.a + from), ends(run.b + from), out);
+               Breakable ? broken : nullptr, windowLanes(slot, run.a + from), windowLanes(slot, run.b + from), out);
         addChunk(slot, run, sides, from, to, begin, chunk);
     }
 }
