@@ -151,6 +151,7 @@ int main(int argc, char *argv[])
     // the run, in chunks between trace rows (every K steps, not the last step unless K divides it)
     // and frames; only stepping is timed
     const core::State initial = state;  // to explain a blow-up, should one happen
+    core::Workspace work;
     QElapsedTimer timer;
     qint64 nanoseconds = 0;
     bool blewUp = false;
@@ -162,7 +163,7 @@ int main(int argc, char *argv[])
             until = std::min(until, frames.nextStep(*steps));
         timer.start();
         while (state.step < until)
-            if (!core::step(*model, state)) {
+            if (!core::step(*model, state, work)) {
                 blewUp = true;
                 break;
             }
@@ -228,7 +229,7 @@ int main(int argc, char *argv[])
     // what went wrong, if it did
     if (blewUp)
         QTextStream(stderr) << "springlab-sim: "
-                            << QString::fromStdString(core::explainBlowup(*model, *state.blowup,
+                            << QString::fromStdString(core::explainBlowup(*model, *work.blowup,
                                                                           core::stabilityLimit(*model, initial)))
                             << (options.outputPath.isEmpty() ? "" : "\n  (no --output written)") << '\n';
     return blewUp ? kExitBlewUp : kExitOk;

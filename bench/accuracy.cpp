@@ -102,10 +102,11 @@ struct Outcome {
 Outcome simulate(const core::Model &model, const core::State &initial, int steps)
 {
     core::State state = initial;
+    core::Workspace work;
     Outcome outcome;
     const double start = cpuSeconds();
     for (int i = 0; i < steps && outcome.ok; ++i)
-        outcome.ok = core::step(model, state);
+        outcome.ok = core::step(model, state, work);
     outcome.seconds = cpuSeconds() - start;
     outcome.position = std::move(state.position);
     return outcome;

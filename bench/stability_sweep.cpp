@@ -62,11 +62,12 @@ bool stableAt(const core::SceneDesc &scene, core::Integrator integrator, double 
     trial.settings.integrator = integrator;
     const auto model = core::compileModel(trial);
     core::State state = core::makeState(*model, trial);
+    core::Workspace work;
     const double ceiling = kEnergyGrowthLimit * core::energies(*model, state).total();
     // every step is checked: near symplectic Euler's limit the energy swings with a period of
     // about two steps, so a sparser check would miss its peaks
     for (int i = 0; i < steps; ++i)
-        if (!core::step(*model, state) || !(core::energies(*model, state).total() < ceiling))
+        if (!core::step(*model, state, work) || !(core::energies(*model, state).total() < ceiling))
             return false;
     return true;
 }

@@ -350,7 +350,7 @@ void printTargets(const std::vector<ThroughputRow> &rows, const Plan &plan, cons
     }
 
     // the contact pass of the largest box
-    out << QStringLiteral("  box-%1 contact pass, State::profile (target < %2 ms): ")
+    out << QStringLiteral("  box-%1 contact pass, Workspace::profile (target < %2 ms): ")
                .arg(kContactTargetSize)
                .arg(kContactTarget);
     if (const auto found = contactMs.find(kContactTargetSize); found != contactMs.end()) {
@@ -447,6 +447,7 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
 
         const std::shared_ptr<const core::Model> model = core::compileModel(scene);
         core::State state = core::makeState(*model, scene);
+        core::Workspace work;
         PlainCloth plain(scene);
         naive::ParticleSystem naiveSystem(scene);
 #ifdef SPRINGLAB_HAVE_BULLET
@@ -456,7 +457,7 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
         // the same physics: a few steps from the same start, positions compared
         core::setThreadCount(threads.back());
         for (int s = 0; s < kCheckSteps; ++s) {
-            core::step(*model, state);
+            core::step(*model, state, work);
             plain.step();
             naiveSystem.step();
 #ifdef SPRINGLAB_HAVE_BULLET
@@ -486,14 +487,14 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
         };
         for (int t : threads) {
             core::setThreadCount(t);
-            record(QStringLiteral("springlab"), t, timeSteps([&] { core::step(*model, state); }, plan));
+            record(QStringLiteral("springlab"), t, timeSteps([&] { core::step(*model, state, work); }, plan));
         }
         record(QStringLiteral("plain"), 1, timeSteps([&] { plain.step(); }, plan));
         record(QStringLiteral("naive"), 1, timeSteps([&] { naiveSystem.step(); }, plan));
 #ifdef SPRINGLAB_HAVE_BULLET
         record(QStringLiteral("bullet"), 1, timeSteps([&] { bullet.step(); }, plan));
 #endif
-        if (state.blowup) {
+        if (work.blowup) {
             out << "  springlab blew up on " << name << '\n';
             blewUp = true;
         }
@@ -541,11 +542,12 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
         const QString name = QString::fromStdString(scene.name);
         const std::shared_ptr<const core::Model> model = core::compileModel(scene);
         core::State state = core::makeState(*model, scene);
+        core::Workspace work;
         for (int t : threads) {
             core::setThreadCount(t);
-            state.profile = {};
-            const double ms = timeSteps([&] { core::step(*model, state); }, plan);
-            const core::StageTiming &contacts = state.profile[core::Stage::ParticleCollisions];
+            work.profile = {};
+            const double ms = timeSteps([&] { core::step(*model, state, work); }, plan);
+            const core::StageTiming &contacts = work.profile[core::Stage::ParticleCollisions];
             if (contacts.calls > 0)
                 contactMs[n][t] = 1000.0 * contacts.seconds / static_cast<double>(contacts.calls);
             rows.push_back({name, SceneKind::Box, n, 0, t, QStringLiteral("springlab"), ms,
@@ -555,12 +557,12 @@ int runThroughput(const ThroughputOptions &options, QTextStream &out)
                 measured.emplace_back(static_cast<double>(n), ms);
         }
         if (!contactMs[n].empty()) {
-            out << QStringLiteral("  %1 contact pass (State::profile):").arg(name);
+            out << QStringLiteral("  %1 contact pass (Workspace::profile):").arg(name);
             for (const auto &[t, ms] : contactMs[n])
                 out << QStringLiteral(" %1 ms on %2").arg(formatMs(ms), threadsText(t));
             out << '\n';
         }
-        if (state.blowup) {
+        if (work.blowup) {
             out << "  springlab blew up on " << name << '\n';
             blewUp = true;
         }

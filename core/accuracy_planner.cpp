@@ -56,7 +56,7 @@ public:
     Probe(const Model &model, Integrator integrator, const State &state, double omega)
         : m_base(model), m_state(state), m_omega(omega)
     {
-        m_base.integrator = integrator;
+        setIntegrator(m_base, integrator);
     }
 
     // the error measure of one sub-step at this count; nullopt when a trial blew up
@@ -93,12 +93,11 @@ public:
         one.timeStep = m_base.timeStep / substeps;
         one.substeps = 1;
         State trial = m_state;
-        trial.blowup.reset();
-        const std::uint64_t before = trial.forceEvaluations;
-        step(one, trial);
-        double evaluations = static_cast<double>(trial.forceEvaluations - before);
+        Workspace work;
+        step(one, trial, work);
+        double evaluations = static_cast<double>(work.profile.forceEvaluations);
         if (m_base.integrator == Integrator::ImplicitEuler)
-            evaluations += 1.0 + trial.solverIterations;  // the right-hand side's product, then CG
+            evaluations += 1.0 + work.profile.solverIterations;  // the right-hand side's product, then CG
         return evaluations;
     }
 
@@ -244,25 +243,25 @@ AccuracyPlan planAccuracy(const Model &model, const State &state, double toleran
     return plan;
 }
 
-double profiledSecondsPerEvaluation(const State &state)
+double profiledSecondsPerEvaluation(const Profile &profile)
 {
-    if (state.forceEvaluations < kEnoughEvaluations)
+    if (profile.forceEvaluations < kEnoughEvaluations)
         return 0.0;
-    const Profile &profile = state.profile;
+    // the fused sub-step evaluates the forces once, and its update is a small share of its time
     const double seconds = profile[Stage::Gravity].seconds + profile[Stage::Drag].seconds +
-                           profile[Stage::Springs].seconds + profile[Stage::Applied].seconds;
-    return seconds / static_cast<double>(state.forceEvaluations);
+                           profile[Stage::Springs].seconds + profile[Stage::Applied].seconds +
+                           profile[Stage::FusedSubStep].seconds;
+    return seconds / static_cast<double>(profile.forceEvaluations);
 }
 
 double timedSecondsPerEvaluation(const Model &model, const State &state)
 {
     State copy = state;
-    if (copy.force.cols() != copy.position.cols())
-        copy.force.resize(3, copy.position.cols());
-    computeForces(model, copy);  // warm the caches first
+    Workspace work;
+    computeForces(model, copy, work);  // warm the caches first
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < kTimedEvaluations; ++i)
-        computeForces(model, copy);
+        computeForces(model, copy, work);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return seconds / kTimedEvaluations;
 }

@@ -37,6 +37,7 @@
 
 #include "integrator.h"
 #include "model.h"
+#include "profile.h"
 #include "state.h"
 
 #include <string>
@@ -76,9 +77,9 @@ inline constexpr double kStabilityMargin = 0.9;
 // plans for the model's timeStep from the state; tolerance in m (> 0), secondsPerEvaluation > 0
 AccuracyPlan planAccuracy(const Model &model, const State &state, double tolerance, double secondsPerEvaluation);
 
-// the measured cost of one force evaluation: the force stages' seconds in the state's profile over
+// the measured cost of one force evaluation: the force stages' seconds in a run's profile over
 // its evaluations; 0 while it has too few evaluations to say
-double profiledSecondsPerEvaluation(const State &state);
+double profiledSecondsPerEvaluation(const Profile &profile);
 
 // the cost of one force evaluation, timed on a copy of the state
 double timedSecondsPerEvaluation(const Model &model, const State &state);

@@ -41,11 +41,11 @@ constexpr int kX0 = 0, kV0 = 1, kAcc = 2, kKx = 3, kKv = 3 + kStages;
 
 // one trial step of size dt from (x0, v0); leaves the fifth-order solution in the state and
 // returns the error norm (≤ 1: within tolerance)
-double trialStep(const Model &model, State &state, double dt)
+double trialStep(const Model &model, State &state, Workspace &work, double dt)
 {
-    const Eigen::Matrix3Xd &x0 = scratch(state, kX0);
-    const Eigen::Matrix3Xd &v0 = scratch(state, kV0);
-    Eigen::Matrix3Xd &a = scratch(state, kAcc);
+    const Eigen::Matrix3Xd &x0 = scratch(state, work, kX0);
+    const Eigen::Matrix3Xd &v0 = scratch(state, work, kV0);
+    Eigen::Matrix3Xd &a = scratch(state, work, kAcc);
     for (int stage = 0; stage < kStages; ++stage) {
         // the trial state of this stage: y0 + dt Σ a_ij k_j
         state.position = x0;
@@ -53,13 +53,13 @@ double trialStep(const Model &model, State &state, double dt)
         for (int j = 0; j < stage; ++j) {
             if (kA[stage][j] == 0.0)
                 continue;
-            state.position += (dt * kA[stage][j]) * scratch(state, kKx + j);
-            state.velocity += (dt * kA[stage][j]) * scratch(state, kKv + j);
+            state.position += (dt * kA[stage][j]) * scratch(state, work, kKx + j);
+            state.velocity += (dt * kA[stage][j]) * scratch(state, work, kKv + j);
         }
-        computeForces(model, state);
-        accelerations(model, state, a);
-        scratch(state, kKx + stage) = state.velocity;
-        scratch(state, kKv + stage) = a;
+        computeForces(model, state, work);
+        accelerations(model, work, a);
+        scratch(state, work, kKx + stage) = state.velocity;
+        scratch(state, work, kKv + stage) = a;
     }
     // the last stage's trial state is the fifth-order solution (its row of the tableau is the
     // fifth-order weights); the error is dt Σ e_j k_j, measured in units of the tolerance
@@ -69,7 +69,7 @@ double trialStep(const Model &model, State &state, double dt)
         error.setZero();
         for (int j = 0; j < kStages; ++j)
             if (kE[j] != 0.0)
-                error += (dt * kE[j]) * scratch(state, (axis == 0 ? kKx : kKv) + j);
+                error += (dt * kE[j]) * scratch(state, work, (axis == 0 ? kKx : kKv) + j);
         worst = std::max(worst, error.cwiseAbs().maxCoeff());
     }
     return worst / model.tolerance;
@@ -77,24 +77,24 @@ double trialStep(const Model &model, State &state, double dt)
 
 }  // namespace
 
-void adaptiveRk45(const Model &model, State &state, double h)
+void adaptiveRk45(const Model &model, State &state, Workspace &work, double h)
 {
-    Eigen::Matrix3Xd &x0 = scratch(state, kX0);
-    Eigen::Matrix3Xd &v0 = scratch(state, kV0);
+    Eigen::Matrix3Xd &x0 = scratch(state, work, kX0);
+    Eigen::Matrix3Xd &v0 = scratch(state, work, kV0);
     double dt = state.adaptiveStep > 0.0 ? std::min(state.adaptiveStep, h) : h;
     double covered = 0.0;
     for (int trials = 0; covered < h; ++trials) {
         // a scene far too stiff for an explicit method (strong drag on a light particle) would
         // otherwise shrink the step without end: stop and say so
         if (trials == kMaxTrialsPerSubStep) {
-            state.blowup = Blowup{-1, Blowup::Quantity::StepSize, dt, 0, 0.0};
+            work.blowup = Blowup{-1, Blowup::Quantity::StepSize, dt, 0, 0.0};
             return;
         }
         const bool last = dt >= h - covered;
         const double trial = last ? h - covered : dt;
         x0 = state.position;
         v0 = state.velocity;
-        const double error = trialStep(model, state, trial);
+        const double error = trialStep(model, state, work, trial);
         const double factor =
             error == 0.0 ? kMaxGrow : std::clamp(kSafety * std::pow(error, -0.2), kMinShrink, kMaxGrow);
         // accept within tolerance; a step this small that still misses it means the scene is
@@ -103,7 +103,7 @@ void adaptiveRk45(const Model &model, State &state, double h)
         if (tiny && !(error <= 1.0)) {
             state.position = x0;
             state.velocity = v0;
-            state.blowup = Blowup{-1, Blowup::Quantity::StepSize, trial, 0, 0.0};
+            work.blowup = Blowup{-1, Blowup::Quantity::StepSize, trial, 0, 0.0};
             return;
         }
         if (error <= 1.0 || tiny) {
@@ -111,7 +111,7 @@ void adaptiveRk45(const Model &model, State &state, double h)
             if (!last || factor < 1.0)
                 dt = std::max(trial * factor, 1e-12 * h);  // a shortened final step says nothing about the next one
         } else {
-            state.rejectedSteps += 1;
+            work.profile.rejectedSteps += 1;
             state.position = x0;
             state.velocity = v0;
             dt = trial * (std::isfinite(factor) ? factor : kMinShrink);

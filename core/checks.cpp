@@ -28,13 +28,13 @@ bool anyBad(const double *__restrict values, int begin, int end)
 
 // true when every position and velocity is finite and bounded; else records the first culprit
 // (the caller fills in the step and time)
-bool checkFinite(const Model &model, State &state)
+bool checkFinite(const Model &model, State &state, Workspace &work, bool freeChecked)
 {
     // fast paths: the free particles checked by the integrator as it wrote them, so only the pinned
     // ones (the gaps between the free stretches); else one vectorised sweep over both arrays,
     // split across the threads
     std::atomic<bool> found = false;
-    if (state.freeParticlesChecked) {
+    if (freeChecked) {
         const std::vector<int> &ranges = model.freeRanges;
         int begin = 0;
         for (std::size_t r = 0; r <= ranges.size(); r += 2) {
@@ -64,7 +64,7 @@ bool checkFinite(const Model &model, State &state)
             if (bad(state.position(axis, i)))
                 blowup = {i, Blowup::Quantity::Position, state.position(axis, i), 0, 0.0};
     }
-    state.blowup = blowup;
+    work.blowup = blowup;
     return false;
 }
 

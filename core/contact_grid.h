@@ -1,6 +1,6 @@
 #pragma once
 // The scratch of the particle-pair broad phase (broad_phase.cpp): a uniform grid, rebuilt every
-// sub-step, and the list of pairs it finds. It lives in State so that a step allocates nothing
+// sub-step, and the list of pairs it finds. It lives in the Workspace so that a step allocates nothing
 // once the arrays have reached the scene's size.
 
 #include <cstdint>

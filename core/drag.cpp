@@ -3,11 +3,11 @@
 namespace core {
 
 // viscous drag of the medium, -c v (pinned particles are at rest, so they get none)
-void addDrag(const Model &model, State &state)
+void addDrag(const Model &model, State &state, Workspace &work)
 {
     if (!model.plan.drag)
         return;
-    state.force.noalias() -= model.viscosity * state.velocity;
+    work.force.noalias() -= model.viscosity * state.velocity;
 }
 
 }  // namespace core

@@ -18,19 +18,6 @@ void StepDoubling::prepare(const std::shared_ptr<const Model> &model)
     m_double.substeps = 2;
 }
 
-// the parts of a state a step reads; assignment reuses the copies' memory once sized
-void StepDoubling::copyInto(const State &from, State &to) const
-{
-    to.position = from.position;
-    to.velocity = from.velocity;
-    to.applied = from.applied;
-    to.appliedCount = from.appliedCount;
-    to.adaptiveStep = from.adaptiveStep;
-    if (to.force.cols() != from.position.cols())
-        to.force.resize(3, from.position.cols());
-    to.blowup.reset();
-}
-
 std::optional<double> StepDoubling::estimate(const std::shared_ptr<const Model> &model, const State &state)
 {
     const std::optional<LocalError> error = estimateLocalError(model, state);
@@ -43,9 +30,11 @@ std::optional<LocalError> StepDoubling::estimateLocalError(const std::shared_ptr
                                                            const State &state)
 {
     prepare(model);
-    copyInto(state, m_one);
-    copyInto(state, m_two);
-    if (!step(m_single, m_one) || !step(m_double, m_two))
+    m_one = state;
+    m_two = state;
+    m_oneWork.blowup.reset();
+    m_twoWork.blowup.reset();
+    if (!step(m_single, m_one, m_oneWork) || !step(m_double, m_two, m_twoWork))
         return std::nullopt;
     // the differences, scaled from "h against h/2" to the error of the h step
     const int order = integratorOrder(model->integrator);

@@ -6,6 +6,7 @@
 
 #include "model.h"
 #include "state.h"
+#include "workspace.h"
 
 #include <memory>
 #include <optional>
@@ -29,13 +30,14 @@ public:
 
 private:
     void prepare(const std::shared_ptr<const Model> &model);
-    void copyInto(const State &from, State &to) const;
 
     std::shared_ptr<const Model> m_source;  // the model m_single and m_double were made from
     Model m_single;                          // one step of h
     Model m_double;                          // two steps of h/2
-    State m_one;
+    State m_one;  // copies of the state (assignment reuses their memory once sized)
     State m_two;
+    Workspace m_oneWork;
+    Workspace m_twoWork;
 };
 
 }  // namespace core

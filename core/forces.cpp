@@ -4,32 +4,35 @@
 namespace core {
 
 // forces from outside the scene (steering keys, mouse spring), only while some are set
-void addApplied(const Model &, State &state)
+void addApplied(const Model &, State &state, Workspace &work)
 {
     if (state.appliedCount == 0)
         return;
-    state.force += state.applied;
+    work.force += state.applied;
 }
 
-// all forces at the state's (x, v) into state.force; each pass runs only if the plan needs it
-void computeForces(const Model &model, State &state)
+// all forces at the state's (x, v) into work.force; each pass runs only if the plan needs it
+void computeForces(const Model &model, State &state, Workspace &work)
 {
     const StepPlan &plan = model.plan;
+    Profile &profile = work.profile;
+    if (work.force.cols() != state.position.cols())
+        work.force.resize(3, state.position.cols());  // a new workspace: once, then reused
     // gravity, when there is some, starts the forces off (one pass instead of clearing and adding)
     if (plan.gravity)
-        timed(state, Stage::Gravity, true, [&] { startWithGravity(model, state); });
+        timed(profile, Stage::Gravity, true, [&] { startWithGravity(model, state, work); });
     else
-        state.force.setZero();
-    timed(state, Stage::Drag, plan.drag, [&] { addDrag(model, state); });
-    timed(state, Stage::Springs, plan.springs, [&] { addSprings(model, state); });
-    timed(state, Stage::Applied, state.appliedCount > 0, [&] { addApplied(model, state); });
-    state.forceEvaluations += 1;
+        work.force.setZero();
+    timed(profile, Stage::Drag, plan.drag, [&] { addDrag(model, state, work); });
+    timed(profile, Stage::Springs, plan.springs, [&] { addSprings(model, state, work); });
+    timed(profile, Stage::Applied, state.appliedCount > 0, [&] { addApplied(model, state, work); });
+    work.profile.forceEvaluations += 1;
 }
 
-// accelerations of the free particles from state.force (zero for pinned ones)
-void accelerations(const Model &model, const State &state, Eigen::Matrix3Xd &out)
+// accelerations of the free particles from work.force (zero for pinned ones)
+void accelerations(const Model &model, const Workspace &work, Eigen::Matrix3Xd &out)
 {
-    out.noalias() = state.force * model.invMass.asDiagonal();
+    out.noalias() = work.force * model.invMass.asDiagonal();
 }
 
 }  // namespace core

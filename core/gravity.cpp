@@ -4,19 +4,19 @@
 namespace core {
 
 // weight m g on every particle (a pinned one is never integrated, so its share is harmless)
-void addGravity(const Model &model, State &state)
+void addGravity(const Model &model, State &, Workspace &work)
 {
     if (!model.plan.gravity)
         return;
-    state.force.noalias() += model.gravity * model.mass.transpose();
+    work.force.noalias() += model.gravity * model.mass.transpose();
 }
 
 // the forces set to 0 + m g: the same bits as clearing them and adding m g, in one pass
-void startWithGravity(const Model &model, State &state)
+void startWithGravity(const Model &model, State &, Workspace &work)
 {
     const double *mass = model.mass.data();
     const Eigen::Vector3d g = model.gravity;
-    double *force = state.force.data();
+    double *force = work.force.data();
     parallelChunks(model.particleCount(), [&](int begin, int end) {
 #pragma omp simd
         for (int i = begin; i < end; ++i)

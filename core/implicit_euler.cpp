@@ -32,19 +32,19 @@ void applySystem(const Model &model, const State &state, double h, const Eigen::
 
 }  // namespace
 
-void implicitEuler(const Model &model, State &state, double h)
+void implicitEuler(const Model &model, State &state, Workspace &work, double h)
 {
-    Eigen::Matrix3Xd &b = scratch(state, 0);
-    Eigen::Matrix3Xd &dv = scratch(state, 1);
-    Eigen::Matrix3Xd &r = scratch(state, 2);
-    Eigen::Matrix3Xd &p = scratch(state, 3);
-    Eigen::Matrix3Xd &ap = scratch(state, 4);
-    Eigen::Matrix3Xd &z = scratch(state, 5);
-    Eigen::Matrix3Xd &diagonal = scratch(state, 6);
+    Eigen::Matrix3Xd &b = scratch(state, work, 0);
+    Eigen::Matrix3Xd &dv = scratch(state, work, 1);
+    Eigen::Matrix3Xd &r = scratch(state, work, 2);
+    Eigen::Matrix3Xd &p = scratch(state, work, 3);
+    Eigen::Matrix3Xd &ap = scratch(state, work, 4);
+    Eigen::Matrix3Xd &z = scratch(state, work, 5);
+    Eigen::Matrix3Xd &diagonal = scratch(state, work, 6);
 
     // right-hand side h (f + h ∂f/∂x v); pinned rows 0
-    computeForces(model, state);
-    b = state.force;
+    computeForces(model, state, work);
+    b = work.force;
     if (model.plan.springs) {
         Eigen::Matrix3Xd &kv = z;  // borrowed before the solve needs it
         kv.setZero();
@@ -90,7 +90,7 @@ void implicitEuler(const Model &model, State &state, double h)
         rz = rzNext;
         ++iteration;
     }
-    state.solverIterations = iteration;
+    work.profile.solverIterations = iteration;
 
     // v += Δv, then x += h v (pinned: Δv = 0 and v = 0)
     state.velocity += dv;

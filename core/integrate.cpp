@@ -9,9 +9,9 @@
 
 namespace core {
 
-Eigen::Matrix3Xd &scratch(State &state, int index)
+Eigen::Matrix3Xd &scratch(const State &state, Workspace &work, int index)
 {
-    Eigen::Matrix3Xd &array = state.scratchArrays[static_cast<std::size_t>(index)];
+    Eigen::Matrix3Xd &array = work.scratchArrays[static_cast<std::size_t>(index)];
     if (array.cols() != state.position.cols())
         array.resize(3, state.position.cols());  // once, on first use: later steps reuse it
     return array;
@@ -48,14 +48,11 @@ bool eulerUpdate(int begin, int end, const double *__restrict invMass, const dou
     return bad != 0;
 }
 
+// returns whether every new value is finite and bounded, checked as it was written
 template <bool Symplectic>
-void euler(const Model &model, State &state, double h)
+bool euler(const Model &model, State &state, Workspace &work, double h)
 {
-    if (model.usesSpringBlocks()) {
-        state.freeParticlesChecked = stepSpringBlocks(model, state, h, Symplectic);
-        return;
-    }
-    computeForces(model, state);
+    computeForces(model, state, work);
     // each thread its share of the particles, the free stretches within it
     const std::vector<int> &ranges = model.freeRanges;
     std::atomic<bool> bad = false;
@@ -63,58 +60,59 @@ void euler(const Model &model, State &state, double h)
         for (std::size_t r = 0; r < ranges.size(); r += 2) {
             const int begin = std::max(first, ranges[r]);
             const int end = std::min(last, ranges[r + 1]);
-            if (begin < end && eulerUpdate<Symplectic>(begin, end, model.invMass.data(), state.force.data(),
+            if (begin < end && eulerUpdate<Symplectic>(begin, end, model.invMass.data(), work.force.data(),
                                                        state.position.data(), state.velocity.data(), h))
                 bad.store(true, std::memory_order_relaxed);
         }
     });
-    state.freeParticlesChecked = !bad.load(std::memory_order_relaxed);
+    return !bad.load(std::memory_order_relaxed);
 }
 
 // the handout's scheme: the new velocity moves the particle
-void symplecticEuler(const Model &model, State &state, double h)
+bool symplecticEuler(const Model &model, State &state, Workspace &work, double h)
 {
-    euler<true>(model, state, h);
+    return euler<true>(model, state, work, h);
 }
 
 // forward Euler: position and velocity both advance from the old state
-void explicitEuler(const Model &model, State &state, double h)
+bool explicitEuler(const Model &model, State &state, Workspace &work, double h)
 {
-    euler<false>(model, state, h);
+    return euler<false>(model, state, work, h);
 }
 
 // kick-drift-kick: half a velocity step, a full position step, half a velocity step with the
 // forces at the new position. Dampers need the new velocity too, which is not known yet: they are
 // given the prediction v + h a (error O(h²)), which keeps the scheme second order; without
 // velocity-dependent forces it is exactly the classic velocity Verlet
-void velocityVerlet(const Model &model, State &state, double h)
+void velocityVerlet(const Model &model, State &state, Workspace &work, double h)
 {
-    Eigen::Matrix3Xd &a = scratch(state, 0);
-    Eigen::Matrix3Xd &half = scratch(state, 1);
-    computeForces(model, state);
-    accelerations(model, state, a);
+    Eigen::Matrix3Xd &a = scratch(state, work, 0);
+    Eigen::Matrix3Xd &half = scratch(state, work, 1);
+    computeForces(model, state, work);
+    accelerations(model, work, a);
     half = state.velocity + (0.5 * h) * a;
     state.position += h * half;
     state.velocity += h * a;  // the prediction the dampers see
-    computeForces(model, state);
-    accelerations(model, state, a);
+    computeForces(model, state, work);
+    accelerations(model, work, a);
     state.velocity = half + (0.5 * h) * a;
 }
 
 }  // namespace
 
 // advances every free particle by h; pinned ones have zero inverse mass and zero velocity, so the
-// whole-array schemes leave them where they are
-void integrate(const Model &model, State &state, double h)
+// whole-array schemes leave them where they are. The Euler schemes check what they write
+bool integrate(const Model &model, State &state, Workspace &work, double h)
 {
     switch (model.integrator) {
-    case Integrator::SymplecticEuler: symplecticEuler(model, state, h); return;
-    case Integrator::ExplicitEuler: explicitEuler(model, state, h); return;
-    case Integrator::VelocityVerlet: velocityVerlet(model, state, h); return;
-    case Integrator::Rk4: rk4(model, state, h); return;
-    case Integrator::ImplicitEuler: implicitEuler(model, state, h); return;
-    case Integrator::AdaptiveRk45: adaptiveRk45(model, state, h); return;
+    case Integrator::SymplecticEuler: return symplecticEuler(model, state, work, h);
+    case Integrator::ExplicitEuler: return explicitEuler(model, state, work, h);
+    case Integrator::VelocityVerlet: velocityVerlet(model, state, work, h); return false;
+    case Integrator::Rk4: rk4(model, state, work, h); return false;
+    case Integrator::ImplicitEuler: implicitEuler(model, state, work, h); return false;
+    case Integrator::AdaptiveRk45: adaptiveRk45(model, state, work, h); return false;
     }
+    return false;
 }
 
 }  // namespace core

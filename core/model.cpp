@@ -205,6 +205,8 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
             indexByBlock(model->joined.runs, static_cast<int>(n), model->joined.blockRunOffsets, model->joined.blockRuns);
     }
 
+    setIntegrator(*model, s.integrator);
+
     // auto substeps: as many as the stability limit at the initial state asks, and no fewer than the
     // scene's own
     if (s.autoSubsteps)
@@ -215,6 +217,15 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
     // projections, well below any real impact
     model->restingSpeed = 2.0 * s.gravity.norm() * model->subStep();
     return model;
+}
+
+void setIntegrator(Model &model, Integrator integrator)
+{
+    model.integrator = integrator;
+    // the Euler schemes fuse the forces and their update on a lattice whose springs reach no
+    // further than the next block of particles
+    const bool euler = integrator == Integrator::SymplecticEuler || integrator == Integrator::ExplicitEuler;
+    model.plan.subStep = euler && model.usesSpringBlocks() ? SubStepPath::FusedLattice : SubStepPath::Stages;
 }
 
 }  // namespace core

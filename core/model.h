@@ -11,7 +11,14 @@
 
 namespace core {
 
-// which passes of the step this scene needs
+// how a sub-step forces and integrates (step.cpp branches on it)
+enum class SubStepPath {
+    Stages,        // the force passes one after another, inside the model's integrator
+    FusedLattice,  // symplectic or explicit Euler on a lattice: forces and update fused, block by
+                   // block (spring_blocks.cpp), the same bits as Stages
+};
+
+// which passes of the step this scene needs, and the path its sub-step takes
 struct StepPlan {
     bool gravity = false;             // g != 0 and something free to fall
     bool drag = false;                // viscosity > 0 and something free
@@ -19,6 +26,7 @@ struct StepPlan {
     bool planeCollisions = false;     // switched on, a plane, and something free
     bool particleCollisions = false;  // switched on, two particles, one of them free
     bool springBreaks = false;        // a spring with a breaking strain
+    SubStepPath subStep = SubStepPath::Stages;
 
     bool operator==(const StepPlan &) const = default;
 };
@@ -131,5 +139,8 @@ struct Model {
 
 // compiles a scene that findProblem() accepts (asserted in debug builds)
 std::shared_ptr<const Model> compileModel(const SceneDesc &scene);
+
+// the model's integrator, and the sub-step path the plan takes with it
+void setIntegrator(Model &model, Integrator integrator);
 
 }  // namespace core

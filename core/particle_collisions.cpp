@@ -60,18 +60,18 @@ void resolvePair(const Model &model, State &state, int i, int j)
 // for the next sub-step. Then the planes once more: a pair pushed into a plane is put back in
 // front of it, so the floor holds a stack however tall (the pairs may then overlap a little,
 // never the planes)
-void collideParticles(const Model &model, State &state)
+void collideParticles(const Model &model, State &state, Workspace &work)
 {
     if (!model.plan.particleCollisions)
         return;
-    ContactGrid &contacts = state.contacts;
+    ContactGrid &contacts = work.contacts;
     if (contacts.bruteForce)
         findContactsBruteForce(model, state.position, contacts.pairs);
     else
         findContacts(model, state.position, contacts);
     for (const ContactPair &pair : contacts.pairs)
         resolvePair(model, state, pair.i, pair.j);
-    collidePlanes(model, state);
+    collidePlanes(model, state, work);
 }
 
 }  // namespace core

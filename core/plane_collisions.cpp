@@ -6,7 +6,7 @@ namespace core {
 // if it is moving into the plane, its normal velocity is reflected and scaled by e. A plane is a
 // half-space, so a particle found anywhere behind it, however fast it came, is put back in front:
 // nothing tunnels through a plane
-void collidePlanes(const Model &model, State &state)
+void collidePlanes(const Model &model, State &state, Workspace &)
 {
     if (!model.plan.planeCollisions)
         return;

@@ -3,13 +3,13 @@
 namespace core {
 
 // classic fourth-order Runge-Kutta on y = (x, v), y' = (v, a(x, v)): four force evaluations
-void rk4(const Model &model, State &state, double h)
+void rk4(const Model &model, State &state, Workspace &work, double h)
 {
-    Eigen::Matrix3Xd &x0 = scratch(state, 0);
-    Eigen::Matrix3Xd &v0 = scratch(state, 1);
-    Eigen::Matrix3Xd &sumX = scratch(state, 2);
-    Eigen::Matrix3Xd &sumV = scratch(state, 3);
-    Eigen::Matrix3Xd &a = scratch(state, 4);
+    Eigen::Matrix3Xd &x0 = scratch(state, work, 0);
+    Eigen::Matrix3Xd &v0 = scratch(state, work, 1);
+    Eigen::Matrix3Xd &sumX = scratch(state, work, 2);
+    Eigen::Matrix3Xd &sumV = scratch(state, work, 3);
+    Eigen::Matrix3Xd &a = scratch(state, work, 4);
     x0 = state.position;
     v0 = state.velocity;
 
@@ -17,8 +17,8 @@ void rk4(const Model &model, State &state, double h)
     constexpr double weight[4] = {1.0, 2.0, 2.0, 1.0};
     const double next[4] = {0.5 * h, 0.5 * h, h, 0.0};
     for (int stage = 0; stage < 4; ++stage) {
-        computeForces(model, state);
-        accelerations(model, state, a);
+        computeForces(model, state, work);
+        accelerations(model, work, a);
         if (stage == 0) {
             sumX = state.velocity;
             sumV = a;

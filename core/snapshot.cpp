@@ -2,7 +2,7 @@
 
 namespace core {
 
-std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &state)
+std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &state, const std::optional<Blowup> &blowup)
 {
     auto snapshot = std::make_shared<Snapshot>();
     snapshot->step = state.step;
@@ -46,7 +46,7 @@ std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &st
     // diagnostics
     snapshot->energies = energies(model, state);
     snapshot->momentum = momentum(model, state);
-    snapshot->blowup = state.blowup;
+    snapshot->blowup = blowup;
     return snapshot;
 }
 

@@ -5,6 +5,7 @@
 
 #include "diagnostics.h"
 #include "model.h"
+#include "blowup.h"
 #include "state.h"
 
 #include <cstdint>
@@ -40,7 +41,9 @@ struct Snapshot {
     }
 };
 
-// fills a snapshot of the state (the model gives radii, pins and spring ends)
-std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &state);
+// fills a snapshot of the state (the model gives radii, pins and spring ends), and of how its run
+// blew up, if it did (Workspace::blowup)
+std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &state,
+                                             const std::optional<Blowup> &blowup = std::nullopt);
 
 }  // namespace core

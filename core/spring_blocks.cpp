@@ -28,7 +28,6 @@
 #include <array>
 #include <atomic>
 #include <cassert>
-#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <type_traits>
@@ -495,33 +494,9 @@ bool moveParticles(const Pass &pass, const Slot &slot, int from, int to, int beg
                                  pass.state.velocity.data());
 }
 
-// seconds since the last lap, added to one of the force stages' clocks
-class StageClock {
-public:
-    explicit StageClock(bool on) : m_on(on), m_last(on ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{}) {}
-    void lap(double &seconds)
-    {
-        if (!m_on)
-            return;
-        const auto now = std::chrono::steady_clock::now();
-        seconds += std::chrono::duration<double>(now - m_last).count();
-        m_last = now;
-    }
-
-private:
-    bool m_on;
-    std::chrono::steady_clock::time_point m_last;
-};
-
-// the force stages' seconds, as the first thread saw them (the threads run side by side)
-struct ForceSeconds {
-    double gravity = 0.0, drag = 0.0, springs = 0.0, applied = 0.0;
-};
-
-// one thread's share [first, last), block by block; whether any new value is bad. seconds, on the
-// first thread only, collects the force stages' time
+// one thread's share [first, last), block by block; whether any new value is bad
 template <bool Breakable, bool Symplectic>
-bool stepShare(const Pass &pass, Slot &slot, int first, int last, ForceSeconds *seconds)
+bool stepShare(const Pass &pass, Slot &slot, int first, int last)
 {
     const Model &model = pass.model;
     const StepPlan &plan = model.plan;
@@ -530,25 +505,15 @@ bool stepShare(const Pass &pass, Slot &slot, int first, int last, ForceSeconds *
     std::size_t range = 0;  // the first free stretch that ends past the block's start
     while (range < ranges.size() && ranges[range + 1] <= first)
         range += 2;
-    ForceSeconds unused;            // the other threads' laps
-    double notForces = 0.0;         // clearing the forces and the update: integrateTimed's share
-    ForceSeconds &clock = seconds ? *seconds : unused;
-    StageClock stages(seconds != nullptr);
     bool bad = false;
     for (int begin = first; begin < last;) {
         const int end = std::min(last, (begin / kSpringBlock + 1) * kSpringBlock);
         startForces(pass, slot, begin, end);
-        stages.lap(plan.gravity ? clock.gravity : notForces);
-        if (plan.drag) {
+        if (plan.drag)
             addDragForces(pass, slot, begin, end);
-            stages.lap(clock.drag);
-        }
         springsOnBlock<Breakable>(pass, slot, begin, end);
-        stages.lap(clock.springs);
-        if (pass.state.appliedCount > 0) {
+        if (pass.state.appliedCount > 0)
             addAppliedForces(pass, slot, begin, end);
-            stages.lap(clock.applied);
-        }
         for (; range < ranges.size() && ranges[range] < end; range += 2) {
             const int from = std::max(begin, ranges[range]);
             const int to = std::min(end, ranges[range + 1]);
@@ -557,19 +522,17 @@ bool stepShare(const Pass &pass, Slot &slot, int first, int last, ForceSeconds *
             if (ranges[range + 1] > end)
                 break;  // goes on into the next block
         }
-        stages.lap(notForces);
         begin = end;
         if (begin < last) {
             slideWindow(slot, std::max(0, begin - pass.reach));
             extendWindow(pass, slot, last, std::min(n, std::min(last, begin + kSpringBlock) + pass.reach));
-            stages.lap(clock.springs);
         }
     }
     return bad;
 }
 
 template <bool Breakable, bool Symplectic>
-bool stepBlocks(const Pass &pass, double *scratch, ForceSeconds &seconds)
+bool stepBlocks(const Pass &pass, double *scratch)
 {
     const Model &model = pass.model;
     const int n = model.particleCount();
@@ -595,44 +558,31 @@ bool stepBlocks(const Pass &pass, double *scratch, ForceSeconds &seconds)
             slot.hi = first;
             const int firstEnd = std::min(last, (first / kSpringBlock + 1) * kSpringBlock);
             extendWindow(pass, slot, last, std::min(n, firstEnd + reach));
-            if (stepShare<Breakable, Symplectic>(pass, slot, first, last, thread == 0 ? &seconds : nullptr))
+            if (stepShare<Breakable, Symplectic>(pass, slot, first, last))
                 bad.store(true, std::memory_order_relaxed);
         });
     return bad.load(std::memory_order_relaxed);
 }
 
-void addStage(State &state, Stage stage, bool ran, double seconds)
-{
-    if (!ran)
-        return;
-    StageTiming &timing = state.profile[stage];
-    timing.calls += 1;
-    timing.seconds += seconds;
-}
-
 }  // namespace
 
-bool stepSpringBlocks(const Model &model, State &state, double h, bool symplectic)
+bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double h)
 {
-    assert(model.usesSpringBlocks());
+    assert(model.plan.subStep == SubStepPath::FusedLattice);
+    const bool symplectic = model.integrator == Integrator::SymplecticEuler;
     const int reach = model.springReach;
     const std::size_t size = slotSize(reach) * static_cast<std::size_t>(twoPhaseShares(model.particleCount()));
-    if (state.blockScratch.size() != size)
-        state.blockScratch.resize(size);  // on first use, and when the thread count changes
+    if (work.blockScratch.size() != size)
+        work.blockScratch.resize(size);  // on first use, and when the thread count changes
     const bool breakable = !state.springBroken.empty();
     const Pass pass{model, state, h, reach, runSetFor(model, breakable)};
-    ForceSeconds seconds;
-    double *scratch = state.blockScratch.data();
+    double *scratch = work.blockScratch.data();
     bool bad = false;
     if (breakable)
-        bad = symplectic ? stepBlocks<true, true>(pass, scratch, seconds) : stepBlocks<true, false>(pass, scratch, seconds);
+        bad = symplectic ? stepBlocks<true, true>(pass, scratch) : stepBlocks<true, false>(pass, scratch);
     else
-        bad = symplectic ? stepBlocks<false, true>(pass, scratch, seconds) : stepBlocks<false, false>(pass, scratch, seconds);
-    addStage(state, Stage::Gravity, model.plan.gravity, seconds.gravity);
-    addStage(state, Stage::Drag, model.plan.drag, seconds.drag);
-    addStage(state, Stage::Springs, true, seconds.springs);
-    addStage(state, Stage::Applied, state.appliedCount > 0, seconds.applied);
-    state.forceEvaluations += 1;
+        bad = symplectic ? stepBlocks<false, true>(pass, scratch) : stepBlocks<false, false>(pass, scratch);
+    work.profile.forceEvaluations += 1;
     return !bad;
 }
 

@@ -5,7 +5,7 @@ namespace core {
 // A spring breaks once its strain (l - l0) / l0 passes its breaking strain: stretch only, since a
 // cloth tears when pulled, not when pushed. Checked after the contacts, at the positions the
 // sub-step ends with; a broken spring stays broken until the state is rebuilt from the scene.
-void breakSprings(const Model &model, State &state)
+void breakSprings(const Model &model, State &state, Workspace &)
 {
     if (!model.plan.springBreaks || state.springBroken.empty())
         return;

@@ -75,12 +75,12 @@ constexpr int kRunChunk = 256;
 // to the ends of those springs that lie in this thread's particles (sides), in the plain loop's
 // order (addInPlainOrder).
 template <bool Breakable>
-void runPiece(const Model &model, State &state, const Model::SpringRun &run, int lo, int hi, const RunSides &sides)
+void runPiece(const Model &model, State &state, Workspace &work, const Model::SpringRun &run, int lo, int hi, const RunSides &sides)
 {
     double chunk[3 * kRunChunk];
     const double *x = state.position.data();
     const double *v = state.velocity.data();
-    double *f = state.force.data();
+    double *f = work.force.data();
     const std::uint8_t *broken = Breakable ? state.springBroken.data() + run.first : nullptr;
     for (int begin = lo; begin < hi; begin += kRunChunk) {
         const int end = std::min(hi, begin + kRunChunk);
@@ -101,24 +101,24 @@ void runPiece(const Model &model, State &state, const Model::SpringRun &run, int
 // every run's forces on particles [first, last): the springs with an end there, each once (a
 // spring whose other end is another thread's is computed by both, with the same bits)
 template <bool Breakable>
-void runsOnParticles(const Model &model, State &state, int first, int last)
+void runsOnParticles(const Model &model, State &state, Workspace &work, int first, int last)
 {
     for (const Model::SpringRun &run : model.springRuns)
         forEachRunPiece(run, first, last, [&](int lo, int hi, const RunSides &sides) {
-            runPiece<Breakable>(model, state, run, lo, hi, sides);
+            runPiece<Breakable>(model, state, work, run, lo, hi, sides);
         });
 }
 
 }  // namespace
 
-void addSprings(const Model &model, State &state)
+void addSprings(const Model &model, State &state, Workspace &work)
 {
     if (!model.plan.springs)
         return;
     if (model.usesSpringRuns())
-        addSpringRuns(model, state);
+        addSpringRuns(model, state, work);
     else
-        addSpringsGathered(model, state);
+        addSpringsGathered(model, state, work);
 }
 
 // Each thread takes a contiguous share of the particles, and that share a block at a time: run by
@@ -126,7 +126,7 @@ void addSprings(const Model &model, State &state)
 // The same bits as addSpringsReference on any number of threads and for any block size. A block's
 // positions, velocities and forces (576 KB) stay in the cache while every run passes over them;
 // without blocks a large cloth streams them from memory once for each kind of spring.
-void addSpringRuns(const Model &model, State &state)
+void addSpringRuns(const Model &model, State &state, Workspace &work)
 {
     constexpr int kBlock = 8192;  // particles
     const bool breakable = !state.springBroken.empty();
@@ -134,9 +134,9 @@ void addSpringRuns(const Model &model, State &state)
         for (int begin = first; begin < last; begin += kBlock) {
             const int end = std::min(last, begin + kBlock);
             if (breakable)
-                runsOnParticles<true>(model, state, begin, end);
+                runsOnParticles<true>(model, state, work, begin, end);
             else
-                runsOnParticles<false>(model, state, begin, end);
+                runsOnParticles<false>(model, state, work, begin, end);
         }
     });
 }
@@ -145,10 +145,10 @@ void addSpringRuns(const Model &model, State &state)
 // bits: each spring's force on end a, then each particle sums the forces of its springs in
 // ascending spring order (+ at end a, - at end b, Newton's third law). That order is the order
 // in which addSpringsReference's scatter adds them, so the two agree to the bit.
-void addSpringsGathered(const Model &model, State &state)
+void addSpringsGathered(const Model &model, State &state, Workspace &work)
 {
     const int springs = model.springCount();
-    Eigen::Matrix3Xd &perSpring = state.springForce;
+    Eigen::Matrix3Xd &perSpring = work.springForce;
     if (perSpring.cols() != springs)
         perSpring.resize(3, springs);  // once, on first use: later steps reuse it
 
@@ -164,7 +164,7 @@ void addSpringsGathered(const Model &model, State &state)
     const int *offsets = model.springOffsets.data();
     const int *ends = model.springEnds.data();
     parallelFor(n, [&](int i) {
-        Eigen::Vector3d sum = state.force.col(i);
+        Eigen::Vector3d sum = work.force.col(i);
         for (int e = offsets[i]; e < offsets[i + 1]; ++e) {
             const int end = ends[e];
             if (end & 1)
@@ -172,13 +172,13 @@ void addSpringsGathered(const Model &model, State &state)
             else
                 sum += perSpring.col(end >> 1);
         }
-        state.force.col(i) = sum;
+        work.force.col(i) = sum;
     });
 }
 
 // the plain loop over the spring list, scattering into both ends: the reference the tests hold
 // addSprings to
-void addSpringsReference(const Model &model, State &state)
+void addSpringsReference(const Model &model, State &state, Workspace &work)
 {
     if (!model.plan.springs)
         return;
@@ -186,8 +186,8 @@ void addSpringsReference(const Model &model, State &state)
         if (state.isBroken(k))
             continue;
         const Eigen::Vector3d fa = springForce(model, state, k);
-        state.force.col(model.springA[static_cast<std::size_t>(k)]) += fa;
-        state.force.col(model.springB[static_cast<std::size_t>(k)]) -= fa;
+        work.force.col(model.springA[static_cast<std::size_t>(k)]) += fa;
+        work.force.col(model.springB[static_cast<std::size_t>(k)]) -= fa;
     }
 }
 

@@ -6,6 +6,7 @@
 // (springs' dampers and the medium's drag) narrows symplectic Euler's limit from 2/ω to
 // (√(γ² + 4ω²) - γ)/ω².
 
+#include "blowup.h"
 #include "model.h"
 #include "state.h"
 

@@ -4,22 +4,6 @@
 
 namespace core {
 
-std::string_view stageName(Stage stage)
-{
-    switch (stage) {
-    case Stage::Gravity: return "gravity";
-    case Stage::Drag: return "drag";
-    case Stage::Springs: return "springs";
-    case Stage::Applied: return "applied forces";
-    case Stage::Integrate: return "integrate";
-    case Stage::PlaneCollisions: return "plane collisions";
-    case Stage::ParticleCollisions: return "particle collisions";
-    case Stage::Breaks: return "spring breaks";
-    case Stage::Check: return "check";
-    }
-    return "unknown";
-}
-
 State makeState(const Model &model, const SceneDesc &scene)
 {
     assert(static_cast<int>(scene.particles.size()) == model.particleCount());
@@ -27,8 +11,6 @@ State makeState(const Model &model, const SceneDesc &scene)
     State state;
     state.position.resize(3, n);
     state.velocity.resize(3, n);
-    state.force.setZero(3, n);
-    state.applied.setZero(3, n);
     fitSpringBreaks(model, state);
     for (Eigen::Index i = 0; i < n; ++i) {
         const ParticleDesc &p = scene.particles[static_cast<std::size_t>(i)];
@@ -57,11 +39,15 @@ void fitSpringBreaks(const Model &model, State &state)
 
 void setAppliedForce(State &state, int particle, const Eigen::Vector3d &force)
 {
-    assert(particle >= 0 && particle < state.applied.cols());
+    assert(particle >= 0 && particle < state.particleCount());
+    if (state.applied.cols() != state.position.cols())
+        state.applied.setZero(3, state.position.cols());  // the first force set since none was
     const bool wasSet = !state.applied.col(particle).isZero(0.0);
     const bool isSet = !force.isZero(0.0);
     state.applied.col(particle) = force;
     state.appliedCount += static_cast<int>(isSet) - static_cast<int>(wasSet);
+    if (state.appliedCount == 0)
+        state.applied.resize(3, 0);  // none left: the state holds no forces
 }
 
 void storeState(const State &state, SceneDesc &scene)

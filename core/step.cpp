@@ -3,70 +3,61 @@
 #include "passes.h"
 #include "timed.h"
 
-#include <algorithm>
-#include <chrono>
-
 namespace core {
 
 namespace {
 
-// seconds spent so far in the force passes
-double forceSeconds(const Profile &profile)
+// the step and time of a blowup found in the sub-step that began the step at state's time
+bool stopped(const State &state, Workspace &work)
 {
-    return profile[Stage::Gravity].seconds + profile[Stage::Drag].seconds + profile[Stage::Springs].seconds +
-           profile[Stage::Applied].seconds;
-}
-
-// the integrator, timed without the force passes it calls (those are timed on their own)
-void integrateTimed(const Model &model, State &state, double h)
-{
-    const double forcesBefore = forceSeconds(state.profile);
-    const auto start = std::chrono::steady_clock::now();
-    integrate(model, state, h);
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    StageTiming &timing = state.profile[Stage::Integrate];
-    timing.calls += 1;
-    timing.seconds += std::max(0.0, total - (forceSeconds(state.profile) - forcesBefore));
+    work.blowup->step = state.step + 1;
+    work.blowup->time = state.time;
+    return false;
 }
 
 }  // namespace
 
-bool step(const Model &model, State &state)
+bool step(const Model &model, State &state, Workspace &work)
 {
-    if (state.blowup)
+    if (work.blowup)
         return false;
     const StepPlan &plan = model.plan;
+    Profile &profile = work.profile;
     const double h = model.subStep();
 
     for (int sub = 0; sub < model.substeps; ++sub) {
-        // 1 and 2. forces at (x, v) and integration of every free particle: the integrator
-        // evaluates the forces as often as its scheme needs (once for the Euler schemes)
-        state.freeParticlesChecked = false;  // until an integrator says it checked what it wrote
-        integrateTimed(model, state, h);
-        if (state.blowup) {  // an adaptive integrator that could not cover the sub-step
-            state.blowup->step = state.step + 1;
-            state.blowup->time = state.time;
-            return false;
+        // 1 and 2. forces at (x, v) and integration of every free particle, by the path the plan
+        // chose when the model was compiled
+        bool freeChecked = false;  // whether the update checked the free particles' new values
+        switch (plan.subStep) {
+        case SubStepPath::FusedLattice:
+            // the Euler schemes on a lattice: every force pass and the update fused, a block of
+            // particles at a time (spring_blocks.cpp)
+            timed(profile, Stage::FusedSubStep, true, [&] { freeChecked = stepSpringBlocks(model, state, work, h); });
+            break;
+        case SubStepPath::Stages:
+            // the integrator evaluates the forces (computeForces) as often as its scheme needs
+            timed(profile, Stage::Integrate, true, [&] { freeChecked = integrate(model, state, work, h); });
+            if (work.blowup)  // an adaptive integrator that could not cover the sub-step
+                return stopped(state, work);
+            break;
         }
 
         // 3. contacts as projections: particles against planes, then pairs (they move particles
         // after the integrator's check)
         if (plan.planeCollisions || plan.particleCollisions)
-            state.freeParticlesChecked = false;
-        timed(state, Stage::PlaneCollisions, plan.planeCollisions, [&] { collidePlanes(model, state); });
-        timed(state, Stage::ParticleCollisions, plan.particleCollisions, [&] { collideParticles(model, state); });
+            freeChecked = false;
+        timed(profile, Stage::PlaneCollisions, plan.planeCollisions, [&] { collidePlanes(model, state, work); });
+        timed(profile, Stage::ParticleCollisions, plan.particleCollisions, [&] { collideParticles(model, state, work); });
 
         // springs stretched past their breaking strain break, for good
-        timed(state, Stage::Breaks, plan.springBreaks, [&] { breakSprings(model, state); });
+        timed(profile, Stage::Breaks, plan.springBreaks, [&] { breakSprings(model, state, work); });
 
         // 4. every value finite and bounded, else stop here and say where
         bool finite = true;
-        timed(state, Stage::Check, true, [&] { finite = checkFinite(model, state); });
-        if (!finite) {
-            state.blowup->step = state.step + 1;
-            state.blowup->time = state.time;
-            return false;
-        }
+        timed(profile, Stage::Check, true, [&] { finite = checkFinite(model, state, work, freeChecked); });
+        if (!finite)
+            return stopped(state, work);
     }
     state.step += 1;
     state.time += model.timeStep;

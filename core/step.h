@@ -3,6 +3,7 @@
 
 #include "model.h"
 #include "state.h"
+#include "workspace.h"
 
 namespace core {
 
@@ -10,8 +11,8 @@ namespace core {
 inline constexpr double kBlowupBound = 1.0e10;
 
 // advances the state by model.timeStep in model.substeps equal sub-steps; returns false (and sets
-// state.blowup) if a value stopped being finite or bounded, in which case the state is not
-// stepped again
-bool step(const Model &model, State &state);
+// work.blowup) if a value stopped being finite or bounded, in which case the state is not stepped
+// again until work.blowup is cleared
+bool step(const Model &model, State &state, Workspace &work);
 
 }  // namespace core

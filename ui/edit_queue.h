@@ -21,6 +21,9 @@ enum class SceneChange {
     Replace,     // another scene (opened, example, new): start from its initial conditions
     Structure,   // particles, springs or planes changed: rebuild, keep the motion if the count matches
     Parameters,  // settings or per-spring values only: recompile the model, keep the state
+    // the initial conditions became a state of this run (core::storeState: positions, velocities,
+    // and the springs it broke left out), or went back: the run goes on as it is
+    InitialConditions,
 };
 
 struct SetSceneEdit {

@@ -6,48 +6,25 @@
 
 namespace ui {
 
-namespace {
-
-void setInitialConditions(SceneDocument &document, const Eigen::Matrix3Xd &position, const Eigen::Matrix3Xd &velocity)
+InitialStateCommand::InitialStateCommand(SceneDocument &document, const QString &text, const core::State &state)
+    : QUndoCommand(text), m_document(document), m_before(document.sharedScene())
 {
-    // a parameters-kind change: the worker keeps its running state, only a reset reads these
-    document.modify(
-        [&](core::SceneDesc &scene) {
-            for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-                scene.particles[i].position = position.col(static_cast<Eigen::Index>(i));
-                scene.particles[i].velocity = velocity.col(static_cast<Eigen::Index>(i));
-            }
-        },
-        SceneChange::Parameters);
+    assert(static_cast<std::size_t>(state.particleCount()) == m_before->particles.size());
+    auto after = std::make_shared<core::SceneDesc>(*m_before);
+    core::storeState(state, *after);
+    m_after = std::move(after);
 }
 
-}  // namespace
-
-InitialStateCommand::InitialStateCommand(SceneDocument &document, const QString &text, const CapturedState &state)
-    : QUndoCommand(text), m_document(document), m_afterPosition(state.position), m_afterVelocity(state.velocity)
-{
-    const auto &particles = document.scene().particles;
-    assert(static_cast<Eigen::Index>(particles.size()) == state.position.cols());
-    m_beforePosition.resize(3, static_cast<Eigen::Index>(particles.size()));
-    m_beforeVelocity.resize(3, static_cast<Eigen::Index>(particles.size()));
-    for (std::size_t i = 0; i < particles.size(); ++i) {
-        const auto column = static_cast<Eigen::Index>(i);
-        m_beforePosition.col(column) = particles[i].position;
-        m_beforeVelocity.col(column) = particles[i].velocity;
-        // a pinned particle starts at rest, whatever the run says
-        if (particles[i].pinned)
-            m_afterVelocity.col(column).setZero();
-    }
-}
-
+// the worker keeps its running state either way (SceneChange::InitialConditions): only a reset
+// reads these conditions
 void InitialStateCommand::redo()
 {
-    setInitialConditions(m_document, m_afterPosition, m_afterVelocity);
+    m_document.setScene(m_after, SceneChange::InitialConditions);
 }
 
 void InitialStateCommand::undo()
 {
-    setInitialConditions(m_document, m_beforePosition, m_beforeVelocity);
+    m_document.setScene(m_before, SceneChange::InitialConditions);
 }
 
 }  // namespace ui

@@ -466,7 +466,7 @@ void MainWindow::sceneChanged(SceneChange change)
 {
     const core::SceneDesc &scene = m_document->scene();
     const std::uint64_t sequence = m_controller->setScene(m_document->sharedScene(), change);
-    if (change != SceneChange::Parameters)
+    if (change != SceneChange::Parameters && change != SceneChange::InitialConditions)
         m_viewport->setPlanes(scene.planes);
     if (change == SceneChange::Replace) {
         // a new scene: fresh steering, no old warning, and a view of all of it once it arrives
@@ -683,10 +683,11 @@ void MainWindow::useCurrentStateAsInitial()
     m_captureRequest = m_controller->captureState();
 }
 
-void MainWindow::applyCapturedState(const CapturedState &state)
+void MainWindow::applyCapturedState(const CapturedState &captured)
 {
     // a scene replaced or given other particles since the request: the state no longer fits
-    if (!state.scene || state.particleCount() != static_cast<int>(m_document->scene().particles.size())) {
+    const core::State &state = captured.state;
+    if (!captured.scene || state.particleCount() != static_cast<int>(m_document->scene().particles.size())) {
         showWarning(tr("Use current state as initial: the scene changed meanwhile; nothing was changed"));
         return;
     }

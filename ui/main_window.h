@@ -215,7 +215,7 @@ private:
     void updateFileActions();
     void setAutosaveInterval(int seconds);
     static QString droppedScenePath(const QMimeData *mime);
-    void applyCapturedState(const CapturedState &state);
+    void applyCapturedState(const CapturedState &captured);
     void saveSessionRecording(const SessionRecording &recording);
     void exportPlot(PlotExport format);
 

@@ -50,12 +50,46 @@ QByteArray matrix(const Eigen::Matrix3Xd &m)
     return out + ']';
 }
 
+// the whole core::State: what a resume needs. The applied forces, the broken springs and the
+// breaks are left out while there are none
+QByteArray stateJson(const core::State &state)
+{
+    QByteArray out = "{\"time\": " + io::formatNumber(state.time) + ", \"step\": " + QByteArray::number(state.step) +
+                     ", \"adaptiveStep\": " + io::formatNumber(state.adaptiveStep) +
+                     ",\n        \"positions\": " + matrix(state.position) + ",\n        \"velocities\": " + matrix(state.velocity);
+    if (state.appliedCount > 0) {
+        out += ",\n        \"applied\": [";
+        bool first = true;
+        for (Eigen::Index i = 0; i < state.applied.cols(); ++i) {
+            if (state.applied.col(i).isZero(0.0))
+                continue;
+            out += QByteArray(first ? "" : ", ") + "{\"particle\": " + QByteArray::number(qlonglong(i)) + ", \"force\": [" +
+                   io::formatNumber(state.applied(0, i)) + ", " + io::formatNumber(state.applied(1, i)) + ", " +
+                   io::formatNumber(state.applied(2, i)) + "]}";
+            first = false;
+        }
+        out += "]";
+    }
+    if (!state.breaks.empty()) {
+        // the flags follow from the breaks: a spring is broken once it broke
+        out += ",\n        \"breaks\": [";
+        for (std::size_t i = 0; i < state.breaks.size(); ++i) {
+            const core::SpringBreak &b = state.breaks[i];
+            out += QByteArray(i ? ", " : "") + "{\"spring\": " + QByteArray::number(b.spring) +
+                   ", \"step\": " + QByteArray::number(b.step) + ", \"time\": " + io::formatNumber(b.time) + "}";
+        }
+        out += "]";
+    }
+    return out + "}";
+}
+
 const char *changeName(SceneChange change)
 {
     switch (change) {
     case SceneChange::Replace: return "replace";
     case SceneChange::Structure: return "structure";
     case SceneChange::Parameters: return "parameters";
+    case SceneChange::InitialConditions: return "initial-conditions";
     }
     return "replace";
 }
@@ -141,6 +175,53 @@ public:
                 return false;
         return true;
     }
+    // a core::State of the scene, as stateJson() writes it
+    bool state(const QJsonValue &value, const QString &path, const core::SceneDesc &scene, core::State &out)
+    {
+        if (!value.isObject())
+            return fail(path, u"expected an object"_s);
+        const QJsonObject o = value.toObject();
+        const auto particles = qsizetype(scene.particles.size());
+        if (!number(o.value(u"time"_s), path + u".time"_s, out.time) ||
+            !count(o.value(u"step"_s), path + u".step"_s, out.step) ||
+            !number(o.value(u"adaptiveStep"_s), path + u".adaptiveStep"_s, out.adaptiveStep) ||
+            !matrix(o.value(u"positions"_s), path + u".positions"_s, particles, out.position) ||
+            !matrix(o.value(u"velocities"_s), path + u".velocities"_s, particles, out.velocity))
+            return false;
+        const QJsonArray applied = o.value(u"applied"_s).toArray();
+        for (qsizetype i = 0; i < applied.size(); ++i) {
+            const QString at = path + u".applied[%1]"_s.arg(i);
+            int p = -1;
+            Eigen::Vector3d force;
+            if (!particle(applied[i].toObject().value(u"particle"_s), at + u".particle"_s, scene, p) ||
+                !vector3(applied[i].toObject().value(u"force"_s), at + u".force"_s, force))
+                return false;
+            if (p < 0)
+                return fail(at + u".particle"_s, u"expected a particle of the scene"_s);
+            core::setAppliedForce(out, p, force);
+        }
+        const QJsonArray breaks = o.value(u"breaks"_s).toArray();
+        const auto springs = std::uint64_t(scene.springs.size());
+        if (!breaks.isEmpty())
+            out.springBroken.assign(scene.springs.size(), 0);
+        for (qsizetype i = 0; i < breaks.size(); ++i) {
+            const QString at = path + u".breaks[%1]"_s.arg(i);
+            const QJsonObject b = breaks[i].toObject();
+            std::uint64_t spring = 0;
+            core::SpringBreak entry;
+            if (!count(b.value(u"spring"_s), at + u".spring"_s, spring) || !count(b.value(u"step"_s), at + u".step"_s, entry.step) ||
+                !number(b.value(u"time"_s), at + u".time"_s, entry.time))
+                return false;
+            if (spring >= springs)
+                return fail(at + u".spring"_s, u"expected a spring of the scene (0 to %1)"_s.arg(qlonglong(springs) - 1));
+            if (out.springBroken[spring] != 0)
+                return fail(at + u".spring"_s, u"spring %1 broke twice"_s.arg(spring));
+            out.springBroken[spring] = 1;
+            entry.spring = int(spring);
+            out.breaks.push_back(entry);
+        }
+        return true;
+    }
     bool scene(const QJsonValue &value, const QString &path, std::shared_ptr<const core::SceneDesc> &out)
     {
         if (!value.isString())
@@ -177,8 +258,11 @@ public:
                 e.change = SceneChange::Structure;
             else if (change == u"parameters"_s)
                 e.change = SceneChange::Parameters;
+            else if (change == u"initial-conditions"_s)
+                e.change = SceneChange::InitialConditions;
             else
-                return fail(path + u".change"_s, u"expected \"replace\", \"structure\" or \"parameters\""_s);
+                return fail(path + u".change"_s,
+                            u"expected \"replace\", \"structure\", \"parameters\" or \"initial-conditions\""_s);
             if (!scene(object.value(u"scene"_s), path + u".scene"_s, e.scene))
                 return false;
             out = e;
@@ -227,9 +311,7 @@ QByteArray recordingToJson(const SessionRecording &r)
 {
     QByteArray out = "{\n    \"format\": \"springlab-replay\",\n    \"version\": " + QByteArray::number(kVersion) + ",\n";
     out += "    \"scene\": " + quoted(io::sceneToJson(*r.scene)) + ",\n";
-    out += "    \"start\": {\"time\": " + io::formatNumber(r.time) + ", \"step\": " + QByteArray::number(r.step) +
-           ", \"adaptiveStep\": " + io::formatNumber(r.adaptiveStep) + ",\n        \"positions\": " + matrix(r.position) +
-           ",\n        \"velocities\": " + matrix(r.velocity) + "},\n";
+    out += "    \"start\": " + stateJson(r.start) + ",\n";
     out += "    \"edits\": [";
     for (std::size_t i = 0; i < r.entries.size(); ++i)
         out += QByteArray(i ? ",\n" : "\n") + "        {\"steps\": " + QByteArray::number(r.entries[i].steps) + ", " +
@@ -262,13 +344,8 @@ RecordingLoad parseRecording(const QByteArray &json, const QString &sourceName)
         return result;
     }
     auto r = std::make_shared<SessionRecording>();
-    const QJsonObject start = root.value(u"start"_s).toObject();
     bool ok = reader.scene(root.value(u"scene"_s), u"scene"_s, r->scene) &&
-              reader.number(start.value(u"time"_s), u"start.time"_s, r->time) &&
-              reader.count(start.value(u"step"_s), u"start.step"_s, r->step) &&
-              reader.number(start.value(u"adaptiveStep"_s), u"start.adaptiveStep"_s, r->adaptiveStep);
-    ok = ok && reader.matrix(start.value(u"positions"_s), u"start.positions"_s, qsizetype(r->scene->particles.size()), r->position) &&
-         reader.matrix(start.value(u"velocities"_s), u"start.velocities"_s, qsizetype(r->scene->particles.size()), r->velocity);
+              reader.state(root.value(u"start"_s), u"start"_s, *r->scene, r->start);
     // each edit is checked against the scene it applies to
     std::shared_ptr<const core::SceneDesc> current = r->scene;
     const QJsonArray edits = root.value(u"edits"_s).toArray();

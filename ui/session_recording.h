@@ -21,12 +21,8 @@ struct SessionRecording {
     // the scene the runner had at the start (its initial conditions stay the scene's own, so that
     // a reset during the replay goes where the recorded one went)
     std::shared_ptr<const core::SceneDesc> scene;
-    // the state at the start: positions, velocities, time, step and the adaptive step size
-    Eigen::Matrix3Xd position;
-    Eigen::Matrix3Xd velocity;
-    double time = 0.0;
-    std::uint64_t step = 0;
-    double adaptiveStep = 0.0;
+    // the state at the start, springs broken before it included
+    core::State start;
 
     struct Entry {
         std::uint64_t steps = 0;  // steps taken since the start before this edit

@@ -167,18 +167,17 @@ bool SimulationRunner::scrubTo(std::uint64_t step)
         m_scrub.emplace();
     Scrub &scrub = *m_scrub;
     // on from the step shown when it lies between the keyframe and the target (stepping forward)
-    const bool onward = scrub.model == key->model && scrub.state.step >= key->step && scrub.state.step <= step &&
-                        scrub.state.position.cols() == key->position.cols() && !scrub.state.blowup;
-    if (!onward) {
+    const bool onward = scrub.model == key->model && scrub.state.step >= key->state.step && scrub.state.step <= step &&
+                        scrub.state.particleCount() == key->state.particleCount();
+    if (!onward)
         restoreKey(*key, scrub.state);
-        if (scrub.state.force.cols() != key->position.cols())
-            scrub.state.force.setZero(3, key->position.cols());
-    }
     scrub.model = key->model;
     scrub.scene = key->scene;
     while (scrub.state.step < step) {
         applyGrabForce(*scrub.model, scrub.state, key->held, kGrabRate);
-        if (!core::step(*scrub.model, scrub.state)) {
+        // the run's workspace: only one of the two steps at a time
+        if (!core::step(*scrub.model, scrub.state, m_work)) {
+            m_work.blowup.reset();
             m_scrub.reset();  // a recorded step cannot fail; if it does, show the run instead
             return false;
         }
@@ -203,11 +202,9 @@ void SimulationRunner::resumeFromScrub()
     ++m_resumes;
     m_resumedAt = scrub.state.step;
     const std::shared_ptr<const core::SceneDesc> current = m_scene;
-    const core::Profile profile = m_state.profile;
     m_state = std::move(scrub.state);
-    m_state.profile = profile;
     // the held forces are the editor's own now, not the recorded ones
-    m_state.applied.setZero(3, m_state.position.cols());
+    m_state.applied.resize(3, 0);
     m_state.appliedCount = 0;
     m_owed = 0.0;
     m_scene = scrub.scene;
@@ -230,6 +227,13 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
     m_scene = edit.scene;
     m_model = core::compileModel(*m_scene);
     switch (edit.change) {
+    case SceneChange::InitialConditions:
+        // the run goes on as it is; its broken springs follow the spring list
+        if (sameCount) {
+            carryBrokenSprings(*previous);
+            break;
+        }
+        [[fallthrough]];
     case SceneChange::Parameters:
         // same particles: the state stays valid as it is, broken springs included
         if (sameCount) {
@@ -318,6 +322,50 @@ void SimulationRunner::carryMotion(const core::SceneDesc &previous)
     m_state = std::move(rebuilt);
 }
 
+// The initial conditions became a state of the run with the springs it broke left out of the list
+// (core::storeState), or went back to what they were, with those springs in it again. The list
+// before and after differ by those springs alone, in the same order, so walking both in step
+// pairs each spring with itself: a spring of the shorter list keeps its flag, one the new list
+// left out had broken (its break leaves the log), and one it has again broke in this run.
+void SimulationRunner::carryBrokenSprings(const core::SceneDesc &previous)
+{
+    const auto &before = previous.springs;
+    const auto &after = m_scene->springs;
+    if (before.size() == after.size()) {
+        core::fitSpringBreaks(*m_model, m_state);
+        return;
+    }
+    const bool fewer = after.size() < before.size();
+    const auto &shorter = fewer ? after : before;
+    const auto &longer = fewer ? before : after;
+    std::vector<std::size_t> partner(shorter.size());  // each spring of the shorter list in the longer
+    std::size_t k = 0;
+    for (std::size_t j = 0; j < shorter.size(); ++j) {
+        while (k < longer.size() && !(longer[k] == shorter[j]))
+            ++k;
+        partner[j] = std::min(k, longer.size() - 1);
+        ++k;
+    }
+    std::vector<std::uint8_t> broken(after.size(), fewer ? 0 : 1);
+    std::vector<int> newIndex(before.size(), -1);  // each old spring's index in the new list
+    for (std::size_t j = 0; j < shorter.size(); ++j) {
+        const std::size_t oldIndex = fewer ? partner[j] : j;
+        const std::size_t index = fewer ? j : partner[j];
+        broken[index] = m_state.isBroken(static_cast<int>(oldIndex)) ? 1 : 0;
+        newIndex[oldIndex] = static_cast<int>(index);
+    }
+    std::vector<core::SpringBreak> breaks;
+    for (core::SpringBreak b : m_state.breaks)
+        if (newIndex[static_cast<std::size_t>(b.spring)] >= 0) {
+            b.spring = newIndex[static_cast<std::size_t>(b.spring)];
+            breaks.push_back(b);
+        }
+    const bool any = std::find(broken.begin(), broken.end(), std::uint8_t(1)) != broken.end();
+    m_state.springBroken = any || m_model->plan.springBreaks ? std::move(broken) : std::vector<std::uint8_t>{};
+    m_state.breaks = std::move(breaks);
+    core::fitSpringBreaks(*m_model, m_state);  // the capacity for every break
+}
+
 // the scene's initial conditions, and the energy the drift is measured from
 void SimulationRunner::restart()
 {
@@ -389,18 +437,15 @@ void SimulationRunner::applyGrab()
 bool SimulationRunner::stepOnce()
 {
     applyGrab();
-    if (core::step(*m_model, m_state)) {
+    if (core::step(*m_model, m_state, m_work)) {
         m_timeline.afterStep(m_model, m_scene, m_state, heldForces());
         return true;
     }
     // blown up: stop, keep the report, and go back to the last good state
-    m_blowup = m_state.blowup;
+    m_blowup = std::exchange(m_work.blowup, std::nullopt);
     m_running = false;
     m_owed = 0.0;
-    core::Profile profile = m_state.profile;
     m_state = m_lastGood;
-    m_state.profile = profile;
-    m_state.blowup.reset();
     m_timeline.truncateAfter(m_state.step);
     m_estimateStale = true;
     return false;
@@ -477,7 +522,7 @@ void SimulationRunner::planAccuracy(const PlanAccuracyEdit &edit)
     // the cost of a force evaluation as measured in this run, else timed now
     auto plan = std::make_shared<core::AccuracyPlan>();
     if (hasScene()) {
-        double secondsPerEvaluation = core::profiledSecondsPerEvaluation(m_state);
+        double secondsPerEvaluation = core::profiledSecondsPerEvaluation(m_work.profile);
         if (!(secondsPerEvaluation > 0.0))
             secondsPerEvaluation = core::timedSecondsPerEvaluation(*m_model, m_state);
         *plan = core::planAccuracy(*m_model, m_state, edit.tolerance, secondsPerEvaluation);
@@ -492,11 +537,7 @@ void SimulationRunner::captureState(const CaptureStateEdit &edit)
     // (while scrubbing, the step shown)
     auto captured = std::make_shared<CapturedState>();
     if (hasScene()) {
-        const core::State &state = shownState();
-        captured->position = state.position;
-        captured->velocity = state.velocity;
-        captured->time = state.time;
-        captured->step = state.step;
+        captured->state = shownState();
         captured->scene = m_scrub ? m_scrub->scene : m_scene;
     }
     m_captured = std::move(captured);
@@ -537,11 +578,7 @@ void SimulationRunner::startRecording()
         return;
     auto recording = std::make_shared<SessionRecording>();
     recording->scene = m_scene;
-    recording->position = m_state.position;
-    recording->velocity = m_state.velocity;
-    recording->time = m_state.time;
-    recording->step = m_state.step;
-    recording->adaptiveStep = m_state.adaptiveStep;
+    recording->start = m_state;
     // forces held on from before the start
     if (m_steerParticle >= 0)
         recording->entries.push_back({0, SteerEdit{m_steerParticle, m_steerForce}});
@@ -562,14 +599,14 @@ std::shared_ptr<const SessionRecording> SimulationRunner::stopRecording()
 
 bool SimulationRunner::restoreRecordedStart(const SessionRecording &recording)
 {
-    if (!hasScene() || recording.position.cols() != m_state.position.cols() ||
-        recording.velocity.cols() != m_state.velocity.cols())
+    const core::State &start = recording.start;
+    if (!hasScene() || start.particleCount() != m_state.particleCount() ||
+        start.velocity.cols() != start.position.cols() ||
+        (start.appliedCount > 0 && start.applied.cols() != start.position.cols()) ||
+        (!start.springBroken.empty() && static_cast<int>(start.springBroken.size()) != m_model->springCount()))
         return false;
-    m_state.position = recording.position;
-    m_state.velocity = recording.velocity;
-    m_state.time = recording.time;
-    m_state.step = recording.step;
-    m_state.adaptiveStep = recording.adaptiveStep;
+    m_state = start;
+    core::fitSpringBreaks(*m_model, m_state);  // the capacity for every break
     m_stepsTaken = 0;
     m_estimateStale = true;
     m_scrub.reset();

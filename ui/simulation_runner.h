@@ -30,6 +30,7 @@
 #include "core/snapshot.h"
 #include "core/stability.h"
 #include "core/state.h"
+#include "core/workspace.h"
 
 #include <memory>
 #include <optional>
@@ -140,6 +141,7 @@ private:
     void setScene(const SetSceneEdit &edit);
     void restart();
     void carryMotion(const core::SceneDesc &previous);
+    void carryBrokenSprings(const core::SceneDesc &previous);
     void reset();
     void tilt(const TiltEdit &edit);
     void steer(const SteerEdit &edit);
@@ -168,6 +170,7 @@ private:
     std::shared_ptr<const core::SceneDesc> m_scene;
     std::shared_ptr<const core::Model> m_model;
     core::State m_state;
+    core::Workspace m_work;  // the steps' scratch and profile, for the run and the scrubs alike
     Timeline m_timeline;
     std::optional<Scrub> m_scrub;  // while a recorded step is shown
     std::uint64_t m_resumes = 0;

@@ -18,18 +18,10 @@ TimelineKey makeKey(const std::shared_ptr<const core::Model> &model, const std::
     key.model = model;
     key.scene = scene;
     key.held = held;
-    key.position = state.position;
-    key.velocity = state.velocity;
-    if (state.appliedCount > 0)
-        key.applied = state.applied;
-    key.appliedCount = state.appliedCount;
-    key.time = state.time;
-    key.step = state.step;
-    key.adaptiveStep = state.adaptiveStep;
-    key.springBroken = state.springBroken;
-    key.breaks = state.breaks;
-    key.bytes = sizeof(TimelineKey) + matrixBytes(key.position) + matrixBytes(key.velocity) +
-                matrixBytes(key.applied) + key.springBroken.size() + key.breaks.size() * sizeof(core::SpringBreak);
+    key.state = state;
+    const core::State &kept = key.state;
+    key.bytes = sizeof(TimelineKey) + matrixBytes(kept.position) + matrixBytes(kept.velocity) + matrixBytes(kept.applied) +
+                kept.springBroken.size() + kept.breaks.size() * sizeof(core::SpringBreak);
     return key;
 }
 
@@ -37,20 +29,8 @@ TimelineKey makeKey(const std::shared_ptr<const core::Model> &model, const std::
 
 void restoreKey(const TimelineKey &key, core::State &state)
 {
-    state.position = key.position;
-    state.velocity = key.velocity;
-    if (key.appliedCount > 0)
-        state.applied = key.applied;
-    else
-        state.applied.setZero(3, key.position.cols());
-    state.appliedCount = key.appliedCount;
-    state.time = key.time;
-    state.step = key.step;
-    state.adaptiveStep = key.adaptiveStep;
-    state.springBroken = key.springBroken;
-    state.breaks = key.breaks;
+    state = key.state;
     state.breaks.reserve(state.springBroken.size());  // so that a replayed break allocates nothing
-    state.blowup.reset();
 }
 
 void Timeline::setBudget(std::size_t bytes)
@@ -77,7 +57,7 @@ void Timeline::afterStep(const std::shared_ptr<const core::Model> &model,
         return;  // recording is off
     if (!empty() && state.step <= m_lastStep)
         truncateAfter(state.step - 1);  // a step taken again after a roll-back: that future is gone
-    if (empty() || state.step >= m_keys.back().step + kKeyInterval) {
+    if (empty() || state.step >= m_keys.back().state.step + kKeyInterval) {
         add(makeKey(model, scene, state, held));
         return;
     }
@@ -93,7 +73,7 @@ void Timeline::afterEdit(const std::shared_ptr<const core::Model> &model,
         return;
     if (!empty())
         truncateAfter(state.step);
-    if (!empty() && m_keys.back().step == state.step) {
+    if (!empty() && m_keys.back().state.step == state.step) {
         // the edit replaces the keyframe of its step: the state there is now the edited one
         TimelineKey replaced = std::move(m_keys.back());
         m_keys.pop_back();
@@ -104,7 +84,7 @@ void Timeline::afterEdit(const std::shared_ptr<const core::Model> &model,
 
 void Timeline::truncateAfter(std::uint64_t step)
 {
-    while (!m_keys.empty() && m_keys.back().step > step) {
+    while (!m_keys.empty() && m_keys.back().state.step > step) {
         const TimelineKey &last = m_keys.back();
         const bool ownModel = m_keys.size() == 1 || m_keys[m_keys.size() - 2].model != last.model;
         m_used -= last.bytes + (ownModel ? modelBytes(last.model) : 0);
@@ -115,34 +95,34 @@ void Timeline::truncateAfter(std::uint64_t step)
         return;
     }
     // breaks after the last keyframe kept are no longer in the recording
-    while (!m_breakSteps.empty() && m_breakSteps.back() > m_keys.back().step)
+    while (!m_breakSteps.empty() && m_breakSteps.back() > m_keys.back().state.step)
         m_breakSteps.pop_back();
     if (m_lastStep > step) {
         // the steps after the last keyframe are gone too; its own step and time are the end now
         // unless step lies between it and the old end
         const TimelineKey &last = m_keys.back();
-        m_lastStep = std::max(last.step, step);
-        m_lastTime = last.step == m_lastStep ? last.time
-                                             : last.time + static_cast<double>(m_lastStep - last.step) *
-                                                               last.model->timeStep;
+        m_lastStep = std::max(last.state.step, step);
+        m_lastTime = last.state.step == m_lastStep
+                         ? last.state.time
+                         : last.state.time + static_cast<double>(m_lastStep - last.state.step) * last.model->timeStep;
     }
 }
 
 std::uint64_t Timeline::firstStep() const
 {
-    return m_keys.empty() ? 0 : m_keys.front().step;
+    return m_keys.empty() ? 0 : m_keys.front().state.step;
 }
 
 double Timeline::firstTime() const
 {
-    return m_keys.empty() ? 0.0 : m_keys.front().time;
+    return m_keys.empty() ? 0.0 : m_keys.front().state.time;
 }
 
 const TimelineKey *Timeline::keyAtOrBefore(std::uint64_t step) const
 {
     // the keyframes are in ascending step order: the last one not after step
     const auto after = std::upper_bound(m_keys.begin(), m_keys.end(), step,
-                                        [](std::uint64_t s, const TimelineKey &key) { return s < key.step; });
+                                        [](std::uint64_t s, const TimelineKey &key) { return s < key.state.step; });
     return after == m_keys.begin() ? nullptr : &*(after - 1);
 }
 
@@ -157,12 +137,12 @@ void Timeline::add(TimelineKey key)
     }
     // the breaks since the keyframe before: each keyframe lists every break since its state was
     // built, in the order they happened
-    const std::uint64_t previous = m_keys.empty() ? 0 : m_keys.back().step;
-    for (const core::SpringBreak &b : key.breaks)
-        if (b.step > previous && b.step <= key.step && (m_breakSteps.empty() || m_breakSteps.back() < b.step))
+    const std::uint64_t previous = m_keys.empty() ? 0 : m_keys.back().state.step;
+    for (const core::SpringBreak &b : key.state.breaks)
+        if (b.step > previous && b.step <= key.state.step && (m_breakSteps.empty() || m_breakSteps.back() < b.step))
             m_breakSteps.push_back(b.step);
-    m_lastStep = key.step;
-    m_lastTime = key.time;
+    m_lastStep = key.state.step;
+    m_lastTime = key.state.time;
     m_used += bytes;
     m_keys.push_back(std::move(key));
     while (m_used > m_budget)
@@ -180,7 +160,7 @@ void Timeline::dropOldest()
         clear();
         return;
     }
-    const auto kept = std::lower_bound(m_breakSteps.begin(), m_breakSteps.end(), m_keys.front().step);
+    const auto kept = std::lower_bound(m_breakSteps.begin(), m_breakSteps.end(), m_keys.front().state.step);
     m_breakSteps.erase(m_breakSteps.begin(), kept);
 }
 

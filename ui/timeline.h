@@ -34,16 +34,7 @@ struct TimelineKey {
     std::shared_ptr<const core::Model> model;
     std::shared_ptr<const core::SceneDesc> scene;  // what the model was compiled from
     HeldForces held;
-    // the dynamic state: what core::step reads besides its scratch
-    Eigen::Matrix3Xd position;
-    Eigen::Matrix3Xd velocity;
-    Eigen::Matrix3Xd applied;  // empty when no force was applied (appliedCount 0)
-    int appliedCount = 0;
-    double time = 0.0;
-    std::uint64_t step = 0;
-    double adaptiveStep = 0.0;
-    std::vector<std::uint8_t> springBroken;
-    std::vector<core::SpringBreak> breaks;
+    core::State state;
     std::size_t bytes = 0;  // what it holds, model excluded (counted once per model)
 };
 
@@ -99,7 +90,7 @@ private:
     std::vector<std::uint64_t> m_breakSteps;  // kept up to date as keyframes come and go
 };
 
-// the key's dynamic state put into state (whose scratch stays as it is)
+// the key's state put into state (assignment reuses its memory)
 void restoreKey(const TimelineKey &key, core::State &state);
 
 }  // namespace ui

@@ -4,6 +4,8 @@
 #include "core/model.h"
 #include "core/scene.h"
 #include "core/state.h"
+#include "core/step.h"
+#include "core/workspace.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -29,17 +31,21 @@ inline core::SceneDesc quietScene()
     return scene;
 }
 
-// a compiled model and its initial state, kept together
+// a compiled model, its initial state and a workspace to step it with, kept together
 struct Sim {
     std::shared_ptr<const core::Model> model;
     core::State state;
+    core::Workspace work;
+
+    bool step() { return core::step(*model, state, work); }
 };
 
 inline Sim compile(const core::SceneDesc &scene)
 {
     auto model = core::compileModel(scene);
-    core::State state = core::makeState(*model, scene);
-    return Sim{model, std::move(state)};
+    Sim sim{model, core::makeState(*model, scene), {}};
+    sim.work.force.setZero(3, model->particleCount());  // for the tests that call one pass alone
+    return sim;
 }
 
 // a cheap deterministic generator for test scenes: next(range) is in [0, range)

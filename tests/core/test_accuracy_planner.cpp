@@ -81,13 +81,14 @@ void TestAccuracyPlanner::meetsTheToleranceWhenRun()
         QVERIFY2(row.localError <= tolerance, qPrintable(nameOf(row.integrator)));
         const auto model = withRow(o, row);
         core::State state = sim.state;
+        core::Workspace work;
         core::StepDoubling doubling;
         double largest = 0.0;
         for (int n = 0; n < 100; ++n) {
             const std::optional<double> error = doubling.estimate(model, state);
             QVERIFY(error.has_value());
             largest = std::max(largest, *error);
-            QVERIFY(core::step(*model, state));
+            QVERIFY(core::step(*model, state, work));
         }
         QVERIFY2(largest <= 3.0 * tolerance, qPrintable(QStringLiteral("%1 with %2 substeps: %3 m against %4 m")
                                                             .arg(nameOf(row.integrator))
@@ -217,18 +218,19 @@ void TestAccuracyPlanner::countsTheForceEvaluations()
     scene.settings.timeStep = plan.timeStep / implicit.substeps;
     const auto model = core::compileModel(scene);
     core::State state = sim.state;
-    QVERIFY(core::step(*model, state));
-    QVERIFY(state.solverIterations >= 1);
-    QCOMPARE(implicit.evaluationsPerSubstep, 2.0 + state.solverIterations);
+    core::Workspace work;
+    QVERIFY(core::step(*model, state, work));
+    QVERIFY(work.profile.solverIterations >= 1);
+    QCOMPARE(implicit.evaluationsPerSubstep, 2.0 + work.profile.solverIterations);
 }
 
 void TestAccuracyPlanner::measuresTheCostOfAnEvaluation()
 {
     test::Sim sim = oscillatorAt({}, 0.0);
-    QCOMPARE(core::profiledSecondsPerEvaluation(sim.state), 0.0);  // nothing measured yet
+    QCOMPARE(core::profiledSecondsPerEvaluation(sim.work.profile), 0.0);  // nothing measured yet
     for (int n = 0; n < 40; ++n)
-        QVERIFY(core::step(*sim.model, sim.state));
-    QVERIFY(core::profiledSecondsPerEvaluation(sim.state) > 0.0);
+        QVERIFY(sim.step());
+    QVERIFY(core::profiledSecondsPerEvaluation(sim.work.profile) > 0.0);
     QVERIFY(core::timedSecondsPerEvaluation(*sim.model, sim.state) > 0.0);
 }
 

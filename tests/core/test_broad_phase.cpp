@@ -255,12 +255,12 @@ void TestBroadPhase::runEqualsBruteForceRun()
 {
     test::Sim grid = test::compile(pouredBox());
     test::Sim brute = test::compile(pouredBox());
-    brute.state.contacts.bruteForce = true;
+    brute.work.contacts.bruteForce = true;
     std::size_t contacts = 0;
     for (int i = 0; i < 150; ++i) {
-        QVERIFY(core::step(*grid.model, grid.state));
-        QVERIFY(core::step(*brute.model, brute.state));
-        contacts += grid.state.contacts.pairs.size();
+        QVERIFY(grid.step());
+        QVERIFY(brute.step());
+        contacts += grid.work.contacts.pairs.size();
         QVERIFY2(sameBits(grid.state.position, brute.state.position), qPrintable(QString("step %1").arg(i + 1)));
         QVERIFY2(sameBits(grid.state.velocity, brute.state.velocity), qPrintable(QString("step %1").arg(i + 1)));
     }
@@ -271,12 +271,12 @@ void TestBroadPhase::stepAllocatesNothingOnceWarm()
 {
     // once the first sub-step has sized the scratch, its arrays stay where they are
     test::Sim sim = test::compile(pouredBox());
-    QVERIFY(core::step(*sim.model, sim.state));
-    const core::ContactGrid &grid = sim.state.contacts;
+    QVERIFY(sim.step());
+    const core::ContactGrid &grid = sim.work.contacts;
     const void *before[] = {grid.pairs.data(), grid.sorted.data(), grid.bucketStart.data(), grid.slotOf.data(),
                             grid.cellOf.data(), grid.radiusSample.data(), grid.found.data(), grid.pairStart.data()};
     for (int i = 0; i < 100; ++i)
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
     const void *after[] = {grid.pairs.data(), grid.sorted.data(), grid.bucketStart.data(), grid.slotOf.data(),
                            grid.cellOf.data(), grid.radiusSample.data(), grid.found.data(), grid.pairStart.data()};
     for (std::size_t k = 0; k < std::size(before); ++k)
@@ -292,8 +292,8 @@ void TestBroadPhase::nonFiniteParticleNeverCollides()
     scene.particles = {test::particle({0, 0, 0}), test::particle({0.1, 0, 0}), test::particle({0.05, 0, 0})};
     test::Sim sim = test::compile(scene);
     sim.state.position(1, 2) = std::numeric_limits<double>::quiet_NaN();
-    core::collideParticles(*sim.model, sim.state);
-    QCOMPARE(sim.state.contacts.pairs.size(), std::size_t(1));
+    core::collideParticles(*sim.model, sim.state, sim.work);
+    QCOMPARE(sim.work.contacts.pairs.size(), std::size_t(1));
     QCOMPARE(sim.state.position(0, 0), -0.05);
     QCOMPARE(sim.state.position(0, 1), 0.15);
     QVERIFY(std::isnan(sim.state.position(1, 2)));

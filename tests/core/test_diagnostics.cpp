@@ -42,7 +42,7 @@ void TestDiagnostics::undampedOscillatorKeepsItsEnergy()
     const double e0 = core::energies(*sim.model, sim.state).total();
     double worst = 0.0;
     for (int i = 0; i < 20000; ++i) {
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
         worst = std::max(worst, std::abs(core::energies(*sim.model, sim.state).total() - e0) / e0);
     }
     QVERIFY2(worst < 0.06, qPrintable(QString::number(worst)));
@@ -50,7 +50,7 @@ void TestDiagnostics::undampedOscillatorKeepsItsEnergy()
     scene.settings.integrator = core::Integrator::ExplicitEuler;
     test::Sim forward = test::compile(scene);
     for (int i = 0; i < 2000; ++i)
-        QVERIFY(core::step(*forward.model, forward.state));
+        QVERIFY(forward.step());
     QVERIFY(core::energies(*forward.model, forward.state).total() > 2.0 * e0);
 }
 
@@ -65,7 +65,7 @@ void TestDiagnostics::dampingOnlyLosesEnergy()
     double previous = core::energies(*sim.model, sim.state).total();
     const double first = previous;
     for (int i = 0; i < 3000; ++i) {
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
         if (i % 100 == 99) {
             const double now = core::energies(*sim.model, sim.state).total();
             QVERIFY2(now <= previous + 1e-3, qPrintable(QString("%1 > %2 at step %3").arg(now).arg(previous).arg(i)));

@@ -37,7 +37,7 @@ double oscillatorError(core::Integrator integrator, double h, double duration)
     test::Sim sim = test::compile(scene);
     const int steps = static_cast<int>(std::lround(duration / h));
     for (int i = 0; i < steps; ++i)
-        if (!core::step(*sim.model, sim.state))
+        if (!sim.step())
             return std::numeric_limits<double>::infinity();
     const double exact = options.restLength + core::oscillatorStretch(options, steps * h);
     return std::abs(sim.state.position(0, 1) - exact);
@@ -95,7 +95,7 @@ void TestIntegrators::energyOverALongRun()
     const double e0 = core::energies(*sim.model, sim.state).total();
     double lowest = e0, highest = e0;
     for (int i = 0; i < 2000; ++i) {
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
         const double e = core::energies(*sim.model, sim.state).total();
         lowest = std::min(lowest, e);
         highest = std::max(highest, e);
@@ -122,7 +122,7 @@ void TestIntegrators::implicitEulerStableFarBeyondTheExplicitLimit()
     test::Sim sim = test::compile(scene);
     const double e0 = core::energies(*sim.model, sim.state).total();
     for (int i = 0; i < 100; ++i)
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
     QVERIFY(core::energies(*sim.model, sim.state).total() < e0);
     QVERIFY(std::abs(sim.state.position(0, 1) - options.restLength) < options.displacement);
 
@@ -131,7 +131,7 @@ void TestIntegrators::implicitEulerStableFarBeyondTheExplicitLimit()
     test::Sim explicitSim = test::compile(scene);
     bool ok = true;
     for (int i = 0; i < 100 && ok; ++i)
-        ok = core::step(*explicitSim.model, explicitSim.state);
+        ok = explicitSim.step();
     QVERIFY(!ok);
 }
 
@@ -147,10 +147,10 @@ void TestIntegrators::implicitEulerHoldsPinnedParticles()
     test::Sim sim = test::compile(scene);
     const Eigen::Vector3d corner = sim.state.position.col(0);
     for (int i = 0; i < 200; ++i)
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
     QCOMPARE(Eigen::Vector3d(sim.state.position.col(0)), corner);
     QVERIFY(sim.state.position(1, 63) < options.height - 0.1);  // the far corner fell
-    QVERIFY(sim.state.solverIterations > 0);
+    QVERIFY(sim.work.profile.solverIterations > 0);
 }
 
 void TestIntegrators::adaptiveMeetsItsTolerance_data()
@@ -177,9 +177,9 @@ void TestIntegrators::adaptiveMeetsItsTolerance()
         scene.settings.timeStep = 0.1;
         test::Sim sim = test::compile(scene);
         for (int i = 0; i < 10; ++i)
-            QVERIFY(core::step(*sim.model, sim.state));
+            QVERIFY(sim.step());
         error = std::abs(sim.state.position(0, 1) - options.restLength - core::oscillatorStretch(options, duration));
-        rejected = sim.state.rejectedSteps;
+        rejected = sim.work.profile.rejectedSteps;
     } else {
         // reference problem 4: the 10-link chain released horizontally, against RK4 at 1e-5 s
         core::SceneDesc scene = core::makeChain({});
@@ -188,15 +188,15 @@ void TestIntegrators::adaptiveMeetsItsTolerance()
         scene.settings.integrator = core::Integrator::Rk4;
         test::Sim reference = test::compile(scene);
         for (int i = 0; i < 100000; ++i)
-            QVERIFY(core::step(*reference.model, reference.state));
+            QVERIFY(reference.step());
         scene.settings.integrator = core::Integrator::AdaptiveRk45;
         scene.settings.tolerance = tolerance;
         scene.settings.timeStep = 0.01;
         test::Sim sim = test::compile(scene);
         for (int i = 0; i < 100; ++i)
-            QVERIFY(core::step(*sim.model, sim.state));
+            QVERIFY(sim.step());
         error = (sim.state.position - reference.state.position).cwiseAbs().maxCoeff();
-        rejected = sim.state.rejectedSteps;
+        rejected = sim.work.profile.rejectedSteps;
     }
     QVERIFY2(error <= 10.0 * tolerance, qPrintable(QString("error %1 at tolerance %2").arg(error).arg(tolerance)));
     QVERIFY2(error > 0.0, "an error of exactly zero means nothing was measured");

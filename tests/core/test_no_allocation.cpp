@@ -134,14 +134,14 @@ void TestNoAllocation::stepAllocatesNothing()
 
     // the first steps make the scratch arrays; after that, nothing
     for (int i = 0; i < 2; ++i)
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
     const std::size_t breaksBefore = sim.state.breaks.size();
     g_allocations = 0;
     g_counting = true;
     bool ok = true;
     // a tearing cloth runs on until springs have broken while counting
     for (int i = 0; i < 2 || (breakable && sim.state.breaks.size() == breaksBefore && i < 500); ++i)
-        ok = core::step(*sim.model, sim.state) && ok;
+        ok = sim.step() && ok;
     g_counting = false;
     QVERIFY(ok);
     QCOMPARE(g_allocations.load(), 0L);

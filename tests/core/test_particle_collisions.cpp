@@ -55,7 +55,7 @@ void TestParticleCollisions::momentumAndEnergy()
     const Eigen::Vector3d p0 = core::momentum(*sim.model, sim.state);
     const double e0 = core::energies(*sim.model, sim.state).kinetic;
 
-    core::collideParticles(*sim.model, sim.state);
+    core::collideParticles(*sim.model, sim.state, sim.work);
 
     // momentum is conserved
     QVERIFY((core::momentum(*sim.model, sim.state) - p0).norm() < 1e-12);
@@ -77,7 +77,7 @@ void TestParticleCollisions::positionsCorrectedByMass()
     // overlap 0.1 m; the lighter (1 kg) moves 4/5 of it, the heavier (4 kg) 1/5
     test::Sim sim = pair(1.0, 4.0, 1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
     const Eigen::Vector3d k = Eigen::Vector3d(2, -1, 2) / 3.0;
-    core::collideParticles(*sim.model, sim.state);
+    core::collideParticles(*sim.model, sim.state, sim.work);
     QVERIFY((sim.state.position.col(0) - (0.9 + 0.08) * k).norm() < 1e-14);
     QVERIFY((sim.state.position.col(1) - (-0.02) * k).norm() < 1e-14);
     QVERIFY(std::abs((sim.state.position.col(0) - sim.state.position.col(1)).norm() - 1.0) < 1e-14);
@@ -87,7 +87,7 @@ void TestParticleCollisions::separatingPairKeepsVelocities()
 {
     const Eigen::Vector3d k = Eigen::Vector3d(2, -1, 2) / 3.0;
     test::Sim sim = pair(1.0, 1.0, 1.0, k, -k);
-    core::collideParticles(*sim.model, sim.state);
+    core::collideParticles(*sim.model, sim.state, sim.work);
     QCOMPARE(Eigen::Vector3d(sim.state.velocity.col(0)), k);
     QCOMPARE(Eigen::Vector3d(sim.state.velocity.col(1)), Eigen::Vector3d(-k));
 }
@@ -100,7 +100,7 @@ void TestParticleCollisions::pinnedParticleIsImmovable()
     scene.settings.restitution = 1.0;
     scene.particles = {test::particle({0.8, 0, 0}, {-3, 0, 0}, 1.0, 0.5), test::particle({0, 0, 0}, {0, 0, 0}, 100.0, 0.5, true)};
     test::Sim sim = test::compile(scene);
-    core::collideParticles(*sim.model, sim.state);
+    core::collideParticles(*sim.model, sim.state, sim.work);
     QCOMPARE(Eigen::Vector3d(sim.state.position.col(1)), Eigen::Vector3d(0, 0, 0));
     QCOMPARE(Eigen::Vector3d(sim.state.velocity.col(1)), Eigen::Vector3d(0, 0, 0));
     QCOMPARE(Eigen::Vector3d(sim.state.position.col(0)), Eigen::Vector3d(1, 0, 0));
@@ -113,7 +113,7 @@ void TestParticleCollisions::coincidentCentresGiveNoNaN()
     scene.settings.particleCollisions = true;
     scene.particles = {test::particle({1, 1, 1}, {0, 0, 0}), test::particle({1, 1, 1}, {0, 0, 0})};
     test::Sim sim = test::compile(scene);
-    core::collideParticles(*sim.model, sim.state);
+    core::collideParticles(*sim.model, sim.state, sim.work);
     QVERIFY(sim.state.position.allFinite());
     QVERIFY(sim.state.velocity.allFinite());
     QVERIFY(std::abs((sim.state.position.col(0) - sim.state.position.col(1)).norm() - 0.2) < 1e-15);
@@ -128,10 +128,10 @@ void TestParticleCollisions::newContactsWaitForTheNextPass()
     scene.particles = {test::particle({0, 0, 0}, {0, 0, 0}, 1.0, 0.5), test::particle({0.9, 0, 0}, {0, 0, 0}, 1.0, 0.5),
                        test::particle({1.92, 0, 0}, {0, 0, 0}, 1.0, 0.5)};
     test::Sim sim = test::compile(scene);
-    core::collideParticles(*sim.model, sim.state);
+    core::collideParticles(*sim.model, sim.state, sim.work);
     QCOMPARE(sim.state.position(0, 2), 1.92);
     QVERIFY(sim.state.position(0, 2) - sim.state.position(0, 1) < 1.0 - 0.02);  // now they overlap
-    core::collideParticles(*sim.model, sim.state);
+    core::collideParticles(*sim.model, sim.state, sim.work);
     QVERIFY(sim.state.position(0, 2) - sim.state.position(0, 1) > 1.0 - 1e-12);
 }
 

@@ -47,7 +47,7 @@ void TestPlaneCollisions::pushedOutAndReflected()
     QFETCH(double, expectedVy);
     // centre 0.2 m above the floor, radius 0.5: pushed up by 0.3 m; tangential velocity kept
     test::Sim sim = floorScene({3, 1.2, 0}, {2, -4, 0}, restitution);
-    core::collidePlanes(*sim.model, sim.state);
+    core::collidePlanes(*sim.model, sim.state, sim.work);
     QCOMPARE(Eigen::Vector3d(sim.state.position.col(0)), Eigen::Vector3d(3, 1.5, 0));
     QCOMPARE(Eigen::Vector3d(sim.state.velocity.col(0)), Eigen::Vector3d(2, expectedVy, 0));
 }
@@ -55,7 +55,7 @@ void TestPlaneCollisions::pushedOutAndReflected()
 void TestPlaneCollisions::separatingParticleKeepsItsVelocity()
 {
     test::Sim sim = floorScene({0, 1.2, 0}, {0, 3, 0}, 1.0);
-    core::collidePlanes(*sim.model, sim.state);
+    core::collidePlanes(*sim.model, sim.state, sim.work);
     QCOMPARE(sim.state.position(1, 0), 1.5);
     QCOMPARE(Eigen::Vector3d(sim.state.velocity.col(0)), Eigen::Vector3d(0, 3, 0));
 }
@@ -69,7 +69,7 @@ void TestPlaneCollisions::tiltedPlane()
     scene.particles = {test::particle({0, 0, 0}, {-1, -1, 0}, 1.0, 0.5)};
     scene.planes = {core::PlaneDesc{Eigen::Vector3d(1, 1, 0).normalized(), 0.0}};
     test::Sim sim = test::compile(scene);
-    core::collidePlanes(*sim.model, sim.state);
+    core::collidePlanes(*sim.model, sim.state, sim.work);
     const Eigen::Vector3d n = Eigen::Vector3d(1, 1, 0).normalized();
     QVERIFY(std::abs(n.dot(sim.state.position.col(0)) - 0.5) < 1e-15);
     QVERIFY((sim.state.velocity.col(0) - Eigen::Vector3d(1, 1, 0)).norm() < 1e-14);
@@ -88,7 +88,7 @@ void TestPlaneCollisions::ballComesToRestWithoutSinking()
     test::Sim sim = test::compile(scene);
     double lowest = 2.0;
     for (int i = 0; i < 2000; ++i) {  // 10 s
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
         lowest = std::min(lowest, sim.state.position(1, 0));
     }
     // never below the floor (a rounding error at most), and at rest on it at the end
@@ -105,7 +105,7 @@ void TestPlaneCollisions::pinnedParticleIgnoresPlanes()
     scene.planes = {core::PlaneDesc{{0, 1, 0}, 0.0}};
     test::Sim sim = test::compile(scene);
     QVERIFY(!sim.model->plan.planeCollisions);  // nothing free: the pass is not even planned
-    core::collidePlanes(*sim.model, sim.state);
+    core::collidePlanes(*sim.model, sim.state, sim.work);
     QCOMPARE(sim.state.position(1, 0), -3.0);
 }
 

@@ -43,7 +43,7 @@ void TestReference::bounceTimesAndHeights()
     double apex = 0.0;
     double previousVy = 0.0;
     while (impacts.size() < 2) {
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
         const double vy = sim.state.velocity(1, 0);
         if (previousVy < 0.0 && vy > 0.0)
             impacts.push_back(sim.state.time);
@@ -65,7 +65,7 @@ void TestReference::headOnVelocities()
         scene.settings.timeStep = 1e-3;
         test::Sim sim = test::compile(scene);
         for (int i = 0; i < 500; ++i)
-            QVERIFY(core::step(*sim.model, sim.state));
+            QVERIFY(sim.step());
         QVERIFY(std::abs(sim.state.velocity(0, 0) - core::headOnSpeedAfter(o, 0)) < 1e-12);
         QVERIFY(std::abs(sim.state.velocity(0, 1) - core::headOnSpeedAfter(o, 1)) < 1e-12);
     }

@@ -18,7 +18,7 @@ void TestSnapshot::packsTheState()
     scene.particles = {test::particle({0, 0, 0}, {0, 0, 0}, 1, 0.25, true), test::particle({1.5, 2, 3}, {1, 0, 0}, 2, 0.5)};
     scene.springs = {{0, 1, 10, 0, 2}};  // length √15.25 ≈ 3.905
     test::Sim sim = test::compile(scene);
-    QVERIFY(core::step(*sim.model, sim.state));
+    QVERIFY(sim.step());
     auto snap = core::makeSnapshot(*sim.model, sim.state);
     QCOMPARE(snap->step, std::uint64_t(1));
     QCOMPARE(snap->particleCount(), 2);

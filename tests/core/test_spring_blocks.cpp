@@ -28,7 +28,7 @@ private slots:
     void blocksEqualTheSeparatePassesToTheBit_data();
     void blocksEqualTheSeparatePassesToTheBit();
     void badValueStopsTheStep();
-    void profileCountsEachForceStage();
+    void profileTimesTheFusedSubStep();
 };
 
 namespace {
@@ -92,19 +92,19 @@ core::SceneDesc randomRuns(const Options &options, std::uint32_t seed)
 }
 
 // the separate passes and the Euler update with Eigen columns, the way the fused step must match
-void separateSubStep(const core::Model &model, core::State &state, double h, bool symplectic)
+void separateSubStep(const core::Model &model, core::State &state, core::Workspace &work, double h, bool symplectic)
 {
     if (model.plan.gravity)
-        core::startWithGravity(model, state);
+        core::startWithGravity(model, state, work);
     else
-        state.force.setZero();
-    core::addDrag(model, state);
-    core::addSpringsReference(model, state);
-    core::addApplied(model, state);
+        work.force.setZero();
+    core::addDrag(model, state, work);
+    core::addSpringsReference(model, state, work);
+    core::addApplied(model, state, work);
     for (int p : model.freeParticles) {
         const double kick = h * model.invMass[p];
         const Eigen::Vector3d old = state.velocity.col(p);
-        const Eigen::Vector3d next = old + kick * state.force.col(p);
+        const Eigen::Vector3d next = old + kick * work.force.col(p);
         state.position.col(p) += h * (symplectic ? next : old);
         state.velocity.col(p) = next;
     }
@@ -330,7 +330,7 @@ void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit()
     prepare(separate);
     const Eigen::Matrix3Xd start = separate.state.position;
     for (int sub = 0; sub < 3; ++sub)
-        separateSubStep(*separate.model, separate.state, h, symplectic);
+        separateSubStep(*separate.model, separate.state, separate.work, h, symplectic);
     QVERIFY(separate.state.position.cwiseNotEqual(start).any());
 
     // 1 and 2 threads, then 3 and 5 shares run one after another in both orders: each thread's
@@ -350,9 +350,8 @@ void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit()
         test::Sim fused = test::compile(scene);
         prepare(fused);
         for (int sub = 0; sub < 3; ++sub) {
-            fused.state.freeParticlesChecked = false;
-            core::integrate(*fused.model, fused.state, h);
-            QVERIFY(fused.state.freeParticlesChecked);  // it checked what it wrote, and all was well
+            // it checked what it wrote, and all was well
+            QVERIFY(core::stepSpringBlocks(*fused.model, fused.state, fused.work, h));
         }
         core::sequentialShares() = core::SequentialShares{};
         const Eigen::Index positions = (fused.state.position.array() != separate.state.position.array()).count();
@@ -377,16 +376,17 @@ void TestSpringBlocks::badValueStopsTheStep()
     for (int culprit : {0, 9001, 19999}) {
         test::Sim sim = test::compile(randomRuns(options, 7u));
         QVERIFY(sim.model->usesSpringBlocks());
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
         sim.state.velocity(1, culprit) = 2.0 * core::kBlowupBound;
-        QVERIFY(!core::step(*sim.model, sim.state));
-        QVERIFY(sim.state.blowup.has_value());
-        QCOMPARE(sim.state.blowup->particle, culprit);
-        QCOMPARE(sim.state.blowup->step, std::uint64_t(2));
+        QVERIFY(!sim.step());
+        QVERIFY(sim.work.blowup.has_value());
+        QCOMPARE(sim.work.blowup->particle, culprit);
+        QCOMPARE(sim.work.blowup->step, std::uint64_t(2));
     }
 }
 
-void TestSpringBlocks::profileCountsEachForceStage()
+// the fused path is one stage of the profile: its force passes and update are not timed apart
+void TestSpringBlocks::profileTimesTheFusedSubStep()
 {
     Options options;
     options.particles = 9000;
@@ -395,19 +395,20 @@ void TestSpringBlocks::profileCountsEachForceStage()
     scene.settings.substeps = 4;
     test::Sim sim = test::compile(scene);
     QVERIFY(sim.model->usesSpringBlocks());
-    QVERIFY(core::step(*sim.model, sim.state));
-    QVERIFY(core::step(*sim.model, sim.state));
-    const core::Profile &profile = sim.state.profile;
-    QCOMPARE(profile[core::Stage::Gravity].calls, std::uint64_t(8));
-    QCOMPARE(profile[core::Stage::Springs].calls, std::uint64_t(8));
-    QCOMPARE(profile[core::Stage::Integrate].calls, std::uint64_t(8));
-    QVERIFY(profile[core::Stage::Springs].seconds > 0.0);
-    QVERIFY(profile[core::Stage::Integrate].seconds > 0.0);
-    // no drag and nothing applied: neither called nor timed
-    QCOMPARE(profile[core::Stage::Drag].calls, std::uint64_t(0));
-    QCOMPARE(profile[core::Stage::Drag].seconds, 0.0);
-    QCOMPARE(profile[core::Stage::Applied].calls, std::uint64_t(0));
-    QCOMPARE(sim.state.forceEvaluations, std::uint64_t(8));
+    QVERIFY(sim.step());
+    QVERIFY(sim.step());
+    const core::Profile &profile = sim.work.profile;
+    QCOMPARE(sim.model->plan.subStep, core::SubStepPath::FusedLattice);
+    QCOMPARE(profile[core::Stage::FusedSubStep].calls, std::uint64_t(8));
+    QVERIFY(profile[core::Stage::FusedSubStep].seconds > 0.0);
+    QCOMPARE(profile[core::Stage::Check].calls, std::uint64_t(8));
+    // the stages it stands for: neither called nor timed
+    for (const core::Stage stage : {core::Stage::Gravity, core::Stage::Drag, core::Stage::Springs, core::Stage::Applied,
+                                    core::Stage::Integrate}) {
+        QCOMPARE(profile[stage].calls, std::uint64_t(0));
+        QCOMPARE(profile[stage].seconds, 0.0);
+    }
+    QCOMPARE(sim.work.profile.forceEvaluations, std::uint64_t(8));
 }
 
 QTEST_APPLESS_MAIN(TestSpringBlocks)

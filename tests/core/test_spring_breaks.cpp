@@ -51,7 +51,7 @@ void TestSpringBreaks::breaksTheStepItsStrainIsPassed()
     int brokeAt = 0;
     for (int step = 1; step <= 200 && brokeAt == 0; ++step) {
         const bool wasBroken = sim.state.isBroken(0);
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
         const double s = strain(*sim.model, sim.state, 0);
         // broken exactly when the strain at the end of the step is past 0.3, and never before
         QCOMPARE(sim.state.isBroken(0), wasBroken || s > 0.3);
@@ -66,7 +66,7 @@ void TestSpringBreaks::breaksTheStepItsStrainIsPassed()
     // from then on the particle coasts: its speed stays what it was at the break
     const double speed = sim.state.velocity(0, 1);
     for (int step = 0; step < 20; ++step)
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
     QCOMPARE(sim.state.velocity(0, 1), speed);
     QCOMPARE(sim.state.breaks.size(), std::size_t(1));
 }
@@ -77,7 +77,7 @@ void TestSpringBreaks::compressionNeverBreaks()
     test::Sim sim = test::compile(separatingPair(-3.0, 0.3));
     double least = 0.0;
     for (int step = 0; step < 300; ++step) {
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
         least = std::min(least, strain(*sim.model, sim.state, 0));
         if (strain(*sim.model, sim.state, 0) > 0.3)
             break;  // out past the limit on the rebound: that may break it, by design
@@ -104,19 +104,19 @@ void TestSpringBreaks::brokenSpringPullsNothing()
     scene.settings.integrator = static_cast<core::Integrator>(integrator);
     test::Sim sim = test::compile(scene);
     QVERIFY(core::energies(*sim.model, sim.state).spring > 1.0);
-    QVERIFY(core::step(*sim.model, sim.state));
+    QVERIFY(sim.step());
     // the first step still felt the pull; it broke at its end
     QVERIFY(sim.state.isBroken(0));
     QVERIFY(sim.state.velocity(0, 1) < 0.0);
 
     QCOMPARE(core::energies(*sim.model, sim.state).spring, 0.0);
-    sim.state.force.setZero();
-    core::addSprings(*sim.model, sim.state);
-    QCOMPARE(sim.state.force.norm(), 0.0);
+    sim.work.force.setZero();
+    core::addSprings(*sim.model, sim.state, sim.work);
+    QCOMPARE(sim.work.force.norm(), 0.0);
     // every scheme moves the freed particle on in a straight line at its speed
     const Eigen::Vector3d velocity = sim.state.velocity.col(1);
     const Eigen::Vector3d position = sim.state.position.col(1);
-    QVERIFY(core::step(*sim.model, sim.state));
+    QVERIFY(sim.step());
     QVERIFY((sim.state.velocity.col(1) - velocity).norm() < 1e-12);
     QVERIFY((sim.state.position.col(1) - (position + sim.model->timeStep * velocity)).norm() < 1e-12);
 }
@@ -145,12 +145,13 @@ void TestSpringBreaks::gatherEqualsThePlainLoopWithBrokenSprings()
     QVERIFY(broken > 100);
 
     core::State reference = sim.state;
-    sim.state.force.setZero();
-    reference.force.setZero();
-    core::addSprings(*sim.model, sim.state);
-    core::addSpringsReference(*sim.model, reference);
-    QVERIFY(sim.state.force.norm() > 1.0);
-    QCOMPARE(sim.state.force, reference.force);
+    core::Workspace referenceWork = sim.work;
+    sim.work.force.setZero();
+    referenceWork.force.setZero();
+    core::addSprings(*sim.model, sim.state, sim.work);
+    core::addSpringsReference(*sim.model, reference, referenceWork);
+    QVERIFY(sim.work.force.norm() > 1.0);
+    QCOMPARE(sim.work.force, referenceWork.force);
 }
 
 void TestSpringBreaks::passRunsOnlyWhenSomethingCanBreak()
@@ -160,10 +161,10 @@ void TestSpringBreaks::passRunsOnlyWhenSomethingCanBreak()
         QCOMPARE(sim.model->plan.springBreaks, breakStrain > 0.0);
         QCOMPARE(sim.state.springBroken.empty(), breakStrain == 0.0);
         for (int step = 0; step < 10; ++step)
-            QVERIFY(core::step(*sim.model, sim.state));
-        QCOMPARE(sim.state.profile[core::Stage::Breaks].calls, breakStrain > 0.0 ? std::uint64_t(10) : 0);
+            QVERIFY(sim.step());
+        QCOMPARE(sim.work.profile[core::Stage::Breaks].calls, breakStrain > 0.0 ? std::uint64_t(10) : 0);
         if (breakStrain == 0.0)
-            QCOMPARE(sim.state.profile[core::Stage::Breaks].seconds, 0.0);
+            QCOMPARE(sim.work.profile[core::Stage::Breaks].seconds, 0.0);
     }
 }
 
@@ -172,7 +173,7 @@ void TestSpringBreaks::parameterChangeKeepsTheBreaks()
     core::SceneDesc scene = separatingPair(5.0, 0.3);
     test::Sim sim = test::compile(scene);
     for (int step = 0; step < 200 && !sim.state.isBroken(0); ++step)
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
     QVERIFY(sim.state.isBroken(0));
 
     // a new stiffness: the same springs, so the break stands

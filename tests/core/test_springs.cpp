@@ -59,11 +59,11 @@ void TestSprings::hookeAndDamperByHand()
     scene.springs = {core::SpringDesc{0, 1, stiffness, damping, restLength}};
     test::Sim sim = test::compile(scene);
 
-    sim.state.force.setZero();
-    core::addSprings(*sim.model, sim.state);
+    sim.work.force.setZero();
+    core::addSprings(*sim.model, sim.state, sim.work);
     const Eigen::Vector3d expected = expectedForce * u;
-    QVERIFY2((sim.state.force.col(0) - expected).norm() < 1e-12,
-             qPrintable(QString("force on a %1 %2 %3").arg(sim.state.force(0, 0)).arg(sim.state.force(1, 0)).arg(sim.state.force(2, 0))));
+    QVERIFY2((sim.work.force.col(0) - expected).norm() < 1e-12,
+             qPrintable(QString("force on a %1 %2 %3").arg(sim.work.force(0, 0)).arg(sim.work.force(1, 0)).arg(sim.work.force(2, 0))));
 }
 
 void TestSprings::equalAndOpposite()
@@ -74,11 +74,11 @@ void TestSprings::equalAndOpposite()
                        test::particle({0.3, 1, 0.4}, {0, 0, 0})};
     scene.springs = {{0, 1, 50, 0.7, 0.8}, {1, 2, 20, 0.1, 1.3}, {2, 0, 5, 2.0, 0.2}};
     test::Sim sim = test::compile(scene);
-    sim.state.force.setZero();
-    core::addSprings(*sim.model, sim.state);
-    const Eigen::Vector3d total = sim.state.force.rowwise().sum();
+    sim.work.force.setZero();
+    core::addSprings(*sim.model, sim.state, sim.work);
+    const Eigen::Vector3d total = sim.work.force.rowwise().sum();
     QVERIFY(total.norm() < 1e-12);
-    QVERIFY(sim.state.force.col(0).norm() > 1.0);  // and the forces are not trivially zero
+    QVERIFY(sim.work.force.col(0).norm() > 1.0);  // and the forces are not trivially zero
 }
 
 void TestSprings::zeroLengthGivesNoNaN()
@@ -88,11 +88,11 @@ void TestSprings::zeroLengthGivesNoNaN()
     scene.particles = {test::particle({1, 1, 1}), test::particle({1, 1, 1})};
     scene.springs = {{0, 1, 10, 1, 0.5}};
     test::Sim sim = test::compile(scene);
-    sim.state.force.setZero();
-    core::addSprings(*sim.model, sim.state);
-    QVERIFY(sim.state.force.allFinite());
-    QCOMPARE(sim.state.force.col(0).norm(), 5.0);
-    QCOMPARE(Eigen::Vector3d(sim.state.force.col(0)), Eigen::Vector3d(-sim.state.force.col(1)));
+    sim.work.force.setZero();
+    core::addSprings(*sim.model, sim.state, sim.work);
+    QVERIFY(sim.work.force.allFinite());
+    QCOMPARE(sim.work.force.col(0).norm(), 5.0);
+    QCOMPARE(Eigen::Vector3d(sim.work.force.col(0)), Eigen::Vector3d(-sim.work.force.col(1)));
 }
 
 void TestSprings::pinnedEndIsStillPulled()
@@ -102,10 +102,10 @@ void TestSprings::pinnedEndIsStillPulled()
     scene.particles = {test::particle({0, 0, 0}, {0, 0, 0}, 1.0, 0.1, true), test::particle({2, 0, 0})};
     scene.springs = {{0, 1, 10, 0, 1}};
     test::Sim sim = test::compile(scene);
-    sim.state.force.setZero();
-    core::addSprings(*sim.model, sim.state);
-    QCOMPARE(Eigen::Vector3d(sim.state.force.col(1)), Eigen::Vector3d(-10, 0, 0));
-    QCOMPARE(Eigen::Vector3d(sim.state.force.col(0)), Eigen::Vector3d(10, 0, 0));
+    sim.work.force.setZero();
+    core::addSprings(*sim.model, sim.state, sim.work);
+    QCOMPARE(Eigen::Vector3d(sim.work.force.col(1)), Eigen::Vector3d(-10, 0, 0));
+    QCOMPARE(Eigen::Vector3d(sim.work.force.col(0)), Eigen::Vector3d(10, 0, 0));
 }
 
 namespace {
@@ -141,14 +141,14 @@ void TestSprings::gatherEqualsThePlainLoopToTheBit()
         for (int k = 0; k < sim.model->springCount(); k += 37)
             sim.state.position.col(sim.model->springB[std::size_t(k)]) =
                 sim.state.position.col(sim.model->springA[std::size_t(k)]);
-        sim.state.force.setRandom();  // on top of what is there, as in a step
-        const Eigen::Matrix3Xd start = sim.state.force;
-        core::addSpringsGathered(*sim.model, sim.state);
-        const Eigen::Matrix3Xd gathered = sim.state.force;
-        sim.state.force = start;
-        core::addSpringsReference(*sim.model, sim.state);
+        sim.work.force.setRandom();  // on top of what is there, as in a step
+        const Eigen::Matrix3Xd start = sim.work.force;
+        core::addSpringsGathered(*sim.model, sim.state, sim.work);
+        const Eigen::Matrix3Xd gathered = sim.work.force;
+        sim.work.force = start;
+        core::addSpringsReference(*sim.model, sim.state, sim.work);
         QVERIFY(gathered.cwiseNotEqual(start).any());
-        QVERIFY2(gathered.cwiseEqual(sim.state.force).all(), qPrintable(QString("n = %1").arg(n)));
+        QVERIFY2(gathered.cwiseEqual(sim.work.force).all(), qPrintable(QString("n = %1").arg(n)));
     }
 }
 
@@ -215,13 +215,13 @@ void TestSprings::runsEqualThePlainLoopToTheBit()
         core::setThreadCount(threads);
         test::Sim sim = test::compile(scene);
         test::coincideAndBreak(sim, breakable);
-        sim.state.force = start;
-        core::addSpringRuns(*sim.model, sim.state);
-        const Eigen::Matrix3Xd byRuns = sim.state.force;
+        sim.work.force = start;
+        core::addSpringRuns(*sim.model, sim.state, sim.work);
+        const Eigen::Matrix3Xd byRuns = sim.work.force;
         if (threads == 1) {
-            sim.state.force = start;
-            core::addSpringsReference(*sim.model, sim.state);
-            reference = sim.state.force;
+            sim.work.force = start;
+            core::addSpringsReference(*sim.model, sim.state, sim.work);
+            reference = sim.work.force;
             QVERIFY(reference.cwiseNotEqual(start).any());
         }
         const Eigen::Index differing = (byRuns.array() != reference.array()).count();
@@ -240,7 +240,7 @@ void TestSprings::sameBitsOnOneAndTwoThreads()
         core::setThreadCount(threads);
         test::Sim sim = test::compile(scene);
         for (int i = 0; i < 20; ++i)
-            core::step(*sim.model, sim.state);
+            sim.step();
         return sim.state;
     };
     const core::State one = run(1);

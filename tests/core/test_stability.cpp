@@ -53,7 +53,7 @@ bool stableAt(core::SceneDesc scene, double h, int steps)
     test::Sim sim = test::compile(scene);
     const double start = core::energies(*sim.model, sim.state).total();
     for (int i = 0; i < steps; ++i)
-        if (!core::step(*sim.model, sim.state) || core::energies(*sim.model, sim.state).total() > 10.0 * start)
+        if (!sim.step() || core::energies(*sim.model, sim.state).total() > 10.0 * start)
             return false;
     return true;
 }
@@ -141,14 +141,14 @@ void TestStability::blowupMessage()
     scene.settings.timeStep = 0.02;
     test::Sim sim = test::compile(scene);
     const core::State start = sim.state;
-    while (core::step(*sim.model, sim.state)) {
+    while (sim.step()) {
     }
-    QVERIFY(sim.state.blowup.has_value());
+    QVERIFY(sim.work.blowup.has_value());
     const std::string message =
-        core::explainBlowup(*sim.model, *sim.state.blowup, core::stabilityLimit(*sim.model, start));
+        core::explainBlowup(*sim.model, *sim.work.blowup, core::stabilityLimit(*sim.model, start));
     const QString text = QString::fromStdString(message);
     QVERIFY2(text.startsWith("Particle 1's velocity became"), message.c_str());
-    QVERIFY2(text.contains(QString("(step %1)").arg(sim.state.blowup->step)), message.c_str());
+    QVERIFY2(text.contains(QString("(step %1)").arg(sim.work.blowup->step)), message.c_str());
     QVERIFY2(text.contains("The time step 0.02 s is 3.2× the stability limit 0.0063 s"), message.c_str());
     QVERIFY2(text.contains("stiffness 1e+05 N/m with symplectic-euler"), message.c_str());
     QVERIFY2(text.contains("use ≥ 4 substeps or the implicit-euler integrator"), message.c_str());
@@ -171,19 +171,19 @@ void TestStability::adaptiveStopsOnAHopelesslyStiffScene()
     scene.particles = {p};
     test::Sim sim = test::compile(scene);
     const core::State start = sim.state;
-    QVERIFY(!core::step(*sim.model, sim.state));
-    QVERIFY(sim.state.blowup.has_value());
-    QCOMPARE(sim.state.blowup->quantity, core::Blowup::Quantity::StepSize);
-    QCOMPARE(sim.state.blowup->step, std::uint64_t(1));
-    QVERIFY(sim.state.blowup->value > 0.0 && sim.state.blowup->value < 1e-9);
+    QVERIFY(!sim.step());
+    QVERIFY(sim.work.blowup.has_value());
+    QCOMPARE(sim.work.blowup->quantity, core::Blowup::Quantity::StepSize);
+    QCOMPARE(sim.work.blowup->step, std::uint64_t(1));
+    QVERIFY(sim.work.blowup->value > 0.0 && sim.work.blowup->value < 1e-9);
     const std::string message =
-        core::explainBlowup(*sim.model, *sim.state.blowup, core::stabilityLimit(*sim.model, start));
+        core::explainBlowup(*sim.model, *sim.work.blowup, core::stabilityLimit(*sim.model, start));
     const QString text = QString::fromStdString(message);
     QVERIFY2(text.startsWith("adaptive-rk45 could not meet its tolerance 1e-06 within a sub-step at t = 0 s (step 1)"),
              message.c_str());
     QVERIFY2(text.contains("use the implicit-euler integrator"), message.c_str());
     // the step refuses to go on, as after any blow-up
-    QVERIFY(!core::step(*sim.model, sim.state));
+    QVERIFY(!sim.step());
 }
 
 void TestStability::autoSubstepsKeepTheChainStable()
@@ -264,7 +264,7 @@ void TestStability::pairSpeedLimit()
     scene.settings.substeps = excess->substeps;
     test::Sim run = test::compile(scene);
     for (int i = 0; i < 20; ++i)
-        QVERIFY(core::step(*run.model, run.state));
+        QVERIFY(run.step());
     QVERIFY(run.state.position(0, 0) < run.state.position(0, 1));
 }
 

@@ -23,9 +23,9 @@ private slots:
 
 namespace {
 
-std::uint64_t calls(const core::State &state, core::Stage stage)
+std::uint64_t calls(const core::Workspace &work, core::Stage stage)
 {
-    return state.profile[stage].calls;
+    return work.profile[stage].calls;
 }
 
 }  // namespace
@@ -67,13 +67,13 @@ void TestStep::skippedPassesNeverRun()
 
     test::Sim sim = test::compile(scene);
     for (int i = 0; i < 10; ++i)
-        QVERIFY(core::step(*sim.model, sim.state));
+        QVERIFY(sim.step());
 
     // a planned pass runs once per sub-step; an unplanned one never, and costs no time
     const auto expect = [&](core::Stage stage, bool planned) {
-        QCOMPARE(calls(sim.state, stage), planned ? std::uint64_t(30) : std::uint64_t(0));
+        QCOMPARE(calls(sim.work, stage), planned ? std::uint64_t(30) : std::uint64_t(0));
         if (!planned)
-            QCOMPARE(sim.state.profile[stage].seconds, 0.0);
+            QCOMPARE(sim.work.profile[stage].seconds, 0.0);
     };
     expect(core::Stage::Gravity, gravity);
     expect(core::Stage::Drag, drag);
@@ -96,9 +96,9 @@ void TestStep::substepsEqualSmallerSteps()
     scene.settings.substeps = 1;
     test::Sim fine = test::compile(scene);
     for (int i = 0; i < 50; ++i) {
-        QVERIFY(core::step(*sub.model, sub.state));
+        QVERIFY(sub.step());
         for (int k = 0; k < 4; ++k)
-            QVERIFY(core::step(*fine.model, fine.state));
+            QVERIFY(fine.step());
     }
     QVERIFY(sub.state.position == fine.state.position);
     QVERIFY(sub.state.velocity == fine.state.velocity);
@@ -114,10 +114,10 @@ void TestStep::blowupIsCaughtAndNamed()
     scene.springs = {{0, 1, 1e6, 0, 1}};
     test::Sim sim = test::compile(scene);
     int steps = 0;
-    while (core::step(*sim.model, sim.state))
+    while (sim.step())
         QVERIFY(++steps < 1000);
-    QVERIFY(sim.state.blowup.has_value());
-    const core::Blowup &b = *sim.state.blowup;
+    QVERIFY(sim.work.blowup.has_value());
+    const core::Blowup &b = *sim.work.blowup;
     QCOMPARE(b.particle, 1);
     QCOMPARE(b.quantity, core::Blowup::Quantity::Velocity);
     QCOMPARE(b.step, std::uint64_t(steps + 1));
@@ -130,9 +130,9 @@ void TestStep::blownUpStateIsNotSteppedAgain()
     core::SceneDesc scene = test::quietScene();
     scene.particles = {test::particle({0, 0, 0}, {2e10, 0, 0})};
     test::Sim sim = test::compile(scene);
-    QVERIFY(!core::step(*sim.model, sim.state));
+    QVERIFY(!sim.step());
     const Eigen::Matrix3Xd frozen = sim.state.position;
-    QVERIFY(!core::step(*sim.model, sim.state));
+    QVERIFY(!sim.step());
     QVERIFY(sim.state.position == frozen);
     QCOMPARE(sim.state.step, std::uint64_t(0));
 }
@@ -161,13 +161,13 @@ void TestStep::checkSeesEveryParticle()
     for (int i = 0; i < 9; ++i)
         scene.particles.push_back(test::particle({double(i), 0, 0}, {0, 0, 0}, 1.0, 0.1, i == 0 || i == 3 || i == 7));
     test::Sim sim = test::compile(scene);
-    QVERIFY(core::step(*sim.model, sim.state));
+    QVERIFY(sim.step());
     // as an edit could leave it, or as a force could make it: past the bound
     sim.state.position(1, particle) = 2 * core::kBlowupBound;
-    QVERIFY(!core::step(*sim.model, sim.state));
-    QVERIFY(sim.state.blowup.has_value());
-    QCOMPARE(sim.state.blowup->particle, particle);
-    QCOMPARE(sim.state.blowup->quantity, core::Blowup::Quantity::Position);
+    QVERIFY(!sim.step());
+    QVERIFY(sim.work.blowup.has_value());
+    QCOMPARE(sim.work.blowup->particle, particle);
+    QCOMPARE(sim.work.blowup->quantity, core::Blowup::Quantity::Position);
 }
 
 void TestStep::appliedForcePushes()
@@ -178,14 +178,14 @@ void TestStep::appliedForcePushes()
     test::Sim sim = test::compile(scene);
     core::setAppliedForce(sim.state, 0, {4, 0, 0});
     QCOMPARE(sim.state.appliedCount, 1);
-    QVERIFY(core::step(*sim.model, sim.state));
+    QVERIFY(sim.step());
     QCOMPARE(sim.state.velocity(0, 0), 1.0);  // a = F/m = 2, v = a h
     QCOMPARE(sim.state.velocity(0, 1), 0.0);
     core::setAppliedForce(sim.state, 0, Eigen::Vector3d::Zero());
     QCOMPARE(sim.state.appliedCount, 0);
-    QVERIFY(core::step(*sim.model, sim.state));
+    QVERIFY(sim.step());
     QCOMPARE(sim.state.velocity(0, 0), 1.0);
-    QCOMPARE(sim.state.profile[core::Stage::Applied].calls, std::uint64_t(1));
+    QCOMPARE(sim.work.profile[core::Stage::Applied].calls, std::uint64_t(1));
 }
 
 void TestStep::sameSceneSameBits()
@@ -198,8 +198,8 @@ void TestStep::sameSceneSameBits()
     test::Sim a = test::compile(scene);
     test::Sim b = test::compile(scene);
     for (int i = 0; i < 300; ++i) {
-        QVERIFY(core::step(*a.model, a.state));
-        QVERIFY(core::step(*b.model, b.state));
+        QVERIFY(a.step());
+        QVERIFY(b.step());
     }
     QVERIFY(std::memcmp(a.state.position.data(), b.state.position.data(), sizeof(double) * 3 * 64) == 0);
     QVERIFY(std::memcmp(a.state.velocity.data(), b.state.velocity.data(), sizeof(double) * 3 * 64) == 0);

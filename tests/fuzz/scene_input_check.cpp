@@ -121,9 +121,10 @@ QString checkSceneInput(const QByteArray &bytes)
         return {};  // compiling runs the stability analysis: up to 300 power iterations
     const auto model = core::compileModel(scene);
     core::State state = core::makeState(*model, scene);
+    core::Workspace work;
     if (steppingWork(*model) > kWorkBudget)
         return {};
-    for (int i = 0; i < kSteps && core::step(*model, state); ++i) {
+    for (int i = 0; i < kSteps && core::step(*model, state, work); ++i) {
     }
     return {};
 }

@@ -396,12 +396,13 @@ void TestExport::traceHasARowPerParticleAndExportedStep()
     const core::SceneDesc scene = movingScene();
     const auto model = core::compileModel(scene);
     core::State state = core::makeState(*model, scene);
+    core::Workspace work;
     for (int row = 0; row < rows.size(); ++row) {
         const QList<QByteArray> &fields = rows[row];
         QCOMPARE(fields.size(), 9);
         const std::uint64_t step = std::uint64_t(4 * (row / 2));
         while (state.step < step)
-            QVERIFY(core::step(*model, state));
+            QVERIFY(core::step(*model, state, work));
         const int particle = row % 2;
         QCOMPARE(test::parseNumber<std::uint64_t>(fields[0]), step);
         QCOMPARE(test::parseNumber<double>(fields[1]), state.time);

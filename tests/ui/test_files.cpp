@@ -756,11 +756,11 @@ void TestFiles::useCurrentStateAsInitialThenResetAndUndo()
     const core::SceneDesc &captured = document().scene();
     const auto frame = settledFrame(controller());
     QVERIFY(frame->capturedState);
-    QCOMPARE(frame->capturedState->step, paused->snapshot->step);
+    QCOMPARE(frame->capturedState->state.step, paused->snapshot->step);
     for (std::size_t i = 0; i < captured.particles.size(); ++i) {
         const auto column = Eigen::Index(i);
-        QVERIFY(captured.particles[i].position == frame->capturedState->position.col(column));
-        QVERIFY(captured.particles[i].velocity == frame->capturedState->velocity.col(column));
+        QVERIFY(captured.particles[i].position == frame->capturedState->state.position.col(column));
+        QVERIFY(captured.particles[i].velocity == frame->capturedState->state.velocity.col(column));
         for (Eigen::Index axis = 0; axis < 3; ++axis)
             QCOMPARE(float(captured.particles[i].position[axis]), paused->snapshot->positions[3 * i + std::size_t(axis)]);
     }

@@ -194,12 +194,13 @@ void TestPlotsWidget::plottedEnergiesAreTheCoresDiagnostics()
     // the same scene stepped here: every sample is the core's energies at its step, to the bit
     const auto model = core::compileModel(scene);
     core::State state = core::makeState(*model, scene);
+    core::Workspace work;
     const core::Energies initial = core::energies(*model, state);
     std::size_t compared = 0;
     double lost = 0.0;
     for (std::uint64_t step = 0; step <= last->snapshot->step; ++step) {
         if (step > 0)
-            QVERIFY(core::step(*model, state));
+            QVERIFY(core::step(*model, state, work));
         const std::optional<std::size_t> at = series.indexOfStep(step);
         if (!at)
             continue;

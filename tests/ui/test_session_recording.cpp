@@ -7,6 +7,7 @@
 #include "ui/simulation_runner.h"
 
 #include "core/generators.h"
+#include "core/io/scene_file.h"
 #include "core/state_hash.h"
 
 #include <QTemporaryDir>
@@ -93,6 +94,8 @@ private slots:
     void aRecordingChangedByOneStepNoLongerMatches();
     void damagedFilesAreRefusedWithTheirPath();
     void nothingIsRecordedWithoutAStart();
+    void replayAfterSpringsBroke();
+    void damagedBreaksAreRefused();
 };
 
 void TestSessionRecording::replayEndsWithTheRecordedBits()
@@ -109,7 +112,7 @@ void TestSessionRecording::replayEndsWithTheRecordedBits()
     for (const auto &entry : recording->entries)
         QVERIFY(!std::holds_alternative<ui::SyncEdit>(entry.edit));
     QVERIFY(recording->steps > 50);
-    QVERIFY(recording->time > 0.0);  // it started mid-run
+    QVERIFY(recording->start.time > 0.0);  // it started mid-run
 
     const ui::ReplayResult replayed = ui::replay(*recording);
     QVERIFY2(replayed.error.empty(), replayed.error.c_str());
@@ -128,8 +131,8 @@ void TestSessionRecording::replayThroughAFileToo()
     QVERIFY2(loaded.recording, qPrintable(loaded.error));
     QCOMPARE(loaded.recording->entries.size(), recording->entries.size());
     QCOMPARE(loaded.recording->steps, recording->steps);
-    QVERIFY(loaded.recording->position.cwiseEqual(recording->position).all());
-    QVERIFY(loaded.recording->velocity.cwiseEqual(recording->velocity).all());
+    QVERIFY(loaded.recording->start.position.cwiseEqual(recording->start.position).all());
+    QVERIFY(loaded.recording->start.velocity.cwiseEqual(recording->start.velocity).all());
     QVERIFY(*loaded.recording->scene == *recording->scene);
     // writing what was read gives the same bytes
     QCOMPARE(ui::recordingToJson(*loaded.recording), ui::recordingToJson(*recording));
@@ -180,6 +183,74 @@ void TestSessionRecording::nothingIsRecordedWithoutAStart()
     runner.apply(ui::StopRecordingEdit{5});
     QCOMPARE(runner.recordingRequest(), std::uint64_t(5));
     QVERIFY(!runner.finishedRecording());
+}
+
+// the tearable cloth run past its first break, then 50 steps recorded
+std::shared_ptr<const ui::SessionRecording> recordAfterABreak(ui::SimulationRunner &runner)
+{
+    const io::LoadResult loaded = io::loadScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/tearable-cloth.json"));
+    if (!loaded.ok())
+        return nullptr;
+    auto scene = std::make_shared<const core::SceneDesc>(*loaded.scene);
+    runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
+    runner.apply(ui::PlayEdit{});
+    const double h = scene->settings.timeStep;
+    for (int tick = 0; tick < 2000 && runner.state().breaks.empty(); ++tick)
+        runner.advance(h, kNoBudgetLimit);
+    if (runner.state().breaks.empty())
+        return nullptr;
+    runner.apply(ui::StartRecordingEdit{});
+    const std::uint64_t from = runner.stepsTaken();
+    while (runner.stepsTaken() < from + 50)
+        runner.advance(h, kNoBudgetLimit);
+    runner.apply(ui::StopRecordingEdit{1});
+    return runner.finishedRecording();
+}
+
+// a recording that starts after springs have broken carries them: its replay, from memory and
+// through a file, ends with the recorded bits and the same springs broken (it used to start with
+// every spring whole, and the replay went astray)
+void TestSessionRecording::replayAfterSpringsBroke()
+{
+    ui::SimulationRunner runner;
+    const auto recording = recordAfterABreak(runner);
+    QVERIFY(recording);
+    QCOMPARE(recording->steps, std::uint64_t(50));
+    QVERIFY(!recording->start.breaks.empty());
+    QCOMPARE(recording->start.springBroken.size(), recording->scene->springs.size());
+
+    QTemporaryDir folder;
+    const QString path = folder.filePath(QStringLiteral("torn.replay.json"));
+    QCOMPARE(ui::saveRecording(path, *recording), QString());
+    const ui::RecordingLoad loaded = ui::loadRecording(path);
+    QVERIFY2(loaded.recording, qPrintable(loaded.error));
+    QVERIFY(loaded.recording->start.springBroken == recording->start.springBroken);
+    QVERIFY(loaded.recording->start.breaks == recording->start.breaks);
+    for (const ui::SessionRecording *r : {recording.get(), loaded.recording.get()}) {
+        const ui::ReplayResult replayed = ui::replay(*r);
+        QVERIFY2(replayed.error.empty(), replayed.error.c_str());
+        QCOMPARE(replayed.hash, recording->finalHash);
+        QVERIFY(replayed.state.springBroken == runner.state().springBroken);
+        QVERIFY(replayed.state.breaks == runner.state().breaks);
+    }
+}
+
+void TestSessionRecording::damagedBreaksAreRefused()
+{
+    ui::SimulationRunner runner;
+    const auto recording = recordAfterABreak(runner);
+    QVERIFY(recording);
+    const QByteArray good = ui::recordingToJson(*recording);
+    const int spring = recording->start.breaks.front().spring;
+    const QByteArray entry = "{\"spring\": " + QByteArray::number(spring) + ",";
+    QVERIFY(good.contains(entry));
+    const auto error = [&](const QByteArray &json) {
+        return ui::parseRecording(json, QStringLiteral("s.json")).error;
+    };
+    const QString beyond = error(QByteArray(good).replace(entry, "{\"spring\": 99999,"));
+    QVERIFY2(beyond.contains(QStringLiteral("start.breaks[0].spring: expected a spring of the scene")), qPrintable(beyond));
+    const QString twice = error(QByteArray(good).replace("\"breaks\": [", "\"breaks\": [" + entry + " \"step\": 1, \"time\": 0}, "));
+    QVERIFY2(twice.contains(QStringLiteral("broke twice")), qPrintable(twice));
 }
 
 QTEST_APPLESS_MAIN(TestSessionRecording)

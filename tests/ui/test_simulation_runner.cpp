@@ -162,7 +162,8 @@ void TestSimulationRunner::parameterChangeKeepsTheState()
 
     // and the next step uses the new stiffness: the same as a fresh run from that state
     core::State expected = before;
-    core::step(*core::compileModel(*springScene(400.0)), expected);
+    core::Workspace work;
+    core::step(*core::compileModel(*springScene(400.0)), expected, work);
     runner.apply(ui::StepOnceEdit{});
     QVERIFY(runner.state().position == expected.position);
 }
@@ -237,7 +238,8 @@ void TestSimulationRunner::grabPullsTowardTheTargetAndLetsGo()
              qPrintable(QString::number((runner.state().position.col(1) - target).norm())));
     // let go: no force is left on it, so it coasts at the speed it has
     runner.apply(ui::GrabEdit{-1, Eigen::Vector3d::Zero()});
-    QCOMPARE(runner.state().applied.col(1), Eigen::Vector3d::Zero());
+    QCOMPARE(runner.state().appliedCount, 0);
+    QCOMPARE(runner.state().applied.cols(), Eigen::Index(0));  // a state with none holds none
     const Eigen::Vector3d v = runner.state().velocity.col(1);
     runner.advance(0.1, kNoBudgetLimit);
     QVERIFY((runner.state().velocity.col(1) - v).norm() < 1e-12);
@@ -330,7 +332,6 @@ void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
     QVERIFY(message.has_value());
     QVERIFY(!runner.takeBlowupMessage().has_value());
     QVERIFY(runner.state().position.allFinite());
-    QVERIFY(!runner.state().blowup.has_value());
     QVERIFY(runner.state().step >= good.step);
 
     // what failed, where (the step after the state restored), why and the fix

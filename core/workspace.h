@@ -1,0 +1,36 @@
+#pragma once
+// Workspace: what the step needs besides the State, owned by the thread that steps and never copied
+// with the state: the forces of the current sub-step, the integrators' and kernels' scratch, the
+// contact grid, the profile, and how the last step ended. Everything in it is made on first use
+// and reused, so that a step allocates nothing after the first.
+
+#include "contact_grid.h"
+#include "blowup.h"
+#include "profile.h"
+
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace core {
+
+struct Workspace {
+    Eigen::Matrix3Xd force;  // N: the forces of the current sub-step at (x, v)
+
+    // the integrators' scratch arrays (state-sized; scratch() in passes.h makes them)
+    std::array<Eigen::Matrix3Xd, 18> scratchArrays;
+    // the spring pass's: each spring's force on its end a
+    Eigen::Matrix3Xd springForce;
+    // the fused lattice sub-step's (spring_blocks.cpp): each thread's window of particles and its
+    // block's forces (made again when the thread count changes)
+    std::vector<double> blockScratch;
+    ContactGrid contacts;  // the particle-pair pass's grid and pairs (broad_phase.cpp)
+
+    Profile profile;
+    // set by the step that stopped being finite or bounded; step() refuses to go on until it is
+    // cleared (a restored state clears it)
+    std::optional<Blowup> blowup;
+};
+
+}  // namespace core
