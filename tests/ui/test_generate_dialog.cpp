@@ -18,26 +18,19 @@
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QTemporaryDir>
 #include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
 
 #include <numeric>
 
-#include "editor_test_setup.h"
-#include "frame_wait.h"
+#include "editor_fixture.h"
 #include "help_entries.h"
 
-class TestGenerateDialog : public QObject {
+class TestGenerateDialog : public test::EditorTest {
     Q_OBJECT
 
-public:
-    // OpenGL settings before the QApplication exists
-    static void initMain() { test::prepareOpenGL(); }
-
 private slots:
-    void initTestCase();
     void init();
     void cleanup();
 
@@ -50,19 +43,15 @@ private slots:
     void softBallOfTheTypedPointsIsDrawn();
 
 private:
-    ui::SimulationController &controller() { return *m_window->controller(); }
     const core::SceneDesc &scene() { return m_window->document()->scene(); }
     QUndoStack *undo() { return m_window->document()->undoStack(); }
 
-    // shows the window and makes it the active one, as shortcuts need; with no window manager it has
-    // to ask
-    static bool makeActive(QWidget *window) { return test::showActive(*window); }
     // Ctrl+G, as a user would press it; the dialog, shown and active
     ui::GenerateDialog *open()
     {
         QTest::keyClick(m_window, Qt::Key_G, Qt::ControlModifier);
         ui::GenerateDialog *dialog = m_window->generateDialog();
-        return dialog && makeActive(dialog) ? dialog : nullptr;
+        return dialog && test::showActive(*dialog) ? dialog : nullptr;
     }
     template <class Box>
     Box *field(ui::GenerateDialog *dialog, const char *name)
@@ -102,28 +91,16 @@ private:
                                                  .arg(dialog->countText())),
                                   5000);
     }
-
-    QTemporaryDir m_settings;
-    ui::MainWindow *m_window = nullptr;
 };
-
-void TestGenerateDialog::initTestCase()
-{
-    QVERIFY(m_settings.isValid());
-    test::useSettingsIn(m_settings.path(), QStringLiteral("test_generate_dialog"));
-}
 
 void TestGenerateDialog::init()
 {
-    m_window = new ui::MainWindow;
-    QVERIFY(makeActive(m_window));
-    QVERIFY(test::settledFrame(controller()));
+    QVERIFY2(openEditor(), qPrintable(editorFailure()));
 }
 
 void TestGenerateDialog::cleanup()
 {
-    delete m_window;
-    m_window = nullptr;
+    closeEditor();
 }
 
 void TestGenerateDialog::addsTheClothAsOneUndoStep()
@@ -186,7 +163,7 @@ void TestGenerateDialog::addsTheClothAsOneUndoStep()
     QCOMPARE(frame->snapshot->particleCount(), int(n + 12));
 
     // Ctrl+Z: exactly the scene before, in the worker too
-    QVERIFY(makeActive(m_window));
+    QVERIFY(test::showActive(*m_window));
     QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
     QTRY_COMPARE(undo()->index(), 0);
     QVERIFY(scene() == before);

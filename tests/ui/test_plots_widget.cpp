@@ -24,14 +24,12 @@
 #include <QDockWidget>
 #include <QImage>
 #include <QStatusBar>
-#include <QTemporaryDir>
 #include <QToolButton>
 #include <QtTest>
 
 #include <charconv>
 
-#include "editor_test_setup.h"
-#include "frame_wait.h"
+#include "editor_fixture.h"
 
 namespace {
 
@@ -80,14 +78,10 @@ double readDouble(const QString &field)
 
 }  // namespace
 
-class TestPlotsWidget : public QObject {
+class TestPlotsWidget : public test::EditorTest {
     Q_OBJECT
 
-public:
-    static void initMain() { test::prepareOpenGL(); }
-
 private slots:
-    void initTestCase();
     void init();
     void cleanup();
 
@@ -100,7 +94,6 @@ private slots:
     void eachPlotOfALongRunGrabsAtItsSize();
 
 private:
-    ui::SimulationController &controller() { return *m_window->controller(); }
     ui::PlotsWidget *plots() { return m_window->plots(); }
     QDockWidget *dock() { return m_window->findChild<QDockWidget *>(QStringLiteral("plotsDock")); }
     void press(Qt::Key key) { QTest::keyClick(m_window, key); }
@@ -109,29 +102,16 @@ private:
     // F6 `count` times, each step's frame seen by the window
     void stepTimes(int count);
     void clickButton(const char *name);
-
-    QTemporaryDir m_settings;
-    QTemporaryDir m_files;
-    ui::MainWindow *m_window = nullptr;
 };
-
-void TestPlotsWidget::initTestCase()
-{
-    QVERIFY(m_settings.isValid() && m_files.isValid());
-    test::useSettingsIn(m_settings.path(), QStringLiteral("test_plots_widget"));
-}
 
 void TestPlotsWidget::init()
 {
-    m_window = new ui::MainWindow;
-    QVERIFY(test::showActive(*m_window));
-    QVERIFY(settledFrame(controller()));
+    QVERIFY2(openEditor(), qPrintable(editorFailure()));
 }
 
 void TestPlotsWidget::cleanup()
 {
-    delete m_window;
-    m_window = nullptr;
+    closeEditor();
 }
 
 void TestPlotsWidget::open(const core::SceneDesc &scene)
