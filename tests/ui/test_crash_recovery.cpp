@@ -13,36 +13,24 @@
 
 #include <QDir>
 #include <QProcess>
-#include <QSettings>
-#include <QSurfaceFormat>
-#include <QTemporaryDir>
 #include <QtTest>
 
-#include "editor_test_setup.h"
+#include "editor_fixture.h"
 
-class TestCrashRecovery : public QObject {
+class TestCrashRecovery : public test::EditorTest {
     Q_OBJECT
-
-public:
-    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
     void killedEditorIsRecoveredOnTheNextStart();
-
-private:
-    QTemporaryDir m_settings;
-    QTemporaryDir m_files;
+    void cleanup() { closeEditor(); }
 };
 
 void TestCrashRecovery::initTestCase()
 {
     // this process and the child share throwaway settings: the recovery folder, autosave every second
-    QVERIFY(m_settings.isValid() && m_files.isValid());
-    test::useSettingsIn(m_settings.path(), QStringLiteral("test_crash_recovery"));
-    QSettings settings;
-    settings.setValue(QStringLiteral("autosave/directory"), m_files.filePath(QStringLiteral("recovery")));
-    settings.setValue(QStringLiteral("autosave/intervalSeconds"), 1);
+    QVERIFY(foldersReady());
+    setAutosave(m_files.filePath(QStringLiteral("recovery")), 1);
 }
 
 void TestCrashRecovery::killedEditorIsRecoveredOnTheNextStart()
@@ -57,7 +45,7 @@ void TestCrashRecovery::killedEditorIsRecoveredOnTheNextStart()
     // an editor changes it, autosaves and is killed
     QProcess editor;
     editor.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-    editor.start(QStringLiteral(SPRINGLAB_AUTOSAVING_EDITOR), {m_settings.path(), scenePath, expectedPath});
+    editor.start(QStringLiteral(SPRINGLAB_AUTOSAVING_EDITOR), {settingsPath(), scenePath, expectedPath});
     QVERIFY2(editor.waitForStarted(10000), qPrintable(editor.errorString()));
     QElapsedTimer clock;
     clock.start();
@@ -82,38 +70,35 @@ void TestCrashRecovery::killedEditorIsRecoveredOnTheNextStart()
     int asked = 0;
     bool recoveryThereWhenAsked = false;
     QMessageBox::StandardButton answer = QMessageBox::Cancel;
-    const auto makeWindow = [&] {
-        auto *window = new ui::MainWindow;
-        window->setMessageBoxFunction([&](QMessageBox::Icon icon, const QString &, const QString &text,
-                                          QMessageBox::StandardButtons buttons, QMessageBox::StandardButton) {
+    // a window that has not started yet, left hidden as the start under test shows it
+    const auto answerHere = [&](ui::MainWindow &window) {
+        window.setMessageBoxFunction([&](QMessageBox::Icon icon, const QString &, const QString &text,
+                                         QMessageBox::StandardButtons buttons, QMessageBox::StandardButton) {
             if (icon == QMessageBox::Question && text.contains(QStringLiteral("did not close properly"))) {
                 ++asked;
                 recoveryThereWhenAsked = QFileInfo::exists(recovery);
             }
             return buttons.testFlag(answer) ? answer : QMessageBox::Ok;
         });
-        return std::unique_ptr<ui::MainWindow>(window);
     };
-    {
-        auto window = makeWindow();
-        QVERIFY(window->start());
-        QCOMPARE(asked, 1);
-        QVERIFY(recoveryThereWhenAsked);
-        QVERIFY(QFileInfo::exists(recovery));
-        QVERIFY(!window->document()->isModified());
-    }
+    QVERIFY2(openEditor({.setup = answerHere, .show = false}), qPrintable(editorFailure()));
+    QVERIFY(m_window->start());
+    QCOMPARE(asked, 1);
+    QVERIFY(recoveryThereWhenAsked);
+    QVERIFY(QFileInfo::exists(recovery));
+    QVERIFY(!m_window->document()->isModified());
 
     // Yes: the killed editor's scene, as its file with unsaved changes; the old files go
     answer = QMessageBox::Yes;
-    auto window = makeWindow();
-    QVERIFY(window->start());
+    QVERIFY2(openEditor({.setup = answerHere, .show = false}), qPrintable(editorFailure()));
+    QVERIFY(m_window->start());
     QCOMPARE(asked, 2);
     QVERIFY(recoveryThereWhenAsked);
-    QVERIFY(window->document()->scene() == *expected.scene);
-    QCOMPARE(window->document()->filePath(), QFileInfo(scenePath).absoluteFilePath());
-    QVERIFY(window->document()->isModified());
+    QVERIFY(m_window->document()->scene() == *expected.scene);
+    QCOMPARE(m_window->document()->filePath(), QFileInfo(scenePath).absoluteFilePath());
+    QVERIFY(m_window->document()->isModified());
     QVERIFY(!QFileInfo::exists(recovery));
-    QCOMPARE(ui::Autosave::findRecoveries(window->autosave()->directory()).size(), 0);
+    QCOMPARE(ui::Autosave::findRecoveries(m_window->autosave()->directory()).size(), 0);
 }
 
 QTEST_MAIN(TestCrashRecovery)

@@ -9,13 +9,10 @@
 #include "ui/simulation_controller.h"
 #include "ui/viewport.h"
 
-#include <QSettings>
-#include <QSurfaceFormat>
-#include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
 
-#include "editor_test_setup.h"
+#include "editor_fixture.h"
 
 namespace {
 
@@ -47,14 +44,10 @@ QVector3D toQt(const Eigen::Vector3d &v)
 
 }  // namespace
 
-class TestEditing : public QObject {
+class TestEditing : public test::EditorTest {
     Q_OBJECT
 
-public:
-    static void initMain() { test::prepareOpenGL(); }
-
 private slots:
-    void initTestCase();
     void init();
     void cleanup();
 
@@ -73,7 +66,6 @@ private slots:
     void buildTheHandoutNetByMouse();
 
 private:
-    ui::SimulationController &controller() { return *m_window->controller(); }
     ui::Viewport *viewport() { return m_window->viewport(); }
     ui::EditTools *tools() { return m_window->editTools(); }
     const core::SceneDesc &scene() { return m_window->document()->scene(); }
@@ -119,30 +111,17 @@ private:
         QVERIFY(scene() == after);
     }
 
-    QTemporaryDir m_settings;
-    ui::MainWindow *m_window = nullptr;
 };
-
-void TestEditing::initTestCase()
-{
-    QVERIFY(m_settings.isValid());
-    test::useSettingsIn(m_settings.path(), QStringLiteral("test_editing"));
-}
 
 void TestEditing::init()
 {
-    m_window = new ui::MainWindow;
-    m_window->resize(900, 700);
-    m_window->show();
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window));
+    QVERIFY2(openEditor({.size = QSize(900, 700)}), qPrintable(editorFailure()));
     settle();
 }
 
 void TestEditing::cleanup()
 {
-    delete m_window;
-    m_window = nullptr;
+    closeEditor();
 }
 
 void TestEditing::addToolPlacesAParticleUnderTheCursor()

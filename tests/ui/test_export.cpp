@@ -37,8 +37,7 @@
 
 #include "help_entries.h"
 
-#include "editor_test_setup.h"
-#include "frame_wait.h"
+#include "editor_fixture.h"
 #include "tests/io/trace_read.h"
 
 #include <cmath>
@@ -107,14 +106,10 @@ double amberMiddle(const QImage &image, QPointF pixel)
 
 }  // namespace
 
-class TestExport : public QObject {
+class TestExport : public test::EditorTest {
     Q_OBJECT
 
-public:
-    static void initMain() { test::prepareOpenGL(); }
-
 private slots:
-    void initTestCase();
     void init();
     void cleanup();
 
@@ -133,9 +128,6 @@ private:
     void exportAndWait(ui::ExportDialog *dialog, const QString &path);
     ui::Camera cameraFor(QSize size) const;
 
-    QTemporaryDir m_settings;
-    QTemporaryDir m_files;
-    ui::MainWindow *m_window = nullptr;
     QString m_answer;  // what the file dialog hook answers
     QList<ui::MainWindow::FileDialogMode> m_dialogModes;
     QStringList m_messages;
@@ -143,31 +135,23 @@ private:
     QString m_exportMessage;
 };
 
-void TestExport::initTestCase()
-{
-    QVERIFY(m_settings.isValid() && m_files.isValid());
-    test::useSettingsIn(m_settings.path(), u"test_export"_s);
-}
-
 void TestExport::init()
 {
     // every file dialog and message answered here; the moving scene open, paused at step 0
-    m_window = new ui::MainWindow;
     m_dialogModes.clear();
     m_messages.clear();
-    m_window->setFileDialogFunction([this](ui::MainWindow::FileDialogMode mode, const QString &, const QString &) {
-        m_dialogModes << mode;
-        return m_answer;
-    });
-    m_window->setMessageBoxFunction([this](QMessageBox::Icon, const QString &, const QString &text,
-                                           QMessageBox::StandardButtons, QMessageBox::StandardButton) {
-        m_messages << text;
-        return QMessageBox::Yes;
-    });
-    m_window->resize(800, 600);
-    m_window->show();
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window));
+    const auto answerHere = [this](ui::MainWindow &window) {
+        window.setFileDialogFunction([this](ui::MainWindow::FileDialogMode mode, const QString &, const QString &) {
+            m_dialogModes << mode;
+            return m_answer;
+        });
+        window.setMessageBoxFunction([this](QMessageBox::Icon, const QString &, const QString &text,
+                                            QMessageBox::StandardButtons, QMessageBox::StandardButton) {
+            m_messages << text;
+            return QMessageBox::Yes;
+        });
+    };
+    QVERIFY2(openEditor({.setup = answerHere, .size = QSize(800, 600), .settle = false}), qPrintable(editorFailure()));
     m_window->document()->replace(movingScene(), QString());
     const auto frame = test::settledFrame(*m_window->controller());
     QVERIFY(frame && frame->snapshot);
@@ -178,8 +162,7 @@ void TestExport::init()
 
 void TestExport::cleanup()
 {
-    delete m_window;
-    m_window = nullptr;
+    closeEditor();
 }
 
 ui::ExportDialog *TestExport::openDialog(const char *action)

@@ -25,16 +25,12 @@
 #include <QMenuBar>
 #include <QMimeData>
 #include <QSettings>
-#include <QSurfaceFormat>
-#include <QTemporaryDir>
 #include <QUndoStack>
 #include <QUndoView>
 #include <QUrl>
 #include <QtTest>
 
-#include "editor_test_setup.h"
-
-#include "frame_wait.h"
+#include "editor_fixture.h"
 
 #include <csignal>
 #include <linux/capability.h>
@@ -124,12 +120,8 @@ QByteArray readAll(const QString &path)
 
 }  // namespace
 
-class TestFiles : public QObject {
+class TestFiles : public test::EditorTest {
     Q_OBJECT
-
-public:
-    // OpenGL settings before the QApplication exists
-    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
@@ -155,7 +147,6 @@ private slots:
     void recordedSessionReplaysToTheSameBits();
 
 private:
-    ui::SimulationController &controller() { return *m_window->controller(); }
     ui::SceneDocument &document() { return *m_window->document(); }
     QAction *action(const char *name) const
     {
@@ -168,7 +159,9 @@ private:
     {
         QTest::keyClick(m_window, key, modifiers);
     }
-    ui::MainWindow *makeWindow();
+    // a new window, left hidden, with the tests' answers: what the next start of the editor finds
+    void restart() { QVERIFY2(openEditor(answered(false)), qPrintable(editorFailure())); }
+    test::EditorOptions answered(bool show);
     // one step of undo: more viscosity (never merged with the one before)
     void edit()
     {
@@ -178,10 +171,7 @@ private:
     }
     QString savedFile(const QString &name, const core::SceneDesc &scene);
 
-    QTemporaryDir m_settings;
-    QTemporaryDir m_files;
     QString m_recoveryDirectory;
-    ui::MainWindow *m_window = nullptr;
 
     // the answers the tests give, and what was asked
     QMessageBox::StandardButton m_answer = QMessageBox::Cancel;
@@ -193,53 +183,44 @@ private:
 void TestFiles::initTestCase()
 {
     // settings and recovery files go to throwaway folders, never the user's
-    QVERIFY(m_settings.isValid() && m_files.isValid());
-    test::useSettingsIn(m_settings.path(), QStringLiteral("test_files"));
+    QVERIFY(foldersReady());
     m_recoveryDirectory = m_files.filePath(QStringLiteral("recovery"));
 }
 
-ui::MainWindow *TestFiles::makeWindow()
+test::EditorOptions TestFiles::answered(bool show)
 {
-    auto *window = new ui::MainWindow;
-    window->setMessageBoxFunction([this](QMessageBox::Icon icon, const QString &title, const QString &text,
-                                         QMessageBox::StandardButtons buttons, QMessageBox::StandardButton) {
-        m_questions << Question{icon, title, text, buttons};
-        return buttons.testFlag(m_answer) ? m_answer : QMessageBox::Ok;
-    });
-    window->setFileDialogFunction([this](ui::MainWindow::FileDialogMode mode, const QString &, const QString &) {
-        m_dialogs << mode;
-        return m_chosenPath;
-    });
-    return window;
+    const auto answerHere = [this](ui::MainWindow &window) {
+        window.setMessageBoxFunction([this](QMessageBox::Icon icon, const QString &title, const QString &text,
+                                            QMessageBox::StandardButtons buttons, QMessageBox::StandardButton) {
+            m_questions << Question{icon, title, text, buttons};
+            return buttons.testFlag(m_answer) ? m_answer : QMessageBox::Ok;
+        });
+        window.setFileDialogFunction([this](ui::MainWindow::FileDialogMode mode, const QString &, const QString &) {
+            m_dialogs << mode;
+            return m_chosenPath;
+        });
+    };
+    return {.setup = answerHere, .show = show};
 }
 
 void TestFiles::init()
 {
     // every test starts from no settings: no recent files, no saved docks, autosave off
-    {
-        QSettings settings;
-        settings.clear();
-        settings.setValue(QStringLiteral("autosave/directory"), m_recoveryDirectory);
-        settings.setValue(QStringLiteral("autosave/intervalSeconds"), 0);
-    }
+    QSettings().clear();
+    setAutosave(m_recoveryDirectory, 0);
     QDir(m_recoveryDirectory).removeRecursively();
     m_answer = QMessageBox::Cancel;
     m_questions.clear();
     m_chosenPath.clear();
     m_dialogs.clear();
 
-    // shortcuts need an active window; with no window manager, ask for it
-    m_window = makeWindow();
-    m_window->show();
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window));
-    QVERIFY(settledFrame(controller()));
+    // shortcuts need an active window
+    QVERIFY2(openEditor(answered(true)), qPrintable(editorFailure()));
 }
 
 void TestFiles::cleanup()
 {
-    delete m_window;
-    m_window = nullptr;
+    closeEditor();
 }
 
 QString TestFiles::savedFile(const QString &name, const core::SceneDesc &scene)
@@ -366,8 +347,7 @@ void TestFiles::recentFilesKeepOrderStopAtTenAndForgetMissingOnes()
     QVERIFY(document().sharedScene() == before);
 
     // the list outlives the window, through the settings
-    delete m_window;
-    m_window = makeWindow();
+    restart();
     QCOMPARE(m_window->recentFiles()->paths().size(), 9);
     QCOMPARE(m_window->recentFiles()->paths().front(), paths[8]);
 
@@ -590,9 +570,9 @@ void TestFiles::autosaveWritesARecoveryFileAndRemovesIt()
 void TestFiles::autosaveIsConfigured()
 {
     // from the settings, at start
-    delete m_window;
+    closeEditor();
     QSettings().setValue(QStringLiteral("autosave/intervalSeconds"), 45);
-    m_window = makeWindow();
+    restart();
     QCOMPARE(m_window->autosave()->intervalSeconds(), 45);
     auto *custom = m_window->findChild<QMenu *>(QStringLiteral("autosaveMenu"))->actions().back();
     QVERIFY(custom->isChecked());
@@ -630,13 +610,12 @@ void TestFiles::nextStartRecoversACrashedSession()
     QVERIFY(QFile::copy(recovery, folder.filePath(QStringLiteral("crashed.recovery.json"))));
     QVERIFY(QFile::copy(source, folder.filePath(QStringLiteral("crashed.recovery.source"))));
     m_answer = QMessageBox::Discard;
-    delete m_window;
-    m_window = nullptr;
+    closeEditor();
     QCOMPARE(folder.entryList(QDir::Files),
              (QStringList{QStringLiteral("crashed.recovery.json"), QStringLiteral("crashed.recovery.source")}));
 
     // Cancel: kept for another start
-    m_window = makeWindow();
+    restart();
     m_answer = QMessageBox::Cancel;
     QVERIFY(m_window->start());
     QCOMPARE(m_questions.size(), 1);
@@ -646,8 +625,7 @@ void TestFiles::nextStartRecoversACrashedSession()
     QVERIFY(folder.exists(QStringLiteral("crashed.recovery.json")));
 
     // Yes: the autosaved scene, as the user's file with unsaved changes; the old files go
-    delete m_window;
-    m_window = makeWindow();
+    restart();
     m_answer = QMessageBox::Yes;
     QVERIFY(m_window->start(path));
     QVERIFY(document().scene() == unsaved);
@@ -660,8 +638,7 @@ void TestFiles::nextStartRecoversACrashedSession()
     // No: thrown away
     m_window->autosave()->saveNow();
     QVERIFY(QFile::copy(m_window->autosave()->recoveryPath(), folder.filePath(QStringLiteral("again.recovery.json"))));
-    delete m_window;
-    m_window = makeWindow();
+    restart();
     m_answer = QMessageBox::No;
     QVERIFY(m_window->start());
     QCOMPARE(document().displayName(), QStringLiteral("springs"));
@@ -717,8 +694,7 @@ void TestFiles::commandLineFileOpens()
     QString error;
     QVERIFY2(m_window->openExample(QStringLiteral("particles"), &error), qPrintable(error));
     const QString path = savedFile(QStringLiteral("command-line.json"), document().scene());
-    delete m_window;
-    m_window = makeWindow();
+    restart();
     QVERIFY(m_window->start(path, &error));
     QCOMPARE(document().filePath(), QFileInfo(path).absoluteFilePath());
     QCOMPARE(document().displayName(), QStringLiteral("particles"));
@@ -727,8 +703,7 @@ void TestFiles::commandLineFileOpens()
     // a bad one shows the loader's message, and the default example is open instead
     const QString bad = m_files.filePath(QStringLiteral("bad-argument.json"));
     QVERIFY(writeFile(bad, "{\"format\": \"springlab-scene\", \"version\": 1, \"particles\": 3}"));
-    delete m_window;
-    m_window = makeWindow();
+    restart();
     QVERIFY(!m_window->start(bad, &error));
     QVERIFY2(error.contains(QStringLiteral("bad-argument.json")), qPrintable(error));
     QCOMPARE(m_questions.size(), 1);

@@ -10,15 +10,9 @@
 #include "ui/simulation_controller.h"
 #include "ui/viewport.h"
 
-#include <QSettings>
-#include <QSurfaceFormat>
-#include <QTemporaryDir>
 #include <QtTest>
 
-
-#include "editor_test_setup.h"
-
-#include "frame_wait.h"
+#include "editor_fixture.h"
 
 namespace {
 
@@ -27,27 +21,18 @@ constexpr int kFrameWaitMs = 60000;
 
 }  // namespace
 
-class TestLifecycle : public QObject {
+class TestLifecycle : public test::EditorTest {
     Q_OBJECT
-
-public:
-    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
     void startRunLoadAndCloseWhileRunning();
-
-private:
-    QTemporaryDir m_settings;
 };
 
 void TestLifecycle::initTestCase()
 {
-    QVERIFY(m_settings.isValid());
-    test::useSettingsIn(m_settings.path(), QStringLiteral("test_lifecycle"));
-    QSettings settings;
-    settings.setValue(QStringLiteral("autosave/directory"), m_settings.filePath(QStringLiteral("recovery")));
-    settings.setValue(QStringLiteral("autosave/intervalSeconds"), 0);
+    QVERIFY(foldersReady());
+    setAutosave(settingsPath() + QStringLiteral("/recovery"), 0);
 }
 
 void TestLifecycle::startRunLoadAndCloseWhileRunning()
@@ -60,9 +45,9 @@ void TestLifecycle::startRunLoadAndCloseWhileRunning()
     for (int cycle = 0; cycle < cycles; ++cycle) {
         const QString first = examples[cycle % examples.size()];
         const QString second = examples[(cycle + 1) % examples.size()];
-        auto window = std::make_unique<ui::MainWindow>();
-        window->resize(640, 480);
-        window->show();
+        // shown, and the example opened before the worker's first frame is waited for
+        QVERIFY2(openEditor({.size = QSize(640, 480), .activate = false, .settle = false}), qPrintable(editorFailure()));
+        ui::MainWindow *window = m_window;
         QString error;
         QVERIFY2(window->openExample(first, &error), qPrintable(error));
         ui::SimulationController &controller = *window->controller();
@@ -81,7 +66,7 @@ void TestLifecycle::startRunLoadAndCloseWhileRunning()
         QVERIFY2(frame && frame->scene == window->document()->sharedScene(), qPrintable(second));
         QVERIFY(controller.isRunning());
         window->close();
-        window.reset();
+        closeEditor();
         // the long runs report how far they got, so a stop names its cycle
         if ((cycle + 1) % 50 == 0)
             qInfo("cycle %d of %d done", cycle + 1, cycles);

@@ -16,14 +16,9 @@
 #include "core/validate.h"
 
 #include <QAbstractSlider>
-#include <QSettings>
-#include <QSurfaceFormat>
-#include <QTemporaryDir>
 #include <QtTest>
 
-#include "editor_test_setup.h"
-
-#include "frame_wait.h"
+#include "editor_fixture.h"
 
 #include <algorithm>
 #include <map>
@@ -52,27 +47,18 @@ bool frameIsWhole(const ui::SimulationFrame &frame)
 
 }  // namespace
 
-class TestLiveEditStress : public QObject {
+class TestLiveEditStress : public test::EditorTest {
     Q_OBJECT
-
-public:
-    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
     void scriptedEditsWhileRunning();
-
-private:
-    QTemporaryDir m_files;
 };
 
 void TestLiveEditStress::initTestCase()
 {
-    QVERIFY(m_files.isValid());
-    test::useSettingsIn(m_files.filePath(QStringLiteral("settings")), QStringLiteral("test_live_edit_stress"));
-    QSettings settings;
-    settings.setValue(QStringLiteral("autosave/directory"), m_files.filePath(QStringLiteral("recovery")));
-    settings.setValue(QStringLiteral("autosave/intervalSeconds"), 0);
+    QVERIFY(foldersReady());
+    setAutosave(m_files.filePath(QStringLiteral("recovery")), 0);
 }
 
 void TestLiveEditStress::scriptedEditsWhileRunning()
@@ -80,15 +66,15 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
     const int seconds = qEnvironmentVariableIsSet("SPRINGLAB_STRESS_SECONDS")
                             ? qEnvironmentVariableIntValue("SPRINGLAB_STRESS_SECONDS")
                             : 10;
-    ui::MainWindow window;
-    window.setMessageBoxFunction([](QMessageBox::Icon, const QString &, const QString &, QMessageBox::StandardButtons buttons,
-                                    QMessageBox::StandardButton) {
-        return buttons.testFlag(QMessageBox::Discard) ? QMessageBox::Discard : QMessageBox::Ok;
-    });
-    window.resize(800, 600);
-    window.show();
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    // every question answered Discard where it may be, else Ok
+    const auto discard = [](ui::MainWindow &editor) {
+        editor.setMessageBoxFunction([](QMessageBox::Icon, const QString &, const QString &,
+                                        QMessageBox::StandardButtons buttons, QMessageBox::StandardButton) {
+            return buttons.testFlag(QMessageBox::Discard) ? QMessageBox::Discard : QMessageBox::Ok;
+        });
+    };
+    QVERIFY2(openEditor({.setup = discard, .size = QSize(800, 600), .settle = false}), qPrintable(editorFailure()));
+    ui::MainWindow &window = *m_window;
     ui::SimulationController &controller = *window.controller();
     ui::Viewport *viewport = window.viewport();
     ui::EditTools *tools = window.editTools();

@@ -25,16 +25,12 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
-#include <QSurfaceFormat>
-#include <QTemporaryDir>
 #include <QThread>
 #include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
 
-#include "editor_test_setup.h"
-
-#include "frame_wait.h"
+#include "editor_fixture.h"
 #include "help_entries.h"
 
 namespace {
@@ -50,15 +46,10 @@ int colourDistance(QRgb a, QRgb b)
 
 }  // namespace
 
-class TestMainWindow : public QObject {
+class TestMainWindow : public test::EditorTest {
     Q_OBJECT
 
-public:
-    // OpenGL settings before the QApplication exists
-    static void initMain() { test::prepareOpenGL(); }
-
 private slots:
-    void initTestCase();
     void init();
     void cleanup();
 
@@ -85,38 +76,21 @@ private slots:
     void geometryIsRemembered();
 
 private:
-    ui::SimulationController &controller() { return *m_window->controller(); }
     void press(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
     {
         QTest::keyClick(m_window, key, modifiers);
     }
-
-    QTemporaryDir m_settings;
-    QTemporaryDir m_files;
-    ui::MainWindow *m_window = nullptr;
 };
-
-void TestMainWindow::initTestCase()
-{
-    // settings go to a throwaway folder, never the user's
-    QVERIFY(m_settings.isValid() && m_files.isValid());
-    test::useSettingsIn(m_settings.path(), QStringLiteral("test_main_window"));
-}
 
 void TestMainWindow::init()
 {
-    // shortcuts need an active window; with no window manager, ask for it
-    m_window = new ui::MainWindow;
-    m_window->show();
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window));
-    QVERIFY(settledFrame(controller()));
+    // shortcuts need an active window
+    QVERIFY2(openEditor(), qPrintable(editorFailure()));
 }
 
 void TestMainWindow::cleanup()
 {
-    delete m_window;
-    m_window = nullptr;
+    closeEditor();
 }
 
 void TestMainWindow::opensOnTheSpringsExampleAndDrawsIt()
@@ -528,8 +502,7 @@ void TestMainWindow::f7PlansAndAppliesTheCheapestIntegrator()
     // closed, the dialog hands the keyboard back: one undo gives back the scene's integrator and
     // substeps, in the worker too
     dialog->close();
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window));
+    QVERIFY(test::showActive(*m_window));
     press(Qt::Key_Z, Qt::ControlModifier);
     QTRY_COMPARE(undo->index(), 0);
     const auto undone = settledFrame(controller());
@@ -605,17 +578,14 @@ void TestMainWindow::geometryIsRemembered()
     QVERIFY(dock);
     dock->hide();
     QVERIFY(m_window->close());
-    delete m_window;
 
-    m_window = new ui::MainWindow;
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    QVERIFY2(openEditor({.activate = false, .settle = false}), qPrintable(editorFailure()));
     QCOMPARE(m_window->size(), QSize(900, 640));
     QVERIFY(m_window->findChild<QDockWidget *>(QStringLiteral("parametersDock"))->isHidden());
 
     // and nothing was written outside the test's own folder
     QSettings settings;
-    QVERIFY(settings.fileName().startsWith(m_settings.path()));
+    QVERIFY(settings.fileName().startsWith(settingsPath()));
 }
 
 QTEST_MAIN(TestMainWindow)

@@ -22,17 +22,14 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
+#include <QScopeGuard>
 #include <QSettings>
-#include <QSurfaceFormat>
-#include <QTemporaryDir>
 #include <QTimer>
 #include <QUndoStack>
 #include <QWheelEvent>
 #include <QtTest>
 
-#include "editor_test_setup.h"
-
-#include "frame_wait.h"
+#include "editor_fixture.h"
 
 #include <random>
 
@@ -59,25 +56,6 @@ const KeyPress kKeys[] = {
 // what the monkey may type into a field
 const char *const kTyped[] = {"0", "1", "-1", "0.5", "1e3", "1e300", "-1e300", "nan", "inf", "-0", "abc", "", "2.5e-7",
                               "99999999999999999999", "1,5", " 3 "};
-
-// true once a widget's size has stayed the same for 200 ms in a row, false after 10 s
-bool settledSize(const QWidget &widget)
-{
-    QElapsedTimer clock, held;
-    clock.start();
-    held.start();
-    QSize size = widget.size();
-    while (clock.elapsed() < 10000) {
-        QTest::qWait(20);
-        if (widget.size() != size) {
-            size = widget.size();
-            held.restart();
-        } else if (held.elapsed() >= 200) {
-            return true;
-        }
-    }
-    return false;
-}
 
 // one line of a paused run's trace: after which event, and what the window was then
 QString describe(int event, const QString &what, const ui::MainWindow &window, int edits)
@@ -108,11 +86,8 @@ bool runsTheSimulation(const KeyPress &press)
 
 }  // namespace
 
-class TestMonkey : public QObject {
+class TestMonkey : public test::EditorTest {
     Q_OBJECT
-
-public:
-    static void initMain() { test::prepareOpenGL(); }
 
 private slots:
     void initTestCase();
@@ -137,23 +112,17 @@ private:
     // `events` seeded events on a fresh window opened on `example`; `paused`: the simulation
     // never runs and each event waits for the worker, so that nothing depends on timing
     Outcome run(const QString &example, std::uint32_t seed, int events, bool paused);
-
-    QTemporaryDir m_settings;
-    QTemporaryDir m_files;
 };
 
 void TestMonkey::initTestCase()
 {
-    QVERIFY(m_settings.isValid() && m_files.isValid());
-    test::useSettingsIn(m_settings.path(), QStringLiteral("test_monkey"));
+    QVERIFY(foldersReady());
     // copies of the examples to open: a Save after Open must never write into the source tree
     for (const QString &example : ui::MainWindow::exampleNames())
         QVERIFY(QFile::copy(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/%1.json").arg(example),
                             m_files.filePath(example + QStringLiteral(".json"))));
-    QSettings settings;
-    settings.setValue(QStringLiteral("autosave/directory"), m_files.filePath(QStringLiteral("recovery")));
-    settings.setValue(QStringLiteral("autosave/intervalSeconds"), 0);
-    settings.setValue(QStringLiteral("screenshots/directory"), m_files.filePath(QStringLiteral("shots")));
+    setAutosave(m_files.filePath(QStringLiteral("recovery")), 0);
+    QSettings().setValue(QStringLiteral("screenshots/directory"), m_files.filePath(QStringLiteral("shots")));
 }
 
 TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, int events, bool paused)
@@ -162,36 +131,40 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
     const auto below = [&random](int n) { return static_cast<int>(random() % static_cast<std::uint32_t>(n)); };
 
     const QStringList examples = ui::MainWindow::exampleNames();
-    auto window = std::make_unique<ui::MainWindow>();
     // questions: any of the offered buttons; file dialogs: an example, a file of our own, or Cancel
-    window->setMessageBoxFunction([&](QMessageBox::Icon, const QString &, const QString &,
-                                      QMessageBox::StandardButtons buttons, QMessageBox::StandardButton) {
-        QList<QMessageBox::StandardButton> offered;
-        for (int bit = 0; bit < 32; ++bit)
-            if (buttons.testFlag(static_cast<QMessageBox::StandardButton>(1u << bit)))
-                offered << static_cast<QMessageBox::StandardButton>(1u << bit);
-        return offered.isEmpty() ? QMessageBox::Ok : offered[below(int(offered.size()))];
-    });
-    window->setFileDialogFunction([&](ui::MainWindow::FileDialogMode mode, const QString &, const QString &) {
-        switch (below(3)) {
-        case 0: return QString();
-        case 1:
-            return mode == ui::MainWindow::FileDialogMode::Open
-                       ? m_files.filePath(examples[below(int(examples.size()))] + QStringLiteral(".json"))
-                       : m_files.filePath(QStringLiteral("monkey.json"));
-        default: return m_files.filePath(QStringLiteral("monkey.json"));
-        }
-    });
-    window->resize(800, 600);  // small: software GL draws every pixel
-    if (!test::showActive(*window))
-        return failed(QStringLiteral("the window never became active"));
+    const auto answerAtRandom = [&](ui::MainWindow &window) {
+        window.setMessageBoxFunction([&](QMessageBox::Icon, const QString &, const QString &,
+                                         QMessageBox::StandardButtons buttons, QMessageBox::StandardButton) {
+            QList<QMessageBox::StandardButton> offered;
+            for (int bit = 0; bit < 32; ++bit)
+                if (buttons.testFlag(static_cast<QMessageBox::StandardButton>(1u << bit)))
+                    offered << static_cast<QMessageBox::StandardButton>(1u << bit);
+            return offered.isEmpty() ? QMessageBox::Ok : offered[below(int(offered.size()))];
+        });
+        window.setFileDialogFunction([&](ui::MainWindow::FileDialogMode mode, const QString &, const QString &) {
+            switch (below(3)) {
+            case 0: return QString();
+            case 1:
+                return mode == ui::MainWindow::FileDialogMode::Open
+                           ? m_files.filePath(examples[below(int(examples.size()))] + QStringLiteral(".json"))
+                           : m_files.filePath(QStringLiteral("monkey.json"));
+            default: return m_files.filePath(QStringLiteral("monkey.json"));
+            }
+        });
+    };
+    // small: software GL draws every pixel
+    if (!openEditor({.setup = answerAtRandom, .size = QSize(800, 600), .settle = false}))
+        return failed(editorFailure());
+    // the window and its answers (which hold this run's locals) end with the run
+    const auto closeAtEnd = qScopeGuard([this] { closeEditor(); });
+    ui::MainWindow *window = m_window;
     QString error;
     if (!window->openExample(example, &error))
         return failed(error);
     int edits = 0;
-    QObject::connect(window->document(), &ui::SceneDocument::sceneChanged, window.get(), [&edits] { ++edits; });
+    QObject::connect(window->document(), &ui::SceneDocument::sceneChanged, window, [&edits] { ++edits; });
     if (paused && window->controller()->isRunning())
-        QTest::keyClick(window.get(), Qt::Key_F4);
+        QTest::keyClick(window, Qt::Key_F4);
 
     // any modal dialog the window opens itself (help, about, a folder chooser) is closed at once
     const auto closeModal = [] {
@@ -208,7 +181,7 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
     // The paused run's events must meet the same window each time. Its docks settle their widths
     // through the X server after it is shown (a scroll bar comes or goes), which moves every click;
     // so it starts once the viewport's size has held for a while.
-    if (paused && !settledSize(*window->viewport()))
+    if (paused && !test::sizeHeld(*window->viewport()))
         return failed(QStringLiteral("the viewport's size never settled"));
 
     // the menu actions, except Quit (which would end the test, not test the editor)
@@ -248,7 +221,7 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
         } else if (kind < 63) {
             const KeyPress &press = kKeys[below(int(std::size(kKeys)))];
             if (!(paused && runsTheSimulation(press)))
-                QTest::keyClick(window.get(), press.key, press.modifiers);
+                QTest::keyClick(window, press.key, press.modifiers);
         } else if (kind < 75) {
             // a slider, moved by its own keys
             const QList<QAbstractSlider *> sliders = window->findChildren<QAbstractSlider *>();
@@ -289,7 +262,7 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
             // later under load; a key sent before then misses the window's shortcuts. So the
             // window's modal dialog is closed here and the window active again before the next.
             closeModal();
-            if (QApplication::activeWindow() != window.get() && !test::showActive(*window))
+            if (QApplication::activeWindow() != window && !test::showActive(*window))
                 return failed(QStringLiteral("seed %1, event %2: the window never became active again").arg(seed).arg(e));
             if (!test::settledFrame(*window->controller()))
                 return failed(QStringLiteral("seed %1, event %2: the worker stopped answering").arg(seed).arg(e));

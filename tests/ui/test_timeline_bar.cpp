@@ -21,8 +21,7 @@
 #include <QToolButton>
 #include <QtTest>
 
-#include "editor_test_setup.h"
-#include "frame_wait.h"
+#include "editor_fixture.h"
 
 namespace {
 
@@ -40,14 +39,10 @@ int differingPixels(const QImage &a, const QImage &b)
 
 }  // namespace
 
-class TestTimelineBar : public QObject {
+class TestTimelineBar : public test::EditorTest {
     Q_OBJECT
 
-public:
-    static void initMain() { test::prepareOpenGL(); }
-
 private slots:
-    void initTestCase();
     void init();
     void cleanup();
     void scrubbingToTheStartDrawsTheStartAgain();
@@ -56,7 +51,6 @@ private slots:
     void breaksAreRedTicks();
 
 private:
-    ui::SimulationController &controller() { return *m_window->controller(); }
     ui::TimelineBar &bar() { return *m_window->timelineBar(); }
     void press(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
     {
@@ -79,28 +73,16 @@ private:
             press(Qt::Key_F6);
         return settledFrame(controller());
     }
-
-    QTemporaryDir m_settings;
-    ui::MainWindow *m_window = nullptr;
 };
-
-void TestTimelineBar::initTestCase()
-{
-    QVERIFY(m_settings.isValid());
-    test::useSettingsIn(m_settings.path(), QStringLiteral("test_timeline_bar"));
-}
 
 void TestTimelineBar::init()
 {
-    m_window = new ui::MainWindow;
-    QVERIFY(test::showActive(*m_window));
-    QVERIFY(settledFrame(controller()));
+    QVERIFY2(openEditor(), qPrintable(editorFailure()));
 }
 
 void TestTimelineBar::cleanup()
 {
-    delete m_window;
-    m_window = nullptr;
+    closeEditor();
 }
 
 void TestTimelineBar::scrubbingToTheStartDrawsTheStartAgain()
@@ -202,8 +184,7 @@ void TestTimelineBar::budgetReachesTheWorker()
 
     // remembered: the next window starts with it, and so does its worker
     QVERIFY(m_window->close());
-    delete m_window;
-    m_window = new ui::MainWindow;
+    QVERIFY2(openEditor({.show = false, .settle = false}), qPrintable(editorFailure()));
     QCOMPARE(bar().budgetBox()->value(), 3);
     frame = settledFrame(controller());
     QCOMPARE(frame->timeline.budgetBytes, std::size_t(3) << 20);
