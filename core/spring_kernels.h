@@ -10,13 +10,12 @@
 
 #include <cmath>
 
-// target clones where the compiler and CPU family support them (GCC on x86-64); elsewhere one
-// portable version. Not under ThreadSanitizer: the clones' resolver runs while the program is
-// being loaded, before the sanitizer's runtime is up, and its instrumented code crashes there.
-// SPRINGLAB_NO_SIMD_CLONES builds one version for the compiler's target (-mavx2, say), which is
-// how the tests check another clone's code on a machine that would pick the AVX-512 one.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_THREAD__) && \
-    !defined(SPRINGLAB_NO_SIMD_CLONES)
+// target clones where CMake's check found that they build and run (SPRINGLAB_KERNEL_CLONES,
+// cmake/springlab_kernels.cmake, which keeps the same list; never under ThreadSanitizer, whose
+// runtime is not up yet when the clones' resolver runs); elsewhere one version for the target the
+// core is compiled for, which SPRINGLAB_KERNEL_ARCH can set to one clone's (presets baseline, avx2)
+// so that a machine tests the code of a clone it would not pick.
+#if defined(SPRINGLAB_KERNEL_CLONES)
 #define SPRINGLAB_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define SPRINGLAB_SIMD_CLONES

@@ -3,8 +3,10 @@
 # builds, then either launches the editor or runs the whole test suite.
 #
 #   tools/dev.sh run [SCENE.json]   build in Release and open the editor (default: the springs example)
-#   tools/dev.sh test               build with warnings as errors and run every test, then the unit
-#                                   tests under AddressSanitizer + UBSan, and a minute of fuzzing
+#   tools/dev.sh test               build with warnings as errors and run every test, then the core's
+#                                   unit tests with the spring kernels built for each other clone
+#                                   this CPU can run, the unit tests under AddressSanitizer + UBSan,
+#                                   and a minute of fuzzing
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -17,6 +19,27 @@ source tools/install_missing.sh
 build() {
   cmake --preset "$1" >/dev/null
   cmake --build --preset "$1"
+}
+
+# whether this CPU has every one of the flags named (as /proc/cpuinfo spells them)
+cpu_has() {
+  local flags f
+  flags=" $(grep -m1 '^flags' /proc/cpuinfo 2>/dev/null | cut -d: -f2) "
+  for f in "$@"; do
+    [[ "$flags" == *" $f "* ]] || return 1
+  done
+}
+
+# the spring kernels' clone this CPU runs in a build with target clones: the loader picks the first
+# of x86-64-v4 (AVX-512 F, BW, CD, DQ and VL), avx2 and default that the CPU can run
+host_clone() {
+  if cpu_has avx512f avx512bw avx512cd avx512dq avx512vl avx2; then
+    echo x86-64-v4
+  elif cpu_has avx2; then
+    echo avx2
+  else
+    echo default
+  fi
 }
 
 case "${1:-}" in
@@ -34,6 +57,19 @@ case "${1:-}" in
     install_missing "${packages[@]}" ffmpeg
     build ci
     ctest --preset ci
+    # the core's unit tests (the golden hash among them) on the kernels' other clones: the ci build
+    # tests only the clone this CPU picks, so each other clone it can run gets a build of the core
+    # for that clone alone. baseline (the default clone) always; avx2 on a CPU that picks AVX-512
+    clone="$(host_clone)"
+    echo "spring kernels: build/ci runs the $clone clone; the core's unit tests again on the others"
+    presets=(baseline)
+    if [ "$clone" = x86-64-v4 ]; then
+      presets+=(avx2)
+    fi
+    for preset in "${presets[@]}"; do
+      build "$preset"
+      ctest --preset "$preset"
+    done
     # the unit tests again under AddressSanitizer and UndefinedBehaviorSanitizer (leaks included)
     build asan
     ctest --preset asan -L unit

@@ -8,8 +8,9 @@
 #    ThreadSanitizer slows it tenfold), and the live-edit stress for 60 s.
 # 2. AddressSanitizer + UBSan build (build/asan), leak checking on: 1000 cycles of start, run,
 #    load another scene and close while running; the monkey's 10 000 events per example.
-# 3. The kernels built for AVX2 alone (build/avx2): the unit tests, so that the clone a CPU without
-#    AVX-512 runs gives the same bits (this machine would pick the AVX-512 one).
+# 3. The core built for the kernels' avx2 clone alone (preset avx2, build/avx2): every unit test,
+#    the editor's included, so that the clone a CPU without AVX-512 runs gives the same bits (a
+#    machine with AVX-512 picks that clone; tools/dev.sh test runs only the core's tests there).
 # 4. The scene loader fuzzed for an hour.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,7 +37,7 @@ SPRINGLAB_LIFECYCLE_CYCLES=1000 ctest --preset asan --timeout 7200 -R '^test_lif
 ctest --preset asan --timeout 7200 -R '^test_monkey$'
 
 cmake --preset avx2 >/dev/null
-cmake --build --preset avx2
-ctest --preset avx2 -L unit
+cmake --build build/avx2
+ctest --test-dir build/avx2 --output-on-failure -j 2 -L unit
 
 bash tools/fuzz.sh 3600
