@@ -2,8 +2,8 @@
 // one; a file that cannot be opened is reported and the editor opens on the example instead. A
 // session that crashed with unsaved changes is offered back first.
 
-#include "ui/main_window.h"
-#include "ui/viewport.h"
+#include "ui/window/main_window.h"
+#include "ui/viewport/viewport.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -17,7 +17,7 @@
 #include "core/stability.h"
 #include "core/step.h"
 
-#include "ui/session_file.h"
+#include "session/session_file.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

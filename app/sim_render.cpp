@@ -1,7 +1,7 @@
 #include "sim_render.h"
 
-#include "ui/image_sequence.h"
-#include "ui/viewport.h"
+#include "ui/export/image_sequence.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/snapshot.h"
 

@@ -6,7 +6,7 @@
 // Without a display, run it under a virtual X server:
 //   xvfb-run -a -s "-screen 0 1280x1024x24" build/release/bench/viewport_fps
 
-#include "ui/viewport.h"
+#include "ui/viewport/viewport.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

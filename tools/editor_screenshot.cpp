@@ -10,15 +10,15 @@
 //   xvfb-run -a -s "-screen 0 1600x1000x24" build/release/tools/editor_screenshot tearable-cloth 60 45 out.png
 //   xvfb-run -a -s "-screen 0 1600x1000x24" build/release/tools/editor_screenshot --generate-dialog docs/images/generate-dialog.png
 //   xvfb-run -a -s "-screen 0 1600x1000x24" build/release/tools/editor_screenshot --plots docs/images
-#include "ui/edit_tools.h"
-#include "ui/generate_dialog.h"
-#include "ui/generate_preview.h"
-#include "ui/main_window.h"
-#include "ui/plots_widget.h"
-#include "ui/scene_document.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_frame.h"
-#include "ui/viewport.h"
+#include "ui/viewport/edit_tools.h"
+#include "ui/dialogs/generate_dialog.h"
+#include "ui/dialogs/generate_preview.h"
+#include "ui/window/main_window.h"
+#include "ui/panels/plots_widget.h"
+#include "ui/document/scene_document.h"
+#include "ui/simulation/simulation_controller.h"
+#include "session/simulation_frame.h"
+#include "ui/viewport/viewport.h"
 
 #include <QAction>
 #include <QApplication>

@@ -3,8 +3,8 @@
 
 #include "core/io/scene_file.h"
 #include "program_run.h"
-#include "ui/session_file.h"
-#include "ui/simulation_runner.h"
+#include "session/session_file.h"
+#include "session/simulation_runner.h"
 
 #include <QDir>
 #include <QFile>

@@ -7,7 +7,7 @@
 #include "tests/io/trace_read.h"
 
 #include "core/io/scene_file.h"
-#include "ui/image_sequence.h"
+#include "ui/export/image_sequence.h"
 
 #include <QFile>
 #include <QImage>

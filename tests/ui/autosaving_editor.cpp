@@ -5,11 +5,11 @@
 //
 //   autosaving_editor SETTINGS_DIR SCENE.json EXPECTED.json
 
-#include "ui/autosave.h"
-#include "ui/main_window.h"
-#include "ui/scene_commands.h"
-#include "ui/scene_document.h"
-#include "ui/viewport.h"
+#include "ui/document/autosave.h"
+#include "ui/window/main_window.h"
+#include "ui/document/scene_commands.h"
+#include "ui/document/scene_document.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/io/scene_file.h"
 

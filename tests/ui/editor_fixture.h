@@ -7,8 +7,8 @@
 // of the run deletes it. What a test needs beyond that (its own answers to questions, a size, a
 // window that is made but not shown) it says in EditorOptions, rather than writing the steps again.
 
-#include "ui/main_window.h"
-#include "ui/simulation_controller.h"
+#include "ui/window/main_window.h"
+#include "ui/simulation/simulation_controller.h"
 
 #include <QElapsedTimer>
 #include <QObject>

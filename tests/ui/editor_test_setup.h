@@ -2,7 +2,7 @@
 // What the editor's UI tests set up alike: OpenGL before the application exists, and the
 // application's settings (autosave, recent files, docks) in a throwaway folder, never the user's.
 
-#include "ui/viewport.h"
+#include "ui/viewport/viewport.h"
 
 #include <QCoreApplication>
 #include <QSettings>

@@ -2,8 +2,8 @@
 // What the editor's UI tests share: waiting for the worker's frame that includes every edit made
 // so far, and for a window to become active. The waits poll with a deadline, never a fixed sleep.
 
-#include "ui/simulation_controller.h"
-#include "ui/simulation_frame.h"
+#include "ui/simulation/simulation_controller.h"
+#include "session/simulation_frame.h"
 
 #include <QElapsedTimer>
 #include <QtTest>

@@ -2,7 +2,7 @@
 // What the editor's UI tests share: F1's help, read. The dialog is modal, so its entries are read
 // from inside its own event loop, and then it is closed.
 
-#include "ui/help_dialog.h"
+#include "ui/dialogs/help_dialog.h"
 
 #include <QApplication>
 #include <QStringList>

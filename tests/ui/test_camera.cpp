@@ -1,7 +1,7 @@
 // Camera maths without GL: projection and unprojection agree, zooming keeps the point under the
 // cursor, framing puts a sphere inside the view, and the gestures move the view the right way.
 
-#include "ui/camera.h"
+#include "ui/viewport/camera.h"
 
 #include <QtTest>
 

@@ -4,10 +4,10 @@
 // is still there while the question is open and after Cancel, and Yes restores exactly the scene
 // the killed editor had, after which the old files are gone.
 
-#include "ui/autosave.h"
-#include "ui/main_window.h"
-#include "ui/scene_document.h"
-#include "ui/viewport.h"
+#include "ui/document/autosave.h"
+#include "ui/window/main_window.h"
+#include "ui/document/scene_document.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/io/scene_file.h"
 

@@ -3,11 +3,11 @@
 // document afterwards, and that undo gives back exactly the scene before and redo exactly the one
 // after. Waits are on the worker's frames, never fixed sleeps.
 
-#include "ui/edit_tools.h"
-#include "ui/main_window.h"
-#include "ui/scene_document.h"
-#include "ui/simulation_controller.h"
-#include "ui/viewport.h"
+#include "ui/viewport/edit_tools.h"
+#include "ui/window/main_window.h"
+#include "ui/document/scene_document.h"
+#include "ui/simulation/simulation_controller.h"
+#include "ui/viewport/viewport.h"
 
 #include <QUndoStack>
 #include <QtTest>

@@ -6,14 +6,14 @@
 // the header of springlab-sim --trace and a row per particle and exported step, with the core's
 // values; F1 lists the exports. Waits are on signals and frames, never fixed sleeps.
 
-#include "ui/export_dialog.h"
-#include "ui/help_dialog.h"
-#include "ui/image_sequence.h"
-#include "ui/main_window.h"
-#include "ui/scene_document.h"
-#include "ui/simulation_controller.h"
-#include "ui/video_encoder.h"
-#include "ui/viewport.h"
+#include "ui/export/export_dialog.h"
+#include "ui/dialogs/help_dialog.h"
+#include "ui/export/image_sequence.h"
+#include "ui/window/main_window.h"
+#include "ui/document/scene_document.h"
+#include "ui/simulation/simulation_controller.h"
+#include "ui/export/video_encoder.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/model.h"
 #include "core/state.h"

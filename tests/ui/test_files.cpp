@@ -7,15 +7,15 @@
 // and undoes back. Questions are answered by a function, never a modal dialog; waits are on
 // frames or files, never fixed sleeps.
 
-#include "ui/autosave.h"
-#include "ui/help_dialog.h"
-#include "ui/main_window.h"
-#include "ui/recent_files.h"
-#include "ui/scene_commands.h"
-#include "ui/scene_document.h"
-#include "ui/session_file.h"
-#include "ui/simulation_controller.h"
-#include "ui/viewport.h"
+#include "ui/document/autosave.h"
+#include "ui/dialogs/help_dialog.h"
+#include "ui/window/main_window.h"
+#include "ui/document/recent_files.h"
+#include "ui/document/scene_commands.h"
+#include "ui/document/scene_document.h"
+#include "session/session_file.h"
+#include "ui/simulation/simulation_controller.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/io/scene_file.h"
 

@@ -5,13 +5,13 @@
 // kind's default is the core generator's default; a soft ball of the points typed in is drawn at the
 // dialog's size. (The dialog's picture in the docs is taken by tools/editor_screenshot.)
 
-#include "ui/generate_dialog.h"
-#include "ui/generate_preview.h"
-#include "ui/help_dialog.h"
-#include "ui/edit_tools.h"
-#include "ui/main_window.h"
-#include "ui/scene_document.h"
-#include "ui/simulation_controller.h"
+#include "ui/dialogs/generate_dialog.h"
+#include "ui/dialogs/generate_preview.h"
+#include "ui/dialogs/help_dialog.h"
+#include "ui/viewport/edit_tools.h"
+#include "ui/window/main_window.h"
+#include "ui/document/scene_document.h"
+#include "ui/simulation/simulation_controller.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -2,7 +2,7 @@
 // at or after its time, also when the time step does not divide 1 / fps or is longer than a
 // frame); the frames' names; removing the frames of an earlier sequence and nothing else.
 
-#include "ui/image_sequence.h"
+#include "ui/export/image_sequence.h"
 
 #include <QFile>
 #include <QTemporaryDir>

@@ -3,9 +3,9 @@
 // --output), so the torn springs leave the scene, Reset returns to the state as it was, and the
 // run itself goes on with the same bits through the edit, its undo and its redo.
 
-#include "ui/initial_state_command.h"
-#include "ui/scene_document.h"
-#include "ui/simulation_runner.h"
+#include "ui/document/initial_state_command.h"
+#include "ui/document/scene_document.h"
+#include "session/simulation_runner.h"
 
 #include "core/io/scene_file.h"
 #include "core/state_hash.h"

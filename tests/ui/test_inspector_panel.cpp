@@ -3,14 +3,14 @@
 // field merge into one step, a bad value is refused with a message and leaves the scene and the
 // undo stack alone, planes are added, edited and removed, and undo shows in the fields at once.
 
-#include "ui/edit_tools.h"
-#include "ui/inspector_field.h"
-#include "ui/inspector_panel.h"
-#include "ui/inspector_planes.h"
-#include "ui/scene_commands.h"
-#include "ui/scene_document.h"
-#include "ui/simulation_controller.h"
-#include "ui/viewport.h"
+#include "ui/viewport/edit_tools.h"
+#include "ui/panels/inspector_field.h"
+#include "ui/panels/inspector_panel.h"
+#include "ui/panels/inspector_planes.h"
+#include "ui/document/scene_commands.h"
+#include "ui/document/scene_document.h"
+#include "ui/simulation/simulation_controller.h"
+#include "ui/viewport/viewport.h"
 
 #include <QCheckBox>
 #include <QGroupBox>

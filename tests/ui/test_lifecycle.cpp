@@ -5,10 +5,10 @@
 // this is the test for crashes and leaks on the way in and out; SPRINGLAB_LIFECYCLE_CYCLES sets
 // the count (CI's plain build runs 20).
 
-#include "ui/main_window.h"
-#include "ui/scene_document.h"
-#include "ui/simulation_controller.h"
-#include "ui/viewport.h"
+#include "ui/window/main_window.h"
+#include "ui/document/scene_document.h"
+#include "ui/simulation/simulation_controller.h"
+#include "ui/viewport/viewport.h"
 
 #include <QtTest>
 

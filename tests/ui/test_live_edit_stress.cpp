@@ -7,11 +7,11 @@
 // How long events take is printed (median, 99th percentile, longest): a figure to read, not a
 // pass mark, since it depends on the machine.
 
-#include "ui/edit_tools.h"
-#include "ui/main_window.h"
-#include "ui/scene_document.h"
-#include "ui/simulation_controller.h"
-#include "ui/viewport.h"
+#include "ui/viewport/edit_tools.h"
+#include "ui/window/main_window.h"
+#include "ui/document/scene_document.h"
+#include "ui/simulation/simulation_controller.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/validate.h"
 

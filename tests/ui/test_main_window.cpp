@@ -6,15 +6,15 @@
 // bar shows the local error and the energy drift; F7's accuracy dialog plans on the worker and
 // applies its pick as one undoable edit. Waits are on frames, never fixed sleeps.
 
-#include "ui/accuracy_dialog.h"
-#include "ui/help_dialog.h"
-#include "ui/main_window.h"
-#include "ui/parameter_row.h"
-#include "ui/parameters_panel.h"
-#include "ui/scene_document.h"
-#include "ui/simulation_controller.h"
-#include "ui/value_spin_box.h"
-#include "ui/viewport.h"
+#include "ui/dialogs/accuracy_dialog.h"
+#include "ui/dialogs/help_dialog.h"
+#include "ui/window/main_window.h"
+#include "ui/panels/parameter_row.h"
+#include "ui/panels/parameters_panel.h"
+#include "ui/document/scene_document.h"
+#include "ui/simulation/simulation_controller.h"
+#include "ui/panels/value_spin_box.h"
+#include "ui/viewport/viewport.h"
 
 #include <QCheckBox>
 #include <QLabel>

@@ -10,9 +10,9 @@
 // worker caught up, two runs of one seed end in the same scene (reproducibleFromTheSeed); when
 // they do not, the failure names the first event after which they differed.
 
-#include "ui/main_window.h"
-#include "ui/scene_document.h"
-#include "ui/viewport.h"
+#include "ui/window/main_window.h"
+#include "ui/document/scene_document.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/validate.h"
 

@@ -3,10 +3,10 @@
 // with a message and never reaches the document. The integrator combo box lists every integrator;
 // each choice is one undo step, and the tolerance row is enabled for adaptive-rk45 only.
 
-#include "ui/parameter_row.h"
-#include "ui/parameters_panel.h"
-#include "ui/scene_document.h"
-#include "ui/value_spin_box.h"
+#include "ui/panels/parameter_row.h"
+#include "ui/panels/parameters_panel.h"
+#include "ui/document/scene_document.h"
+#include "ui/panels/value_spin_box.h"
 
 #include "core/generators.h"
 

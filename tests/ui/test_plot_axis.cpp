@@ -1,7 +1,7 @@
 // A plot's axes: ticks at 1, 2 or 5 times a power of ten, evenly spaced and inside the range, and
 // ranges with room around the data, even for a single value.
 
-#include "ui/plot_axis.h"
+#include "ui/panels/plot_axis.h"
 
 #include <QtTest>
 

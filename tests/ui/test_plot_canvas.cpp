@@ -2,8 +2,8 @@
 // sample (each pixel column keeps its lowest and highest value), and a canvas with no samples
 // says what to do instead of drawing axes.
 
-#include "ui/plot_canvas.h"
-#include "ui/plot_series.h"
+#include "ui/panels/plot_canvas.h"
+#include "ui/panels/plot_series.h"
 
 #include <QImage>
 #include <QPixmap>

@@ -1,7 +1,7 @@
 // A plot's samples: one per step, the same step replacing its values, a step or time going back
 // starting over, the oldest going past the capacity, and CSV that reads back to the same doubles.
 
-#include "ui/plot_series.h"
+#include "ui/panels/plot_series.h"
 
 #include <QtTest>
 

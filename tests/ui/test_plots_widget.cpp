@@ -7,13 +7,13 @@
 // the dock's size. Waits are on frames, never sleeps. (The dock's pictures in the docs are taken by
 // tools/editor_screenshot.)
 
-#include "ui/edit_tools.h"
-#include "ui/main_window.h"
-#include "ui/plot_canvas.h"
-#include "ui/plots_widget.h"
-#include "ui/scene_document.h"
-#include "ui/simulation_controller.h"
-#include "ui/viewport.h"
+#include "ui/viewport/edit_tools.h"
+#include "ui/window/main_window.h"
+#include "ui/panels/plot_canvas.h"
+#include "ui/panels/plots_widget.h"
+#include "ui/document/scene_document.h"
+#include "ui/simulation/simulation_controller.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/diagnostics.h"
 #include "core/model.h"

@@ -1,7 +1,7 @@
 // Packing a snapshot for drawing, without GL: colours by strain and by pin and selection, the
 // sizes of the packed arrays, when the style must be uploaded again, and the decoration geometry.
 
-#include "ui/render_data.h"
+#include "ui/viewport/render_data.h"
 
 #include <QtTest>
 

@@ -1,7 +1,7 @@
 // The editing tools' scene changes, on plain SceneDescs: each keeps springs and the steerable
 // particle pointing at the same particles, and does nothing outside what it names.
 
-#include "ui/scene_edits.h"
+#include "ui/document/scene_edits.h"
 
 #include "core/generators.h"
 

@@ -3,7 +3,7 @@
 // and is reported, and shutting down while running ends the thread. Waits are on frames (QTRY_*),
 // never fixed sleeps.
 
-#include "ui/simulation_controller.h"
+#include "ui/simulation/simulation_controller.h"
 
 #include "core/generators.h"
 

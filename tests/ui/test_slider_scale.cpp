@@ -2,7 +2,7 @@
 // accepts, positions and values round-trip, and log sliders keep 0 at their start where 0 is
 // allowed.
 
-#include "ui/slider_scale.h"
+#include "ui/panels/slider_scale.h"
 
 #include <QtTest>
 

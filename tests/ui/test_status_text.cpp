@@ -1,7 +1,7 @@
 // The status bar's words: the real-time factor says when the run falls behind the wall clock; the
 // local error and the energy drift in short figures; what the accuracy planner picked and why.
 
-#include "ui/status_text.h"
+#include "ui/panels/status_text.h"
 
 #include <QtTest>
 

@@ -1,7 +1,7 @@
 // Steering: the arrow keys' force turns in the horizontal plane and grows in levels of a fixed
 // acceleration.
 
-#include "ui/steering.h"
+#include "ui/simulation/steering.h"
 
 #include <QtTest>
 

@@ -3,12 +3,12 @@
 // Shift+F6 step back, F6 steps forward through the recording, and play goes on from the step
 // shown; the budget box reaches the worker and the memory figure; the steps springs broke in are
 // drawn as red ticks. Waits are on frames, never fixed sleeps.
-#include "ui/main_window.h"
-#include "ui/plot_series.h"
-#include "ui/plots_widget.h"
-#include "ui/simulation_controller.h"
-#include "ui/timeline_bar.h"
-#include "ui/viewport.h"
+#include "ui/window/main_window.h"
+#include "ui/panels/plot_series.h"
+#include "ui/panels/plots_widget.h"
+#include "ui/simulation/simulation_controller.h"
+#include "ui/panels/timeline_bar.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/generators.h"
 #include "core/io/scene_file.h"

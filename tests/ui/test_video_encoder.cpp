@@ -2,8 +2,8 @@
 // even sides); with no ffmpeg on PATH, a clear "ffmpeg not found" and no process; where ffmpeg is
 // installed, an MP4 made from three small frames of an odd size.
 
-#include "ui/image_sequence.h"
-#include "ui/video_encoder.h"
+#include "ui/export/image_sequence.h"
+#include "ui/export/video_encoder.h"
 
 #include <QFileInfo>
 #include <QImage>

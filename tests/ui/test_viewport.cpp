@@ -3,7 +3,7 @@
 // by key; the style uploaded only when it changes; drawing again after the context is replaced; and
 // the same view drawn offscreen at any size, with the camera scaled to it.
 
-#include "ui/viewport.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/model.h"
 #include "core/snapshot.h"

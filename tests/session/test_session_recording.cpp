@@ -1,0 +1,257 @@
+// Session recordings: a runner records a session full of edits (tilts, steering, the mouse spring,
+// parameter and structure changes, a step, a reset, a blow-up that the runner takes back) and a
+// replay on a fresh runner ends with the same bits, straight from memory and through a file; a
+// recording changed by one step no longer matches; a damaged file is refused with its path.
+
+#include "session/session_file.h"
+#include "session/simulation_runner.h"
+
+#include "core/generators.h"
+#include "core/io/scene_file.h"
+#include "core/state_hash.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+
+constexpr double kNoBudgetLimit = 1e9;  // s
+
+// a small net on a floor, falling and bouncing: springs, contacts, gravity and drag all at work
+std::shared_ptr<const core::SceneDesc> netScene()
+{
+    core::ClothOptions options;
+    options.rows = 4;
+    options.cols = 5;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.settings.timeStep = 0.005;
+    scene.settings.viscosity = 0.05;
+    scene.settings.particleCollisions = true;
+    scene.settings.planeCollisions = true;
+    return std::make_shared<const core::SceneDesc>(scene);
+}
+
+// the runner's own session: every kind of edit, some mid-run, and a tick that blows up
+std::shared_ptr<const ui::SessionRecording> recordSession(ui::SimulationRunner &runner)
+{
+    runner.apply(ui::SetSceneEdit{netScene(), ui::SceneChange::Replace});
+    runner.apply(ui::PlayEdit{});
+    runner.advance(0.1, kNoBudgetLimit);  // recording starts mid-run, with the steering on
+    runner.apply(ui::SteerEdit{3, Eigen::Vector3d(0.5, 0.0, -0.25)});
+    runner.advance(0.05, kNoBudgetLimit);
+    runner.apply(ui::StartRecordingEdit{});
+    runner.advance(0.07, kNoBudgetLimit);
+    runner.apply(ui::TiltEdit{42, 1.5});
+    runner.advance(0.031, kNoBudgetLimit);
+    runner.apply(ui::GrabEdit{7, Eigen::Vector3d(0.3, 1.2, -0.1)});
+    runner.advance(0.04, kNoBudgetLimit);
+    runner.apply(ui::GrabEdit{7, Eigen::Vector3d(0.5, 1.0, 0.2)});
+    runner.advance(0.02, kNoBudgetLimit);
+    runner.apply(ui::GrabEdit{-1, Eigen::Vector3d::Zero()});
+    runner.apply(ui::SyncEdit{});  // changes nothing: not recorded
+    auto stiffer = std::make_shared<core::SceneDesc>(*runner.scene());
+    for (core::SpringDesc &spring : stiffer->springs)
+        spring.stiffness *= 1.5;
+    runner.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
+    runner.advance(0.05, kNoBudgetLimit);
+    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::PlayEdit{});
+    auto added = std::make_shared<core::SceneDesc>(*runner.scene());
+    core::ParticleDesc extra;
+    extra.position = {0.0, 2.0, 0.0};
+    added->particles.push_back(extra);
+    added->springs.push_back({0, int(added->particles.size()) - 1, 50.0, 0.5, 1.0});
+    runner.apply(ui::SetSceneEdit{added, ui::SceneChange::Structure});
+    runner.advance(0.06, kNoBudgetLimit);
+    // far too stiff for the step: the tick blows up and the runner goes back to its start
+    auto wild = std::make_shared<core::SceneDesc>(*runner.scene());
+    for (core::SpringDesc &spring : wild->springs)
+        spring.stiffness = 1e9;
+    runner.apply(ui::SetSceneEdit{wild, ui::SceneChange::Parameters});
+    const std::uint64_t before = runner.stepsTaken();
+    runner.advance(0.05, kNoBudgetLimit);
+    if (runner.isRunning() || runner.stepsTaken() != before)
+        qWarning("the wild tick did not blow up");
+    runner.takeBlowupMessage();
+    runner.apply(ui::SetSceneEdit{added, ui::SceneChange::Parameters});
+    runner.apply(ui::PlayEdit{});
+    runner.advance(0.04, kNoBudgetLimit);
+    runner.apply(ui::ResetEdit{});
+    runner.advance(0.03, kNoBudgetLimit);
+    runner.apply(ui::StopRecordingEdit{1});
+    runner.advance(0.05, kNoBudgetLimit);  // after the end: not part of it
+    return runner.finishedRecording();
+}
+
+}  // namespace
+
+class TestSessionRecording : public QObject {
+    Q_OBJECT
+
+private slots:
+    void replayEndsWithTheRecordedBits();
+    void replayThroughAFileToo();
+    void aRecordingChangedByOneStepNoLongerMatches();
+    void damagedFilesAreRefusedWithTheirPath();
+    void nothingIsRecordedWithoutAStart();
+    void replayAfterSpringsBroke();
+    void damagedBreaksAreRefused();
+};
+
+void TestSessionRecording::replayEndsWithTheRecordedBits()
+{
+    ui::SimulationRunner runner;
+    const auto recording = recordSession(runner);
+    QVERIFY(recording);
+    QCOMPARE(runner.recordingRequest(), std::uint64_t(1));
+    QVERIFY(!runner.isRecording());
+    // every kind of edit is in it, Sync is not; the steering held from before starts it
+    QCOMPARE(recording->entries.size(), std::size_t(13));
+    QVERIFY(std::holds_alternative<ui::SteerEdit>(recording->entries.front().edit));
+    QCOMPARE(recording->entries.front().steps, std::uint64_t(0));
+    for (const auto &entry : recording->entries)
+        QVERIFY(!std::holds_alternative<ui::SyncEdit>(entry.edit));
+    QVERIFY(recording->steps > 50);
+    QVERIFY(recording->start.time > 0.0);  // it started mid-run
+
+    const ui::ReplayResult replayed = ui::replay(*recording);
+    QVERIFY2(replayed.error.empty(), replayed.error.c_str());
+    QCOMPARE(replayed.hash, recording->finalHash);
+    QVERIFY(replayed.hash != 0);
+}
+
+void TestSessionRecording::replayThroughAFileToo()
+{
+    ui::SimulationRunner runner;
+    const auto recording = recordSession(runner);
+    QTemporaryDir folder;
+    const QString path = folder.filePath(QStringLiteral("session.replay.json"));
+    QCOMPARE(ui::saveRecording(path, *recording), QString());
+    const ui::RecordingLoad loaded = ui::loadRecording(path);
+    QVERIFY2(loaded.recording, qPrintable(loaded.error));
+    QCOMPARE(loaded.recording->entries.size(), recording->entries.size());
+    QCOMPARE(loaded.recording->steps, recording->steps);
+    QVERIFY(loaded.recording->start.position.cwiseEqual(recording->start.position).all());
+    QVERIFY(loaded.recording->start.velocity.cwiseEqual(recording->start.velocity).all());
+    QVERIFY(*loaded.recording->scene == *recording->scene);
+    // writing what was read gives the same bytes
+    QCOMPARE(ui::recordingToJson(*loaded.recording), ui::recordingToJson(*recording));
+    const ui::ReplayResult replayed = ui::replay(*loaded.recording);
+    QVERIFY2(replayed.error.empty(), replayed.error.c_str());
+    QCOMPARE(replayed.hash, recording->finalHash);
+}
+
+void TestSessionRecording::aRecordingChangedByOneStepNoLongerMatches()
+{
+    ui::SimulationRunner runner;
+    auto changed = std::make_shared<ui::SessionRecording>(*recordSession(runner));
+    // the reset, the last edit, one step later
+    QVERIFY(std::holds_alternative<ui::ResetEdit>(changed->entries.back().edit));
+    changed->entries.back().steps += 1;
+    const ui::ReplayResult replayed = ui::replay(*changed);
+    QVERIFY2(replayed.error.empty(), replayed.error.c_str());
+    QVERIFY(replayed.hash != changed->finalHash);
+}
+
+void TestSessionRecording::damagedFilesAreRefusedWithTheirPath()
+{
+    ui::SimulationRunner runner;
+    const QByteArray good = ui::recordingToJson(*recordSession(runner));
+    const auto refused = [](QByteArray json, const char *expected) {
+        const ui::RecordingLoad loaded = ui::parseRecording(json, QStringLiteral("s.json"));
+        if (loaded.recording || !loaded.error.startsWith(QStringLiteral("s.json: ")) ||
+            !loaded.error.contains(QString::fromUtf8(expected))) {
+            qWarning("%s", qPrintable(loaded.error));
+            return false;
+        }
+        return true;
+    };
+    QVERIFY(refused(good.left(good.size() / 2), "not JSON"));
+    QVERIFY(refused(QByteArray(good).replace("springlab-replay", "springlab-scene"), "not a Springlab replay"));
+    QVERIFY(refused(QByteArray(good).replace("\"edit\": \"tilt\"", "\"edit\": \"twist\""), "unknown edit \"twist\""));
+    QVERIFY(refused(QByteArray(good).replace("\"particle\": 7", "\"particle\": 700"), "expected -1 or a particle"));
+    QVERIFY(refused(QByteArray(good).replace("\"hash\": \"", "\"hash\": \"zz"), "hash"));
+    QVERIFY(refused(QByteArray(good).replace("\"positions\": [", "\"positions\": [1, "), "start.positions"));
+}
+
+void TestSessionRecording::nothingIsRecordedWithoutAStart()
+{
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{netScene(), ui::SceneChange::Replace});
+    runner.apply(ui::PlayEdit{});
+    runner.advance(0.05, kNoBudgetLimit);
+    runner.apply(ui::StopRecordingEdit{5});
+    QCOMPARE(runner.recordingRequest(), std::uint64_t(5));
+    QVERIFY(!runner.finishedRecording());
+}
+
+// the tearable cloth run past its first break, then 50 steps recorded
+std::shared_ptr<const ui::SessionRecording> recordAfterABreak(ui::SimulationRunner &runner)
+{
+    const io::LoadResult loaded = io::loadScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/tearable-cloth.json"));
+    if (!loaded.ok())
+        return nullptr;
+    auto scene = std::make_shared<const core::SceneDesc>(*loaded.scene);
+    runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
+    runner.apply(ui::PlayEdit{});
+    const double h = scene->settings.timeStep;
+    for (int tick = 0; tick < 2000 && runner.state().breaks.empty(); ++tick)
+        runner.advance(h, kNoBudgetLimit);
+    if (runner.state().breaks.empty())
+        return nullptr;
+    runner.apply(ui::StartRecordingEdit{});
+    const std::uint64_t from = runner.stepsTaken();
+    while (runner.stepsTaken() < from + 50)
+        runner.advance(h, kNoBudgetLimit);
+    runner.apply(ui::StopRecordingEdit{1});
+    return runner.finishedRecording();
+}
+
+// a recording that starts after springs have broken carries them: its replay, from memory and
+// through a file, ends with the recorded bits and the same springs broken (it used to start with
+// every spring whole, and the replay went astray)
+void TestSessionRecording::replayAfterSpringsBroke()
+{
+    ui::SimulationRunner runner;
+    const auto recording = recordAfterABreak(runner);
+    QVERIFY(recording);
+    QCOMPARE(recording->steps, std::uint64_t(50));
+    QVERIFY(!recording->start.breaks.empty());
+    QCOMPARE(recording->start.springBroken.size(), recording->scene->springs.size());
+
+    QTemporaryDir folder;
+    const QString path = folder.filePath(QStringLiteral("torn.replay.json"));
+    QCOMPARE(ui::saveRecording(path, *recording), QString());
+    const ui::RecordingLoad loaded = ui::loadRecording(path);
+    QVERIFY2(loaded.recording, qPrintable(loaded.error));
+    QVERIFY(loaded.recording->start.springBroken == recording->start.springBroken);
+    QVERIFY(loaded.recording->start.breaks == recording->start.breaks);
+    for (const ui::SessionRecording *r : {recording.get(), loaded.recording.get()}) {
+        const ui::ReplayResult replayed = ui::replay(*r);
+        QVERIFY2(replayed.error.empty(), replayed.error.c_str());
+        QCOMPARE(replayed.hash, recording->finalHash);
+        QVERIFY(replayed.state.springBroken == runner.state().springBroken);
+        QVERIFY(replayed.state.breaks == runner.state().breaks);
+    }
+}
+
+void TestSessionRecording::damagedBreaksAreRefused()
+{
+    ui::SimulationRunner runner;
+    const auto recording = recordAfterABreak(runner);
+    QVERIFY(recording);
+    const QByteArray good = ui::recordingToJson(*recording);
+    const int spring = recording->start.breaks.front().spring;
+    const QByteArray entry = "{\"spring\": " + QByteArray::number(spring) + ",";
+    QVERIFY(good.contains(entry));
+    const auto error = [&](const QByteArray &json) {
+        return ui::parseRecording(json, QStringLiteral("s.json")).error;
+    };
+    const QString beyond = error(QByteArray(good).replace(entry, "{\"spring\": 99999,"));
+    QVERIFY2(beyond.contains(QStringLiteral("start.breaks[0].spring: expected a spring of the scene")), qPrintable(beyond));
+    const QString twice = error(QByteArray(good).replace("\"breaks\": [", "\"breaks\": [" + entry + " \"step\": 1, \"time\": 0}, "));
+    QVERIFY2(twice.contains(QStringLiteral("broke twice")), qPrintable(twice));
+}
+
+QTEST_APPLESS_MAIN(TestSessionRecording)
+#include "test_session_recording.moc"

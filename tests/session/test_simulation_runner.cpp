@@ -1,0 +1,552 @@
+// SimulationRunner, the worker's Qt-free half, driven one edit and one advance at a time: whole
+// steps from wall time, edits between steps, reset to the exact initial state, the seeded tilt,
+// the steering force, the stop at a blow-up, the live error estimate and energy drift (and what
+// the estimate costs on the cloth example), and the accuracy plan.
+
+#include "session/simulation_runner.h"
+
+#include "core/error_estimate.h"
+#include "core/io/scene_file.h"
+#include "core/step.h"
+
+#include <QRegularExpression>
+#include <QtTest>
+
+namespace {
+
+// a pinned anchor at the origin and a free 1 kg particle on a spring, released stretched; no
+// gravity, so only the spring (and what a test adds) moves it
+std::shared_ptr<const core::SceneDesc> springScene(double stiffness = 100.0, double timeStep = 0.25)
+{
+    auto scene = std::make_shared<core::SceneDesc>();
+    scene->name = "pair";
+    scene->settings.timeStep = timeStep;
+    scene->settings.gravity.setZero();
+    scene->settings.planeCollisions = false;
+    scene->settings.particleCollisions = false;
+    core::ParticleDesc anchor;
+    anchor.pinned = true;
+    core::ParticleDesc bob;
+    bob.position = {1.0, 0.0, 0.0};
+    bob.velocity = {0.0, 0.5, 0.0};
+    scene->particles = {anchor, bob};
+    scene->springs = {core::SpringDesc{0, 1, stiffness, 0.0, 0.5}};
+    return scene;
+}
+
+ui::SimulationRunner runnerWith(std::shared_ptr<const core::SceneDesc> scene)
+{
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{std::move(scene), ui::SceneChange::Replace});
+    return runner;
+}
+
+constexpr double kNoBudgetLimit = 1e9;  // s
+
+}  // namespace
+
+class TestSimulationRunner : public QObject {
+    Q_OBJECT
+
+private slots:
+    void startsPausedAtTheInitialState();
+    void advancesInWholeStepsAndOwesTheRest();
+    void pausedDoesNotAdvance();
+    void budgetDropsTheBacklog();
+    void stepOnceStepsAndPauses();
+    void resetRestoresTheInitialStateExactly();
+    void parameterChangeKeepsTheState();
+    void structureChangeKeepsTheMotionWhenTheCountMatches();
+    void editedParticlesStartFromTheirNewDescription();
+    void grabPullsTowardTheTargetAndLetsGo();
+    void replaceStartsAfresh();
+    void tiltIsSeeded();
+    void tiltLeavesPinnedParticlesAlone();
+    void steeringPushesTheParticle();
+    void steeringSurvivesResetButNotReplace();
+    void blowupPausesAndRestoresTheLastGoodState();
+    void stabilityLimitFollowsEdits();
+    void pairSpeedWarningFollowsTheRun();
+    void examplesStayInsideThePairSpeedLimit_data();
+    void examplesStayInsideThePairSpeedLimit();
+    void errorEstimateFollowsEdits();
+    void errorEstimateRefreshesWhileRunning();
+    void driftIsMeasuredFromTheLastReset();
+    void errorEstimateIsCheapOnTheCloth();
+    void accuracyPlanIsMadeFromTheRunnersState();
+};
+
+void TestSimulationRunner::startsPausedAtTheInitialState()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    QVERIFY(runner.hasScene());
+    QVERIFY(!runner.isRunning());
+    QCOMPARE(runner.state().step, 0u);
+    QCOMPARE(runner.state().position(0, 1), 1.0);
+    QCOMPARE(runner.model()->stiffness[0], 100.0);
+}
+
+void TestSimulationRunner::advancesInWholeStepsAndOwesTheRest()
+{
+    // time step 0.25 s: 0.625 s of wall time is 2 steps and 0.125 s owed; 0.125 s more is a third
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::PlayEdit{});
+    QCOMPARE(runner.advance(0.625, kNoBudgetLimit).steps, 2);
+    QCOMPARE(runner.state().time, 0.5);
+    QCOMPARE(runner.advance(0.125, kNoBudgetLimit).steps, 1);
+    QCOMPARE(runner.state().step, 3u);
+    QCOMPARE(runner.advance(0.0625, kNoBudgetLimit).steps, 0);
+}
+
+void TestSimulationRunner::pausedDoesNotAdvance()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    QCOMPARE(runner.advance(1.0, kNoBudgetLimit).steps, 0);
+    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::PauseEdit{});
+    QCOMPARE(runner.advance(1.0, kNoBudgetLimit).steps, 0);
+    QCOMPARE(runner.state().time, 0.0);
+}
+
+void TestSimulationRunner::budgetDropsTheBacklog()
+{
+    // no computing time at all: one step, and the rest is given up rather than owed
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::PlayEdit{});
+    const ui::SimulationRunner::Advance advance = runner.advance(1.0, 0.0);
+    QCOMPARE(advance.steps, 1);
+    QCOMPARE(advance.droppedSeconds, 0.75);
+    QCOMPARE(runner.advance(0.125, kNoBudgetLimit).steps, 0);
+}
+
+void TestSimulationRunner::stepOnceStepsAndPauses()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::StepOnceEdit{});
+    QVERIFY(!runner.isRunning());
+    QCOMPARE(runner.state().step, 1u);
+    QCOMPARE(runner.snapshot()->step, 1u);
+}
+
+void TestSimulationRunner::resetRestoresTheInitialStateExactly()
+{
+    const auto scene = springScene();
+    ui::SimulationRunner runner = runnerWith(scene);
+    runner.apply(ui::PlayEdit{});
+    QVERIFY(runner.advance(2.0, kNoBudgetLimit).steps > 0);
+    QVERIFY(runner.state().position(0, 1) != 1.0);
+
+    runner.apply(ui::ResetEdit{});
+    const core::State &state = runner.state();
+    QCOMPARE(state.time, 0.0);
+    QCOMPARE(state.step, 0u);
+    for (int i = 0; i < 2; ++i) {
+        QVERIFY(state.position.col(i) == scene->particles[std::size_t(i)].position);
+        QVERIFY(state.velocity.col(i) == (i == 0 ? Eigen::Vector3d::Zero() : scene->particles[1].velocity));
+    }
+    QVERIFY(runner.isRunning());  // reset does not pause
+}
+
+void TestSimulationRunner::parameterChangeKeepsTheState()
+{
+    ui::SimulationRunner runner = runnerWith(springScene(100.0));
+    runner.apply(ui::StepOnceEdit{});
+    const core::State before = runner.state();
+
+    runner.apply(ui::SetSceneEdit{springScene(400.0), ui::SceneChange::Parameters});
+    QCOMPARE(runner.model()->stiffness[0], 400.0);
+    QVERIFY(runner.state().position == before.position);
+    QVERIFY(runner.state().velocity == before.velocity);
+    QCOMPARE(runner.state().step, 1u);
+
+    // and the next step uses the new stiffness: the same as a fresh run from that state
+    core::State expected = before;
+    core::Workspace work;
+    core::step(*core::compileModel(*springScene(400.0)), expected, work);
+    runner.apply(ui::StepOnceEdit{});
+    QVERIFY(runner.state().position == expected.position);
+}
+
+void TestSimulationRunner::structureChangeKeepsTheMotionWhenTheCountMatches()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::StepOnceEdit{});
+    const core::State before = runner.state();
+
+    // the same particles, one more spring: the motion carries over
+    auto changed = std::make_shared<core::SceneDesc>(*springScene());
+    changed->springs.push_back(core::SpringDesc{1, 0, 10.0, 0.0, 0.5});
+    runner.apply(ui::SetSceneEdit{changed, ui::SceneChange::Structure});
+    QCOMPARE(runner.model()->springCount(), 2);
+    QVERIFY(runner.state().position == before.position);
+    QVERIFY(runner.state().velocity == before.velocity);
+
+    // a particle more: the others keep their motion, the new one starts from its description
+    changed = std::make_shared<core::SceneDesc>(*changed);
+    changed->particles.push_back(core::ParticleDesc{});
+    changed->particles.back().position = {0.0, 3.0, 0.0};
+    runner.apply(ui::SetSceneEdit{changed, ui::SceneChange::Structure});
+    QCOMPARE(runner.state().position.cols(), Eigen::Index(3));
+    QVERIFY(runner.state().position.col(1) == before.position.col(1));
+    QVERIFY(runner.state().velocity.col(1) == before.velocity.col(1));
+    QCOMPARE(runner.state().position(1, 2), 3.0);
+    QCOMPARE(runner.state().step, before.step);
+}
+
+void TestSimulationRunner::editedParticlesStartFromTheirNewDescription()
+{
+    // three particles under way; the middle one is moved in the scene, then the first is deleted
+    auto scene = std::make_shared<core::SceneDesc>(*springScene());
+    scene->particles.push_back(scene->particles[1]);
+    scene->particles[2].position = {2.0, 0.0, 0.0};
+    ui::SimulationRunner runner = runnerWith(scene);
+    runner.apply(ui::StepOnceEdit{});
+    const core::State before = runner.state();
+    QVERIFY(before.position.col(1) != Eigen::Vector3d(1.0, 0.0, 0.0));
+
+    auto moved = std::make_shared<core::SceneDesc>(*scene);
+    moved->particles[1].position = {0.0, 0.0, 4.0};
+    runner.apply(ui::SetSceneEdit{moved, ui::SceneChange::Structure});
+    QCOMPARE(runner.state().position.col(1), Eigen::Vector3d(0.0, 0.0, 4.0));
+    QCOMPARE(runner.state().velocity.col(1), Eigen::Vector3d(0.0, 0.5, 0.0));
+    QVERIFY(runner.state().position.col(2) == before.position.col(2));
+
+    // deleting the anchor shifts the indices: particle 2 (now 1) still keeps its motion
+    auto fewer = std::make_shared<core::SceneDesc>(*moved);
+    fewer->particles.erase(fewer->particles.begin());
+    fewer->springs.clear();
+    runner.apply(ui::SetSceneEdit{fewer, ui::SceneChange::Structure});
+    QCOMPARE(runner.state().position.cols(), Eigen::Index(2));
+    QCOMPARE(runner.state().position.col(0), Eigen::Vector3d(0.0, 0.0, 4.0));
+    QVERIFY(runner.state().position.col(1) == before.position.col(2));
+    QVERIFY(runner.state().velocity.col(1) == before.velocity.col(2));
+}
+
+void TestSimulationRunner::grabPullsTowardTheTargetAndLetsGo()
+{
+    // a free particle with nothing else acting: the mouse spring brings it to the target
+    auto scene = std::make_shared<core::SceneDesc>(*springScene(100.0, 0.01));
+    scene->springs.clear();
+    scene->particles[1].velocity.setZero();
+    ui::SimulationRunner runner = runnerWith(scene);
+    runner.apply(ui::PlayEdit{});
+    const Eigen::Vector3d target(1.0, 2.0, 0.0);
+    runner.apply(ui::GrabEdit{1, target});
+    runner.advance(1.0, kNoBudgetLimit);
+    QVERIFY2((runner.state().position.col(1) - target).norm() < 0.01,
+             qPrintable(QString::number((runner.state().position.col(1) - target).norm())));
+    // let go: no force is left on it, so it coasts at the speed it has
+    runner.apply(ui::GrabEdit{-1, Eigen::Vector3d::Zero()});
+    QCOMPARE(runner.state().appliedCount, 0);
+    QCOMPARE(runner.state().applied.cols(), Eigen::Index(0));  // a state with none holds none
+    const Eigen::Vector3d v = runner.state().velocity.col(1);
+    runner.advance(0.1, kNoBudgetLimit);
+    QVERIFY((runner.state().velocity.col(1) - v).norm() < 1e-12);
+
+    // a pinned particle is carried to the target instead
+    runner.apply(ui::GrabEdit{0, Eigen::Vector3d(0.0, -1.0, 0.0)});
+    runner.advance(0.02, kNoBudgetLimit);
+    QCOMPARE(runner.state().position.col(0), Eigen::Vector3d(0.0, -1.0, 0.0));
+}
+
+void TestSimulationRunner::replaceStartsAfresh()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::PlayEdit{});
+    runner.advance(1.0, kNoBudgetLimit);
+    runner.apply(ui::SetSceneEdit{springScene(50.0), ui::SceneChange::Replace});
+    QVERIFY(!runner.isRunning());
+    QCOMPARE(runner.state().step, 0u);
+    QCOMPARE(runner.state().position(0, 1), 1.0);
+}
+
+void TestSimulationRunner::tiltIsSeeded()
+{
+    // the same seed, the same kick; another seed, another kick
+    ui::SimulationRunner a = runnerWith(springScene());
+    ui::SimulationRunner b = runnerWith(springScene());
+    ui::SimulationRunner c = runnerWith(springScene());
+    a.apply(ui::TiltEdit{42, 2.0});
+    b.apply(ui::TiltEdit{42, 2.0});
+    c.apply(ui::TiltEdit{43, 2.0});
+    QVERIFY(a.state().velocity == b.state().velocity);
+    QVERIFY(a.state().velocity != c.state().velocity);
+
+    // at most `speed` per component
+    const Eigen::Vector3d kick = a.state().velocity.col(1) - springScene()->particles[1].velocity;
+    QVERIFY(kick.cwiseAbs().maxCoeff() <= 2.0);
+    QVERIFY(!kick.isZero());
+}
+
+void TestSimulationRunner::tiltLeavesPinnedParticlesAlone()
+{
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.apply(ui::TiltEdit{1, 5.0});
+    QVERIFY(runner.state().velocity.col(0).isZero(0.0));
+}
+
+void TestSimulationRunner::steeringPushesTheParticle()
+{
+    // without the spring's pull (stiffness 0) a 1 kg particle pushed by 2 N gains exactly h·2 m/s
+    ui::SimulationRunner runner = runnerWith(springScene(0.0));
+    const Eigen::Vector3d force(2.0, 0.0, -1.0);
+    runner.apply(ui::SteerEdit{1, force});
+    runner.apply(ui::StepOnceEdit{});
+    const Eigen::Vector3d expected = springScene()->particles[1].velocity + 0.25 * force;
+    QVERIFY(runner.state().velocity.col(1) == expected);
+
+    // a zero force stops pushing
+    runner.apply(ui::SteerEdit{1, Eigen::Vector3d::Zero()});
+    runner.apply(ui::StepOnceEdit{});
+    QVERIFY(runner.state().velocity.col(1) == expected);
+    QCOMPARE(runner.state().appliedCount, 0);
+}
+
+void TestSimulationRunner::steeringSurvivesResetButNotReplace()
+{
+    ui::SimulationRunner runner = runnerWith(springScene(0.0));
+    runner.apply(ui::SteerEdit{1, Eigen::Vector3d(1.0, 0.0, 0.0)});
+    runner.apply(ui::ResetEdit{});
+    QCOMPARE(runner.state().appliedCount, 1);
+    runner.apply(ui::SetSceneEdit{springScene(0.0), ui::SceneChange::Parameters});
+    QCOMPARE(runner.state().appliedCount, 1);
+    runner.apply(ui::SetSceneEdit{springScene(0.0), ui::SceneChange::Replace});
+    QCOMPARE(runner.state().appliedCount, 0);
+}
+
+void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
+{
+    // far too stiff for the time step: the amplitude grows ~h²k/m = 10⁷ times a step
+    ui::SimulationRunner runner = runnerWith(springScene(1e9, 0.1));
+    runner.apply(ui::PlayEdit{});
+    runner.advance(0.1, kNoBudgetLimit);
+    const core::State good = runner.state();
+    runner.advance(0.1, kNoBudgetLimit);
+    runner.advance(0.1, kNoBudgetLimit);
+    runner.advance(0.1, kNoBudgetLimit);
+
+    // paused, reported once, and back at the state before the steps that blew up
+    QVERIFY(!runner.isRunning());
+    const std::optional<std::string> message = runner.takeBlowupMessage();
+    QVERIFY(message.has_value());
+    QVERIFY(!runner.takeBlowupMessage().has_value());
+    QVERIFY(runner.state().position.allFinite());
+    QVERIFY(runner.state().step >= good.step);
+
+    // what failed, where (the step after the state restored), why and the fix
+    const QString text = QString::fromStdString(*message);
+    const QRegularExpressionMatch what =
+        QRegularExpression(QStringLiteral("^Particle 1's (velocity|position) became .* \\(step (\\d+)\\)\\.")).match(text);
+    QVERIFY2(what.hasMatch(), qPrintable(text));
+    QVERIFY(runner.state().step < what.captured(2).toULongLong());
+    QVERIFY2(text.contains(QStringLiteral("the stability limit")) && text.contains(QStringLiteral("1e+09 N/m")) &&
+                 text.contains(QStringLiteral("substeps or the implicit-euler integrator")),
+             qPrintable(text));
+
+    // it can go on from there once the scene is fixed
+    runner.apply(ui::SetSceneEdit{springScene(100.0, 0.1), ui::SceneChange::Parameters});
+    runner.apply(ui::StepOnceEdit{});
+    QVERIFY(!runner.takeBlowupMessage().has_value());
+}
+
+void TestSimulationRunner::stabilityLimitFollowsEdits()
+{
+    // 1 kg on k = 100 N/m: ω = 10 rad/s, so symplectic Euler is stable below 2/ω = 0.2 s
+    ui::SimulationRunner runner = runnerWith(springScene(100.0));
+    QVERIFY(!runner.stability().has_value());
+    QVERIFY(runner.updateStability());
+    QVERIFY(runner.stability().has_value());
+    QVERIFY(std::abs(runner.stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.2) < 1e-6);
+    QVERIFY(!runner.updateStability());  // nothing changed: not analysed again
+
+    // four times stiffer halves it; with auto substeps the model takes as many as the limit asks:
+    // 0.25 s / (0.9 × 0.1 s) → 3
+    auto stiffer = std::make_shared<core::SceneDesc>(*springScene(400.0));
+    runner.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
+    QVERIFY(runner.updateStability());
+    QVERIFY(std::abs(runner.stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.1) < 1e-6);
+    QCOMPARE(runner.model()->substeps, 1);
+    auto automatic = std::make_shared<core::SceneDesc>(*stiffer);
+    automatic->settings.autoSubsteps = true;
+    runner.apply(ui::SetSceneEdit{automatic, ui::SceneChange::Parameters});
+    QCOMPARE(runner.model()->substeps, 3);
+}
+
+void TestSimulationRunner::pairSpeedWarningFollowsTheRun()
+{
+    // a particle of radius 0.1 m thrown at 30 m/s at one at rest: 0.3 m per 0.01 s step, against a
+    // contact at 0.2 m
+    auto scene = std::make_shared<core::SceneDesc>();
+    scene->settings.gravity.setZero();
+    scene->settings.timeStep = 0.01;
+    core::ParticleDesc thrown;
+    thrown.velocity = {30.0, 0.0, 0.0};
+    core::ParticleDesc still;
+    still.position = {3.0, 0.0, 0.0};
+    scene->particles = {thrown, still};
+    ui::SimulationRunner runner = runnerWith(scene);
+    QVERIFY2(QString::fromStdString(runner.pairSpeedWarning()).startsWith("Particles move up to 0.3 m apart"),
+             runner.pairSpeedWarning().c_str());
+
+    // two substeps bring it under, as the warning says
+    auto split = std::make_shared<core::SceneDesc>(*scene);
+    split->settings.substeps = 2;
+    runner.apply(ui::SetSceneEdit{split, ui::SceneChange::Parameters});
+    QVERIFY(runner.pairSpeedWarning().empty());
+
+    // the run is checked too: a kick past the limit shows after the steps
+    runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Parameters});
+    runner.apply(ui::ResetEdit{});
+    QVERIFY(!runner.pairSpeedWarning().empty());
+    auto slow = std::make_shared<core::SceneDesc>(*scene);
+    slow->particles[0].velocity = {1.0, 0.0, 0.0};
+    runner.apply(ui::SetSceneEdit{slow, ui::SceneChange::Structure});
+    QVERIFY(runner.pairSpeedWarning().empty());
+    runner.apply(ui::SteerEdit{0, Eigen::Vector3d(5000.0, 0.0, 0.0)});  // 1 kg: 5000 m/s² along x
+    runner.apply(ui::PlayEdit{});
+    runner.advance(0.05, kNoBudgetLimit);
+    QVERIFY(!runner.pairSpeedWarning().empty());
+}
+
+void TestSimulationRunner::examplesStayInsideThePairSpeedLimit_data()
+{
+    QTest::addColumn<QString>("name");
+    for (const char *name : {"particles", "springs", "collisions", "pool", "cloth"})
+        QTest::newRow(name) << QString::fromLatin1(name);
+}
+
+void TestSimulationRunner::examplesStayInsideThePairSpeedLimit()
+{
+    // the warning is for scenes that need it: the examples run 3 s without it
+    QFETCH(QString, name);
+    io::LoadResult loaded = io::loadScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/") + name +
+                                          QStringLiteral(".json"));
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+    ui::SimulationRunner runner = runnerWith(std::make_shared<core::SceneDesc>(*loaded.scene));
+    runner.apply(ui::PlayEdit{});
+    for (int tick = 0; tick < 100; ++tick) {
+        runner.advance(0.03, kNoBudgetLimit);
+        QVERIFY2(runner.pairSpeedWarning().empty(), runner.pairSpeedWarning().c_str());
+    }
+}
+
+void TestSimulationRunner::errorEstimateFollowsEdits()
+{
+    // loaded: an estimate of the initial state, the same as step doubling's own
+    ui::SimulationRunner runner = runnerWith(springScene());
+    QVERIFY(!runner.localError().has_value());
+    runner.updateEstimate();
+    QVERIFY(runner.localError().has_value());
+    QCOMPARE(runner.localErrorStep(), 0u);
+    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    QVERIFY(*runner.localError() > 0.0);
+
+    // a step, then another integrator: each time the estimate of the state and model now
+    runner.apply(ui::StepOnceEdit{});
+    runner.updateEstimate();
+    QCOMPARE(runner.localErrorStep(), 1u);
+    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    const double symplectic = *runner.localError();
+    auto rk4 = std::make_shared<core::SceneDesc>(*springScene());
+    rk4->settings.integrator = core::Integrator::Rk4;
+    runner.apply(ui::SetSceneEdit{rk4, ui::SceneChange::Parameters});
+    runner.updateEstimate();
+    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    QVERIFY(*runner.localError() < symplectic);  // fourth order against first, same step
+}
+
+void TestSimulationRunner::errorEstimateRefreshesWhileRunning()
+{
+    // running: a new estimate comes within a bounded number of ticks, of the state they ended at
+    ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
+    runner.updateEstimate();
+    runner.apply(ui::PlayEdit{});
+    int ticks = 0;
+    while (runner.localErrorStep() == 0 && ticks < 100000) {
+        runner.advance(0.05, kNoBudgetLimit);
+        ++ticks;
+    }
+    QVERIFY2(runner.localErrorStep() > 0, "no estimate while running");
+    QCOMPARE(runner.localErrorStep(), runner.state().step);
+    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+
+    // never more often than every kEstimateInterval of wall time: not after the next tick
+    const std::uint64_t at = runner.localErrorStep();
+    runner.advance(0.05, kNoBudgetLimit);
+    QCOMPARE(runner.localErrorStep(), at);
+    QVERIFY(runner.estimateSeconds() > 0.0);
+}
+
+void TestSimulationRunner::driftIsMeasuredFromTheLastReset()
+{
+    // the reference is the energy of the initial state: no drift at load or right after a reset
+    const auto scene = springScene(100.0, 0.01);
+    ui::SimulationRunner runner = runnerWith(scene);
+    const core::Energies initial = core::energies(*runner.model(), runner.state());
+    QCOMPARE(runner.initialEnergies().total(), initial.total());
+    QCOMPARE(runner.snapshot()->energies.total(), runner.initialEnergies().total());
+
+    // symplectic Euler on a spring: the energy moves during the run
+    runner.apply(ui::PlayEdit{});
+    runner.advance(0.37, kNoBudgetLimit);
+    QVERIFY(runner.snapshot()->energies.total() != runner.initialEnergies().total());
+
+    // a parameter change keeps the reference; a reset measures again from the initial state
+    auto softer = std::make_shared<core::SceneDesc>(*scene);
+    softer->springs[0].stiffness = 50.0;
+    runner.apply(ui::SetSceneEdit{softer, ui::SceneChange::Parameters});
+    QCOMPARE(runner.initialEnergies().total(), initial.total());
+    runner.apply(ui::ResetEdit{});
+    QCOMPARE(runner.snapshot()->energies.total(), runner.initialEnergies().total());
+    QVERIFY(runner.initialEnergies().total() != initial.total());  // the softer spring stores less
+}
+
+void TestSimulationRunner::errorEstimateIsCheapOnTheCloth()
+{
+    // the cloth example, run as the worker runs it: ticks of 1/60 s of wall time
+    io::LoadResult loaded = io::loadScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/cloth.json"));
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+    ui::SimulationRunner runner = runnerWith(std::make_shared<const core::SceneDesc>(std::move(*loaded.scene)));
+    runner.apply(ui::PlayEdit{});
+    std::uint64_t estimates = 0;
+    std::uint64_t lastStep = 0;
+    for (int tick = 0; tick < 180; ++tick) {
+        runner.advance(1.0 / 60.0, kNoBudgetLimit);
+        if (runner.localErrorStep() != lastStep) {
+            lastStep = runner.localErrorStep();
+            ++estimates;
+        }
+    }
+
+    // estimates through the run (about four per second of wall time), at a small share of its cost
+    QVERIFY(runner.localError().has_value());
+    QVERIFY2(estimates >= 6 && estimates <= 13, qPrintable(QString::number(estimates)));
+    qInfo("cloth: %llu steps, %llu estimates, steps %.3f s, estimates %.5f s: %.2f %% of the steps' time",
+          static_cast<unsigned long long>(runner.state().step), static_cast<unsigned long long>(estimates),
+          runner.stepSeconds(), runner.estimateSeconds(), 100.0 * runner.estimateShare());
+    QVERIFY2(runner.estimateShare() < ui::SimulationRunner::kEstimateShare,
+             qPrintable(QString::number(runner.estimateShare())));
+}
+
+void TestSimulationRunner::accuracyPlanIsMadeFromTheRunnersState()
+{
+    ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
+    QVERIFY(runner.accuracyPlan() == nullptr);
+    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::PlanAccuracyEdit{1e-6, 7});
+
+    // a row per fixed-step integrator, tagged with the request; the state was not stepped
+    QCOMPARE(runner.accuracyRequest(), 7u);
+    const auto plan = runner.accuracyPlan();
+    QVERIFY(plan != nullptr);
+    QCOMPARE(plan->tolerance, 1e-6);
+    QCOMPARE(plan->candidates.size(), std::size(core::kIntegrators) - 1);
+    QVERIFY(plan->pick() != nullptr);
+    QVERIFY(plan->secondsPerEvaluation > 0.0);
+    QVERIFY(plan->pick()->localError <= 1e-6);
+    QCOMPARE(runner.state().step, 1u);
+}
+
+QTEST_APPLESS_MAIN(TestSimulationRunner)
+#include "test_simulation_runner.moc"

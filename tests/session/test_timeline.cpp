@@ -1,0 +1,287 @@
+// The timeline, through the runner that owns it: a scrub to any recorded step gives the very bits
+// the run had there, edits (a slider, the mouse spring, a tilt, the steering) included; stepping
+// back and forth moves inside the recording; play or an edit goes on from the step shown and
+// drops the recorded future; a long run stays within the memory budget; breaks are marked.
+
+#include "session/simulation_runner.h"
+
+#include "core/generators.h"
+#include "core/state_hash.h"
+
+#include <QtTest>
+#include <map>
+#include <random>
+
+namespace {
+
+// a small cloth falling onto a floor, its corners pinned: springs, gravity, plane and pair
+// contacts, all in play
+std::shared_ptr<const core::SceneDesc> clothScene(double breakStrain = 0.0)
+{
+    core::ClothOptions options;
+    options.rows = options.cols = 6;
+    options.spacing = 0.1;
+    options.radius = 0.04;
+    options.height = 0.5;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.planes = {core::PlaneDesc{{0.0, 1.0, 0.0}, 0.0}};
+    for (core::SpringDesc &spring : scene.springs)
+        spring.breakStrain = breakStrain;
+    return std::make_shared<core::SceneDesc>(std::move(scene));
+}
+
+// the state hash of every step taken, keyed by step
+using Hashes = std::map<std::uint64_t, std::uint64_t>;
+
+void stepAndRecord(ui::SimulationRunner &runner, int steps, Hashes &hashes)
+{
+    for (int i = 0; i < steps; ++i) {
+        runner.apply(ui::StepOnceEdit{});
+        hashes[runner.state().step] = core::stateHash(runner.state());
+    }
+}
+
+}  // namespace
+
+class TestTimeline : public QObject {
+    Q_OBJECT
+
+private slots:
+    void scrubGivesTheRecordedBits();
+    void stepsBackAndForthInsideTheRecording();
+    void playGoesOnFromTheStepShown();
+    void editWhileScrubbedDropsTheFuture();
+    void scrubbedStepShowsItsOwnScene();
+    void longRunStaysWithinTheBudget();
+    void breaksAreMarked();
+    void noScrubbingWhileASessionIsRecorded();
+};
+
+void TestTimeline::scrubGivesTheRecordedBits()
+{
+    ui::SimulationRunner runner;
+    auto scene = clothScene();
+    runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
+    Hashes hashes;
+    hashes[0] = core::stateHash(runner.state());
+    stepAndRecord(runner, 25, hashes);
+    // a slider: stiffer springs from step 25
+    auto stiffer = std::make_shared<core::SceneDesc>(*scene);
+    for (core::SpringDesc &spring : stiffer->springs)
+        spring.stiffness *= 2.0;
+    runner.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
+    hashes[runner.state().step] = core::stateHash(runner.state());
+    stepAndRecord(runner, 13, hashes);
+    // the mouse spring on a free particle, moved twice, then let go
+    runner.apply(ui::GrabEdit{8, Eigen::Vector3d(0.3, 0.9, 0.2)});
+    stepAndRecord(runner, 7, hashes);
+    runner.apply(ui::GrabEdit{8, Eigen::Vector3d(0.1, 1.0, 0.4)});
+    stepAndRecord(runner, 11, hashes);
+    runner.apply(ui::GrabEdit{-1, Eigen::Vector3d::Zero()});
+    stepAndRecord(runner, 4, hashes);
+    // a tilt and the steering force
+    runner.apply(ui::TiltEdit{42, 1.0});
+    hashes[runner.state().step] = core::stateHash(runner.state());
+    stepAndRecord(runner, 9, hashes);
+    runner.apply(ui::SteerEdit{14, Eigen::Vector3d(0.0, 0.0, 0.05)});
+    stepAndRecord(runner, 17, hashes);
+    const std::uint64_t last = runner.state().step;
+    QCOMPARE(last, std::uint64_t(86));
+    QCOMPARE(runner.timeline().firstStep(), std::uint64_t(0));
+    QCOMPARE(runner.timeline().lastStep(), last);
+
+    // every recorded step, in a shuffled order, gives the bits the run had there
+    std::vector<std::uint64_t> order;
+    for (const auto &[step, hash] : hashes)
+        order.push_back(step);
+    std::shuffle(order.begin(), order.end(), std::mt19937(5));
+    for (std::uint64_t step : order) {
+        runner.apply(ui::ScrubEdit{step});
+        QVERIFY(runner.isScrubbing());
+        QCOMPARE(*runner.scrubStep(), step);
+        QCOMPARE(runner.shownState().step, step);
+        QVERIFY2(core::stateHash(runner.shownState()) == hashes[step], qPrintable(QString("step %1").arg(step)));
+        // the snapshot drawn is of the step shown
+        QCOMPARE(runner.snapshot()->step, step);
+    }
+    // and the run itself is where it was
+    QCOMPARE(runner.state().step, last);
+    QCOMPARE(core::stateHash(runner.state()), hashes[last]);
+}
+
+void TestTimeline::stepsBackAndForthInsideTheRecording()
+{
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{clothScene(), ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 40, hashes);
+
+    // back from the run's end, twice: steps 39 and 38
+    runner.apply(ui::StepBackEdit{});
+    runner.apply(ui::StepBackEdit{});
+    QCOMPARE(*runner.scrubStep(), std::uint64_t(38));
+    QCOMPARE(core::stateHash(runner.shownState()), hashes[38]);
+    // forward through the recording: nothing is dropped on the way
+    for (std::uint64_t step = 39; step <= 40; ++step) {
+        runner.apply(ui::StepOnceEdit{});
+        QCOMPARE(*runner.scrubStep(), step);
+        QCOMPARE(core::stateHash(runner.shownState()), hashes[step]);
+        QCOMPARE(runner.timeline().lastStep(), std::uint64_t(40));
+    }
+    // a step at the recording's end is a new step of the run
+    runner.apply(ui::StepOnceEdit{});
+    QVERIFY(!runner.isScrubbing());
+    QCOMPARE(runner.state().step, std::uint64_t(41));
+    QCOMPARE(runner.timeline().lastStep(), std::uint64_t(41));
+}
+
+void TestTimeline::playGoesOnFromTheStepShown()
+{
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{clothScene(), ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 60, hashes);
+
+    runner.apply(ui::ScrubEdit{23});
+    runner.apply(ui::PlayEdit{});
+    QVERIFY(!runner.isScrubbing());
+    QVERIFY(runner.isRunning());
+    QCOMPARE(runner.state().step, std::uint64_t(23));
+    QCOMPARE(runner.timeline().lastStep(), std::uint64_t(23));  // the future is gone
+    // nothing changed since: the run goes on exactly as it did the first time
+    const ui::SimulationRunner::Advance advanced = runner.advance(5.5 * 0.01, 1e9);
+    QCOMPARE(advanced.steps, 5);
+    QCOMPARE(runner.state().step, std::uint64_t(28));
+    QCOMPARE(core::stateHash(runner.state()), hashes[28]);
+}
+
+void TestTimeline::editWhileScrubbedDropsTheFuture()
+{
+    ui::SimulationRunner runner;
+    auto scene = clothScene();
+    runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 50, hashes);
+
+    runner.apply(ui::ScrubEdit{17});
+    auto damped = std::make_shared<core::SceneDesc>(*scene);
+    damped->settings.viscosity = 0.5;
+    runner.apply(ui::SetSceneEdit{damped, ui::SceneChange::Parameters});
+    QVERIFY(!runner.isScrubbing());
+    QCOMPARE(runner.state().step, std::uint64_t(17));
+    QCOMPARE(core::stateHash(runner.state()), hashes[17]);
+    QCOMPARE(runner.timeline().lastStep(), std::uint64_t(17));
+    QCOMPARE(runner.model()->viscosity, 0.5);
+
+    // recorded again from there, with the drag: different from the first time
+    stepAndRecord(runner, 5, hashes);
+    runner.apply(ui::ScrubEdit{19});
+    QCOMPARE(core::stateHash(runner.shownState()), hashes[19]);
+    // a step before the edit still shows the first run's bits
+    runner.apply(ui::ScrubEdit{12});
+    QCOMPARE(core::stateHash(runner.shownState()), hashes[12]);
+}
+
+// A step recorded before a particle was added is shown with the scene and model it was stepped
+// with, not the editor's newer one: the worker's frame pairs them with the snapshot, and a frame
+// whose scene had a particle more than its snapshot was a torn frame (found by the live-edit
+// stress under ThreadSanitizer, which scrubbed with the timeline slider's keys after an add).
+void TestTimeline::scrubbedStepShowsItsOwnScene()
+{
+    ui::SimulationRunner runner;
+    auto scene = clothScene();
+    runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 20, hashes);
+    auto grown = std::make_shared<core::SceneDesc>(*scene);
+    grown->particles.push_back(core::ParticleDesc{Eigen::Vector3d(0.0, 2.0, 0.0), Eigen::Vector3d::Zero(), 1.0, 0.05, false});
+    runner.apply(ui::SetSceneEdit{grown, ui::SceneChange::Structure});
+    stepAndRecord(runner, 20, hashes);
+
+    runner.apply(ui::ScrubEdit{10});
+    QVERIFY(runner.isScrubbing());
+    QVERIFY(runner.shownScene() == scene);
+    QCOMPARE(runner.shownModel()->particleCount(), int(scene->particles.size()));
+    QCOMPARE(runner.snapshot()->particleCount(), int(scene->particles.size()));
+    QVERIFY(runner.scene() == grown);  // the editor's scene is still the newer one
+
+    runner.apply(ui::ScrubEdit{35});
+    QVERIFY(runner.shownScene() == grown);
+    QCOMPARE(runner.snapshot()->particleCount(), int(grown->particles.size()));
+}
+
+void TestTimeline::longRunStaysWithinTheBudget()
+{
+    ui::SimulationRunner runner;
+    constexpr std::size_t kBudget = 96 * 1024;  // bytes: a few dozen keyframes of this cloth
+    runner.apply(ui::TimelineBudgetEdit{kBudget});
+    runner.apply(ui::SetSceneEdit{clothScene(), ui::SceneChange::Replace});
+    Hashes hashes;
+    std::size_t most = 0;
+    for (int i = 0; i < 3000; ++i) {
+        stepAndRecord(runner, 1, hashes);
+        most = std::max(most, runner.timeline().usedBytes());
+        QVERIFY(runner.timeline().usedBytes() <= kBudget);
+    }
+    QVERIFY2(most > kBudget / 2, qPrintable(QString("used at most %1 bytes").arg(most)));
+    // the newest part of the run is kept, the oldest dropped
+    const ui::Timeline &timeline = runner.timeline();
+    QCOMPARE(timeline.lastStep(), std::uint64_t(3000));
+    QVERIFY(timeline.firstStep() > 0);
+    QVERIFY2(timeline.lastStep() - timeline.firstStep() >= 100,
+             qPrintable(QString("only steps %1 to %2").arg(timeline.firstStep()).arg(timeline.lastStep())));
+    // its first and a middle step are exact; a step before it cannot be shown
+    for (std::uint64_t step : {timeline.firstStep(), (timeline.firstStep() + timeline.lastStep()) / 2 + 3}) {
+        runner.apply(ui::ScrubEdit{step});
+        QCOMPARE(core::stateHash(runner.shownState()), hashes[step]);
+    }
+    const std::uint64_t shown = *runner.scrubStep();
+    runner.apply(ui::ScrubEdit{timeline.firstStep() - 1});
+    QCOMPARE(*runner.scrubStep(), shown);
+    // a smaller budget drops more at once
+    runner.apply(ui::TimelineBudgetEdit{kBudget / 4});
+    QVERIFY(runner.timeline().usedBytes() <= kBudget / 4);
+}
+
+void TestTimeline::breaksAreMarked()
+{
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{clothScene(2e-3), ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 80, hashes);
+    const std::vector<core::SpringBreak> &breaks = runner.state().breaks;
+    QVERIFY2(!breaks.empty(), "the brittle cloth must tear as it falls");
+    // every break of the keyed steps is marked, once, in order
+    std::vector<std::uint64_t> expected;
+    for (const core::SpringBreak &b : breaks)
+        if (b.step <= 80 && (expected.empty() || expected.back() != b.step))
+            expected.push_back(b.step);
+    QCOMPARE(runner.timeline().breakSteps(), expected);
+    // scrubbed back before the first break, the cloth is whole; at the run's end, torn
+    runner.apply(ui::ScrubEdit{expected.front() - 1});
+    QCOMPARE(runner.snapshot()->breakCount, std::uint64_t(0));
+    runner.apply(ui::ScrubEdit{80});
+    QCOMPARE(runner.snapshot()->breakCount, std::uint64_t(breaks.size()));
+    // after a scrub back and an edit, the later breaks are gone from the marks
+    runner.apply(ui::ScrubEdit{expected.front()});
+    runner.apply(ui::TiltEdit{1, 0.0});
+    QVERIFY(runner.timeline().breakSteps().back() <= expected.front());
+}
+
+void TestTimeline::noScrubbingWhileASessionIsRecorded()
+{
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{clothScene(), ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 20, hashes);
+    runner.apply(ui::StartRecordingEdit{});
+    runner.apply(ui::ScrubEdit{5});
+    QVERIFY(!runner.isScrubbing());
+    QCOMPARE(runner.state().step, std::uint64_t(20));
+    runner.apply(ui::StopRecordingEdit{1});
+    runner.apply(ui::ScrubEdit{5});
+    QVERIFY(runner.isScrubbing());
+}
+
+QTEST_APPLESS_MAIN(TestTimeline)
+#include "test_timeline.moc"

@@ -1,0 +1,99 @@
+#include "export_run.h"
+
+#include "ui/simulation/simulation_controller.h"
+
+#include "core/snapshot.h"
+
+namespace ui {
+
+ExportRun::ExportRun(SimulationController &controller, std::vector<std::uint64_t> steps, FrameFunction onFrame,
+                     QObject *parent)
+    : QObject(parent), m_controller(controller), m_steps(std::move(steps)), m_onFrame(std::move(onFrame))
+{
+}
+
+void ExportRun::start()
+{
+    if (m_active)
+        return;
+    m_active = true;
+    m_started = false;
+    m_next = 0;
+    if (m_steps.empty()) {
+        finish(Outcome::Done);
+        return;
+    }
+
+    // frames arrive on this thread; a blow-up ends the export with the run's own explanation
+    connect(&m_controller, &SimulationController::frameChanged, this, &ExportRun::frameChanged);
+    connect(&m_controller, &SimulationController::blewUp, this,
+            [this](const QString &message) { finish(Outcome::Failed, message); });
+    m_awaited = m_controller.pause();
+}
+
+void ExportRun::cancel()
+{
+    if (m_active)
+        finish(Outcome::Cancelled);
+}
+
+void ExportRun::frameChanged()
+{
+    const auto frame = m_controller.frame();
+    if (!m_active || !frame || frame->appliedEdit < m_awaited)
+        return;
+    if (!frame->snapshot) {
+        finish(Outcome::Failed, tr("there is no scene to export"));
+        return;
+    }
+    const core::Snapshot &snapshot = *frame->snapshot;
+    if (!m_started) {
+        m_startStep = snapshot.step;
+        m_started = true;
+    }
+
+    // the frame must be the step asked for: anything else (a reset, another scene) ends the export
+    const std::uint64_t expected = m_startStep + m_steps[static_cast<std::size_t>(m_next)];
+    if (snapshot.step != expected) {
+        finish(Outcome::Failed, tr("the run is at step %1 instead of step %2: it was reset or changed meanwhile")
+                                    .arg(snapshot.step)
+                                    .arg(expected));
+        return;
+    }
+    if (const QString error = m_onFrame(frame->snapshot, m_next); !error.isEmpty()) {
+        finish(Outcome::Failed, error);
+        return;
+    }
+    ++m_next;
+    emit progressed(m_next, frameCount());
+    if (!m_active)
+        return;  // cancelled from a slot of progressed
+    if (m_next == frameCount())
+        finish(Outcome::Done);
+    else
+        advance();
+}
+
+void ExportRun::advance()
+{
+    // as many single steps as the next export step is away, or, for the same step again, a sync
+    const std::uint64_t from = m_steps[static_cast<std::size_t>(m_next - 1)];
+    const std::uint64_t to = m_steps[static_cast<std::size_t>(m_next)];
+    if (to <= from) {
+        m_awaited = m_controller.sync();
+        return;
+    }
+    for (std::uint64_t step = from; step < to; ++step)
+        m_awaited = m_controller.stepOnce();
+}
+
+void ExportRun::finish(Outcome outcome, const QString &message)
+{
+    if (!m_active)
+        return;
+    m_active = false;
+    disconnect(&m_controller, nullptr, this, nullptr);
+    emit finished(outcome, message);
+}
+
+}  // namespace ui

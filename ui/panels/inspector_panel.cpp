@@ -1,0 +1,372 @@
+#include "inspector_panel.h"
+
+#include "ui/viewport/edit_tools.h"
+#include "inspector_edits.h"
+#include "inspector_field.h"
+#include "inspector_planes.h"
+#include "ui/document/scene_document.h"
+#include "ui/document/scene_edits.h"
+
+#include <QCheckBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QStringList>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <optional>
+
+namespace ui {
+
+namespace {
+
+// one value of a particle: a scalar member, or one axis of a vector member
+struct ParticleField {
+    const char *key;    // object name and undo merge key: "mass", "position.x"
+    const char *label;  // in messages and undo text: "Position x"
+    core::Parameter parameter;
+    double core::ParticleDesc::*scalar;
+    Eigen::Vector3d core::ParticleDesc::*vector;
+    int axis;
+};
+
+const ParticleField kParticleFields[] = {
+    {"mass", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Mass"), core::Parameter::Mass, &core::ParticleDesc::mass,
+     nullptr, 0},
+    {"radius", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Radius"), core::Parameter::Radius,
+     &core::ParticleDesc::radius, nullptr, 0},
+    {"position.x", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Position x"), core::Parameter::Coordinate, nullptr,
+     &core::ParticleDesc::position, 0},
+    {"position.y", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Position y"), core::Parameter::Coordinate, nullptr,
+     &core::ParticleDesc::position, 1},
+    {"position.z", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Position z"), core::Parameter::Coordinate, nullptr,
+     &core::ParticleDesc::position, 2},
+    {"velocity.x", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Velocity x"), core::Parameter::Speed, nullptr,
+     &core::ParticleDesc::velocity, 0},
+    {"velocity.y", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Velocity y"), core::Parameter::Speed, nullptr,
+     &core::ParticleDesc::velocity, 1},
+    {"velocity.z", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Velocity z"), core::Parameter::Speed, nullptr,
+     &core::ParticleDesc::velocity, 2},
+};
+
+struct SpringField {
+    const char *key;
+    const char *label;
+    core::Parameter parameter;
+    double core::SpringDesc::*member;
+};
+
+const SpringField kSpringFields[] = {
+    {"stiffness", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Stiffness"), core::Parameter::Stiffness,
+     &core::SpringDesc::stiffness},
+    {"damping", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Damping"), core::Parameter::Damping,
+     &core::SpringDesc::damping},
+    {"restLength", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Rest length"), core::Parameter::RestLength,
+     &core::SpringDesc::restLength},
+    {"breakStrain", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Breaking strain"), core::Parameter::BreakStrain,
+     &core::SpringDesc::breakStrain},
+};
+
+// the field's value in a particle, for reading (const) or writing
+template <class Particle>
+decltype(auto) valueOf(Particle &particle, const ParticleField &field)
+{
+    return field.scalar ? particle.*field.scalar : (particle.*field.vector)[field.axis];
+}
+
+// the selected indices the scene still has (the tools clamp the selection, but a refresh may run
+// before they have)
+std::vector<std::size_t> present(const std::vector<int> &indices, std::size_t count)
+{
+    std::vector<std::size_t> kept;
+    for (int i : indices)
+        if (i >= 0 && std::size_t(i) < count)
+            kept.push_back(std::size_t(i));
+    return kept;
+}
+
+// the value every item shares, or nullopt when they differ
+template <class Read>
+std::optional<double> sharedValue(const std::vector<std::size_t> &indices, Read read)
+{
+    const double first = read(indices.front());
+    for (std::size_t i : indices)
+        if (!(read(i) == first))
+            return std::nullopt;
+    return first;
+}
+
+void showIn(InspectorSpinBox *field, const std::optional<double> &value, double start)
+{
+    if (value)
+        field->showValue(*value);
+    else
+        field->showMixed(start);
+}
+
+QString unitOf(core::Parameter parameter)
+{
+    const std::string_view unit = core::parameterInfo(parameter).unit;
+    return QString::fromUtf8(unit.data(), qsizetype(unit.size()));
+}
+
+QString tooltipOf(core::Parameter parameter)
+{
+    const std::string_view tip = core::parameterInfo(parameter).tooltip;
+    return QString::fromUtf8(tip.data(), qsizetype(tip.size()));
+}
+
+}  // namespace
+
+InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidget *parent)
+    : QWidget(parent), m_document(document), m_tools(tools), m_edits(new InspectorEdits(document, this)),
+      m_title(new QLabel(this)), m_message(new QLabel(this))
+{
+    auto *layout = new QVBoxLayout(this);
+    m_title->setObjectName(QStringLiteral("inspector-title"));
+    layout->addWidget(m_title);
+
+    // particles: one row per scalar, one row of three fields per vector
+    m_particlesGroup = new QGroupBox(tr("Particles"), this);
+    m_particlesGroup->setObjectName(QStringLiteral("inspector-particles"));
+    auto *particleForm = new QFormLayout(m_particlesGroup);
+    particleForm->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
+    const QString initialTip = tr("The scene's initial conditions, as saved in its file: the run starts from them "
+                                  "(Reset returns to them); the running simulation's state is not shown here");
+    QHBoxLayout *vectorRow = nullptr;
+    for (std::size_t f = 0; f < std::size(kParticleFields); ++f) {
+        const ParticleField &field = kParticleFields[f];
+        auto *box = new InspectorSpinBox(field.parameter, m_particlesGroup);
+        box->setObjectName(QStringLiteral("inspector-") + QLatin1String(field.key));
+        const QString unit = unitOf(field.parameter);
+        box->setToolTip(field.vector ? QStringLiteral("%1 (%2). %3").arg(tr(field.label), unit, initialTip)
+                                     : QStringLiteral("%1 (%2)").arg(tooltipOf(field.parameter), unit));
+        connect(box, &InspectorSpinBox::typed, this, [this, f](double value) { editParticles(f, value, false); });
+        connect(box, &InspectorSpinBox::stepped, this, [this, f](double value) { editParticles(f, value, true); });
+        m_particleFields.push_back(box);
+        if (!field.vector) {
+            particleForm->addRow(QStringLiteral("%1 (%2)").arg(tr(field.label), unit), box);
+            continue;
+        }
+        if (field.axis == 0) {
+            vectorRow = new QHBoxLayout;
+            const QString name = field.vector == &core::ParticleDesc::position ? tr("Position") : tr("Velocity");
+            particleForm->addRow(QStringLiteral("%1 (%2)").arg(name, unit), vectorRow);
+        }
+        vectorRow->addWidget(box);
+    }
+    m_pinned = new QCheckBox(tr("Pinned"), m_particlesGroup);
+    m_pinned->setObjectName(QStringLiteral("inspector-pinned"));
+    m_pinned->setToolTip(tr("A pinned particle never moves (and starts at rest)"));
+    // pinned sits after the radius, before the vectors
+    particleForm->insertRow(2, QString(), m_pinned);
+    connect(m_pinned, &QCheckBox::clicked, this, &InspectorPanel::pinSelection);
+    layout->addWidget(m_particlesGroup);
+
+    // springs: their values, and the particles they join
+    m_springsGroup = new QGroupBox(tr("Springs"), this);
+    m_springsGroup->setObjectName(QStringLiteral("inspector-springs"));
+    auto *springForm = new QFormLayout(m_springsGroup);
+    springForm->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
+    m_springEnds = new QLabel(m_springsGroup);
+    m_springEnds->setObjectName(QStringLiteral("inspector-springEnds"));
+    m_springEnds->setWordWrap(true);
+    springForm->addRow(tr("Joins"), m_springEnds);
+    for (std::size_t f = 0; f < std::size(kSpringFields); ++f) {
+        const SpringField &field = kSpringFields[f];
+        auto *box = new InspectorSpinBox(field.parameter, m_springsGroup);
+        box->setObjectName(QStringLiteral("inspector-") + QLatin1String(field.key));
+        const QString unit = unitOf(field.parameter);
+        box->setToolTip(QStringLiteral("%1 (%2)").arg(tooltipOf(field.parameter), unit));
+        connect(box, &InspectorSpinBox::typed, this, [this, f](double value) { editSprings(f, value, false); });
+        connect(box, &InspectorSpinBox::stepped, this, [this, f](double value) { editSprings(f, value, true); });
+        springForm->addRow(QStringLiteral("%1 (%2)").arg(tr(field.label), unit), box);
+        m_springFields.push_back(box);
+    }
+    layout->addWidget(m_springsGroup);
+
+    // the scene's planes, whatever is selected
+    m_planes = new InspectorPlanes(m_edits, this);
+    layout->addWidget(m_planes);
+
+    // refusals show below until the next accepted change
+    m_message->setObjectName(QStringLiteral("inspector-message"));
+    m_message->setWordWrap(true);
+    m_message->setStyleSheet(QStringLiteral("color: #b00020"));
+    m_message->hide();
+    layout->addWidget(m_message);
+    layout->addStretch(1);
+
+    // leaving a field ends its step sequence and shows the scene's value again (a field left
+    // empty or mixed shows what the items hold)
+    for (const std::vector<InspectorSpinBox *> *fields : {&m_particleFields, &m_springFields})
+        for (InspectorSpinBox *box : *fields)
+            connect(box, &QAbstractSpinBox::editingFinished, this, [this] {
+                m_edits->endSession();
+                refresh();
+            });
+
+    connect(m_edits, &InspectorEdits::valueRefused, this, &InspectorPanel::showRefusal);
+    connect(m_edits, &InspectorEdits::applied, m_message, &QWidget::hide);
+    connect(m_document, &SceneDocument::sceneChanged, this, &InspectorPanel::refresh);
+    connect(m_tools, &EditTools::selectionChanged, this, [this] {
+        m_edits->endSession();
+        refresh();
+    });
+    refresh();
+}
+
+InspectorPanel::~InspectorPanel()
+{
+    // closing the window moves the focus out of a field, whose editingFinished must not reach a
+    // panel that is half destroyed
+    for (InspectorSpinBox *box : findChildren<InspectorSpinBox *>())
+        disconnect(box, nullptr, this, nullptr);
+}
+
+InspectorSpinBox *InspectorPanel::particleField(const QString &key) const
+{
+    for (std::size_t f = 0; f < std::size(kParticleFields); ++f)
+        if (key == QLatin1String(kParticleFields[f].key))
+            return m_particleFields[f];
+    return nullptr;
+}
+
+InspectorSpinBox *InspectorPanel::springField(const QString &key) const
+{
+    for (std::size_t f = 0; f < std::size(kSpringFields); ++f)
+        if (key == QLatin1String(kSpringFields[f].key))
+            return m_springFields[f];
+    return nullptr;
+}
+
+QString InspectorPanel::message() const
+{
+    return m_message->isHidden() ? QString() : m_message->text();
+}
+
+void InspectorPanel::refresh()
+{
+    const core::SceneDesc &scene = m_document->scene();
+    const Selection &selection = m_tools->selection();
+    const std::vector<std::size_t> particles = present(selection.particles, scene.particles.size());
+    const std::vector<std::size_t> springs = present(selection.springs, scene.springs.size());
+
+    // the title says what is selected
+    QStringList parts;
+    if (!particles.empty())
+        parts << (particles.size() == 1 ? tr("1 particle") : tr("%1 particles").arg(particles.size()));
+    if (!springs.empty())
+        parts << (springs.size() == 1 ? tr("1 spring") : tr("%1 springs").arg(springs.size()));
+    m_title->setText(parts.isEmpty() ? tr("Nothing selected") : parts.join(QStringLiteral(", ")));
+
+    // particles: a shared value shows, differing ones show as mixed
+    m_particlesGroup->setVisible(!particles.empty());
+    if (!particles.empty()) {
+        for (std::size_t f = 0; f < std::size(kParticleFields); ++f) {
+            const ParticleField &field = kParticleFields[f];
+            const auto read = [&](std::size_t i) { return valueOf(scene.particles[i], field); };
+            showIn(m_particleFields[f], sharedValue(particles, read), read(particles.front()));
+        }
+        // a pinned particle is at rest: its velocity is not for editing
+        const bool anyFree = std::any_of(particles.begin(), particles.end(),
+                                         [&](std::size_t i) { return !scene.particles[i].pinned; });
+        for (std::size_t f = 0; f < std::size(kParticleFields); ++f)
+            if (kParticleFields[f].vector == &core::ParticleDesc::velocity)
+                m_particleFields[f]->setEnabled(anyFree);
+        const QSignalBlocker block(m_pinned);
+        const std::optional<double> pinned =
+            sharedValue(particles, [&](std::size_t i) { return scene.particles[i].pinned ? 1.0 : 0.0; });
+        if (pinned) {
+            m_pinned->setTristate(false);
+            m_pinned->setChecked(*pinned != 0.0);
+        } else {
+            m_pinned->setCheckState(Qt::PartiallyChecked);
+        }
+    }
+
+    // springs: the same, and which particles they join
+    m_springsGroup->setVisible(!springs.empty());
+    if (!springs.empty()) {
+        for (std::size_t f = 0; f < std::size(kSpringFields); ++f) {
+            const auto read = [&](std::size_t i) { return scene.springs[i].*kSpringFields[f].member; };
+            showIn(m_springFields[f], sharedValue(springs, read), read(springs.front()));
+        }
+        constexpr std::size_t kListed = 6;  // more pairs than this make the line unreadable
+        QStringList pairs;
+        for (std::size_t k = 0; k < springs.size() && k < kListed; ++k)
+            pairs << QStringLiteral("%1–%2").arg(scene.springs[springs[k]].a).arg(scene.springs[springs[k]].b);
+        if (springs.size() > kListed)
+            pairs << QStringLiteral("…");
+        m_springEnds->setText(springs.size() == 1 ? tr("particles %1 and %2")
+                                                        .arg(scene.springs[springs.front()].a)
+                                                        .arg(scene.springs[springs.front()].b)
+                                                  : pairs.join(QStringLiteral(", ")));
+    }
+
+    m_planes->refresh();
+}
+
+void InspectorPanel::showRefusal(const QString &message)
+{
+    m_message->setText(message);
+    m_message->show();
+    // the field goes back to the scene's value
+    refresh();
+    emit valueRefused(message);
+}
+
+void InspectorPanel::editParticles(std::size_t f, double value, bool step)
+{
+    const ParticleField &field = kParticleFields[f];
+    const std::vector<std::size_t> particles =
+        present(m_tools->selection().particles, m_document->scene().particles.size());
+    if (particles.empty())
+        return;
+    const QString label = tr(field.label);
+    const QString text = particles.size() == 1
+                             ? tr("Set %1 of particle %2 to %3").arg(label).arg(particles.front()).arg(value, 0, 'g', 6)
+                             : tr("Set %1 of %2 particles to %3").arg(label).arg(particles.size()).arg(value, 0, 'g', 6);
+    m_edits->apply(
+        text, field.parameter, label, value,
+        [&](core::SceneDesc &scene) {
+            for (std::size_t i : particles)
+                if (field.vector != &core::ParticleDesc::velocity || !scene.particles[i].pinned)
+                    valueOf(scene.particles[i], field) = value;
+        },
+        step ? QStringLiteral("particle.") + QLatin1String(field.key) : QString());
+}
+
+void InspectorPanel::editSprings(std::size_t f, double value, bool step)
+{
+    const SpringField &field = kSpringFields[f];
+    const std::vector<std::size_t> springs = present(m_tools->selection().springs, m_document->scene().springs.size());
+    if (springs.empty())
+        return;
+    const QString label = tr(field.label);
+    const QString text = springs.size() == 1
+                             ? tr("Set %1 of spring %2 to %3").arg(label).arg(springs.front()).arg(value, 0, 'g', 6)
+                             : tr("Set %1 of %2 springs to %3").arg(label).arg(springs.size()).arg(value, 0, 'g', 6);
+    m_edits->apply(
+        text, field.parameter, label, value,
+        [&](core::SceneDesc &scene) {
+            for (std::size_t i : springs)
+                scene.springs[i].*field.member = value;
+        },
+        step ? QStringLiteral("spring.") + QLatin1String(field.key) : QString());
+}
+
+void InspectorPanel::pinSelection()
+{
+    // a click on a partly checked box checks it: every selected particle is pinned
+    const bool pinned = m_pinned->checkState() != Qt::Unchecked;
+    const Selection &selection = m_tools->selection();
+    auto edited = std::make_shared<core::SceneDesc>(m_document->scene());
+    ui::setPinned(*edited, selection.particles, pinned);
+    m_edits->push(pinned ? tr("Pin particles") : tr("Free particles"), tr("Pinned"), std::move(edited));
+    refresh();
+}
+
+}  // namespace ui

@@ -1,0 +1,238 @@
+#include "plots_widget.h"
+
+#include "plot_canvas.h"
+#include "session/simulation_frame.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDir>
+#include <QHBoxLayout>
+#include <QImage>
+#include <QSaveFile>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace ui {
+
+namespace {
+
+// what each group plots: the box's entry, the vertical axis and the curves, in PlotGroup's order
+struct GroupInfo {
+    const char *text;
+    const char *fileName;
+    const char *valueLabel;
+    std::vector<PlotCurve> curves;
+};
+
+const GroupInfo &groupInfo(PlotGroup group)
+{
+    static const GroupInfo groups[] = {
+        {QT_TRANSLATE_NOOP("ui::PlotsWidget", "Energies"), "energies",
+         QT_TRANSLATE_NOOP("ui::PlotsWidget", "energy [J]"),
+         {{"kinetic", "J"}, {"gravitational", "J"}, {"spring", "J"}, {"total", "J"}, {"lost since reset", "J"}}},
+        {QT_TRANSLATE_NOOP("ui::PlotsWidget", "Momentum"), "momentum",
+         QT_TRANSLATE_NOOP("ui::PlotsWidget", "momentum [kg·m/s]"),
+         {{"px", "kg·m/s"}, {"py", "kg·m/s"}, {"pz", "kg·m/s"}, {"|p|", "kg·m/s"}}},
+        {QT_TRANSLATE_NOOP("ui::PlotsWidget", "Selected particle: position"), "position",
+         QT_TRANSLATE_NOOP("ui::PlotsWidget", "position [m]"), {{"x", "m"}, {"y", "m"}, {"z", "m"}}},
+        {QT_TRANSLATE_NOOP("ui::PlotsWidget", "Selected particle: velocity"), "velocity",
+         QT_TRANSLATE_NOOP("ui::PlotsWidget", "velocity [m/s]"),
+         {{"vx", "m/s"}, {"vy", "m/s"}, {"vz", "m/s"}, {"|v|", "m/s"}}},
+    };
+    return groups[static_cast<std::size_t>(group)];
+}
+
+constexpr PlotGroup kGroups[] = {PlotGroup::Energies, PlotGroup::Momentum, PlotGroup::Position, PlotGroup::Velocity};
+
+bool isParticleGroup(PlotGroup group)
+{
+    return group == PlotGroup::Position || group == PlotGroup::Velocity;
+}
+
+// a 3-vector of a snapshot's floats as doubles, and its length
+std::vector<double> vectorSample(const std::vector<float> &values, std::size_t particle, bool withLength)
+{
+    std::vector<double> sample{values[3 * particle], values[3 * particle + 1], values[3 * particle + 2]};
+    if (withLength)
+        sample.push_back(std::sqrt(sample[0] * sample[0] + sample[1] * sample[1] + sample[2] * sample[2]));
+    return sample;
+}
+
+bool failWith(QString *error, const QString &reason)
+{
+    if (error)
+        *error = reason;
+    return false;
+}
+
+}  // namespace
+
+PlotsWidget::PlotsWidget(QWidget *parent)
+    : QWidget(parent),
+      m_series{PlotSeries(groupInfo(PlotGroup::Energies).curves), PlotSeries(groupInfo(PlotGroup::Momentum).curves),
+               PlotSeries(groupInfo(PlotGroup::Position).curves), PlotSeries(groupInfo(PlotGroup::Velocity).curves)},
+      m_groupBox(new QComboBox(this)), m_canvas(new PlotCanvas(this))
+{
+    // which quantities: one entry per group
+    m_groupBox->setObjectName(QStringLiteral("plotGroup"));
+    for (PlotGroup group : kGroups)
+        m_groupBox->addItem(tr(groupInfo(group).text), static_cast<int>(group));
+    m_groupBox->setToolTip(tr("The quantities plotted against time"));
+    connect(m_groupBox, &QComboBox::currentIndexChanged, this,
+            [this](int index) { setGroup(static_cast<PlotGroup>(m_groupBox->itemData(index).toInt())); });
+    m_canvas->setObjectName(QStringLiteral("plotCanvas"));
+
+    // exports, from the buttons or the canvas's context menu; the window chooses the file
+    m_exportPng = new QAction(tr("Export PNG…"), this);
+    m_exportPng->setObjectName(QStringLiteral("actionExportPlotPng"));
+    m_exportPng->setStatusTip(tr("Save the plot shown as a PNG image"));
+    connect(m_exportPng, &QAction::triggered, this, [this] { emit exportRequested(PlotExport::Png); });
+    m_exportCsv = new QAction(tr("Export CSV…"), this);
+    m_exportCsv->setObjectName(QStringLiteral("actionExportPlotCsv"));
+    m_exportCsv->setStatusTip(tr("Save the samples of the plot shown as CSV: step, time, then one column per curve"));
+    connect(m_exportCsv, &QAction::triggered, this, [this] { emit exportRequested(PlotExport::Csv); });
+    m_canvas->addAction(m_exportPng);
+    m_canvas->addAction(m_exportCsv);
+    m_canvas->setContextMenuPolicy(Qt::ActionsContextMenu);
+
+    // the box and the buttons above the canvas
+    auto *bar = new QHBoxLayout;
+    bar->addWidget(m_groupBox, 1);
+    for (QAction *action : {m_exportPng, m_exportCsv}) {
+        auto *button = new QToolButton(this);
+        button->setDefaultAction(action);
+        button->setObjectName(action->objectName().replace(QStringLiteral("action"), QStringLiteral("button")));
+        bar->addWidget(button);
+    }
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(bar);
+    layout->addWidget(m_canvas, 1);
+    showGroup();
+}
+
+void PlotsWidget::addFrame(const SimulationFrame &frame)
+{
+    if (!frame.snapshot)
+        return;
+    // a scene is being replaced: pass over the old one's frames, then start over
+    if (m_startOverAfter != 0) {
+        if (frame.appliedEdit < m_startOverAfter)
+            return;
+        m_startOverAfter = 0;
+        for (PlotSeries &series : m_series)
+            series.clear();
+    }
+
+    // a step scrubbed to on the timeline is of the past: the curves stay as the run drew them;
+    // once the run goes on from a step shown, what they drew after it is gone, as on the timeline
+    if (frame.timeline.scrubStep)
+        return;
+    if (frame.timeline.resumes != m_resumes) {
+        m_resumes = frame.timeline.resumes;
+        for (PlotSeries &series : m_series)
+            series.dropAfter(frame.timeline.resumedAt);
+    }
+
+    // energies, and what has gone since the last reset
+    const core::Snapshot &snapshot = *frame.snapshot;
+    const core::Energies &energies = snapshot.energies;
+    const double total = energies.total();
+    auto add = [&](PlotGroup group, const std::vector<double> &values) {
+        m_series[static_cast<std::size_t>(group)].add(snapshot.step, snapshot.time, values);
+    };
+    add(PlotGroup::Energies, {energies.kinetic, energies.gravitational, energies.spring, total,
+                              frame.initialEnergies.total() - total});
+    const Eigen::Vector3d &p = snapshot.momentum;
+    add(PlotGroup::Momentum, {p.x(), p.y(), p.z(), p.norm()});
+
+    // the selected particle, while the snapshot has it
+    const bool hasParticle = m_particle >= 0 && m_particle < snapshot.particleCount() &&
+                             snapshot.velocities.size() == snapshot.positions.size();
+    if (hasParticle) {
+        const auto at = static_cast<std::size_t>(m_particle);
+        add(PlotGroup::Position, vectorSample(snapshot.positions, at, false));
+        add(PlotGroup::Velocity, vectorSample(snapshot.velocities, at, true));
+    }
+    m_canvas->update();
+}
+
+void PlotsWidget::setParticle(int particle)
+{
+    if (particle == m_particle)
+        return;
+    m_particle = particle;
+    m_series[static_cast<std::size_t>(PlotGroup::Position)].clear();
+    m_series[static_cast<std::size_t>(PlotGroup::Velocity)].clear();
+    showGroup();
+}
+
+void PlotsWidget::startOverAfter(std::uint64_t edit)
+{
+    m_startOverAfter = edit;
+}
+
+void PlotsWidget::setGroup(PlotGroup group)
+{
+    m_group = group;
+    m_groupBox->setCurrentIndex(m_groupBox->findData(static_cast<int>(group)));
+    showGroup();
+}
+
+void PlotsWidget::showGroup()
+{
+    // the canvas draws the group's series, titled and labelled for it
+    const GroupInfo &info = groupInfo(m_group);
+    m_canvas->setSeries(&shownSeries());
+    m_canvas->setValueLabel(tr(info.valueLabel));
+    QString title;
+    QString tip;
+    QString empty = tr("Play (F4) or step (F6) the simulation to plot it");
+    if (m_group == PlotGroup::Energies) {
+        title = tr("lost since reset = total at the last reset − total now");
+        tip = tr("Energy lost since the last reset or scene load: to damping, drag and inelastic contacts, and also "
+                 "the integrator's own drift and work done by the mouse, the steering or edits");
+    } else if (isParticleGroup(m_group) && m_particle >= 0)
+        title = tr("Particle %1").arg(m_particle);
+    else if (isParticleGroup(m_group))
+        empty = tr("Select a particle to plot its position and velocity");
+    m_canvas->setTitle(title);
+    m_canvas->setToolTip(tip);
+    m_canvas->setEmptyText(empty);
+}
+
+bool PlotsWidget::savePng(const QString &path, QString *error) const
+{
+    // the canvas as drawn now, written atomically
+    const QImage image = m_canvas->grab().toImage();
+    QSaveFile file(path);
+    if (image.isNull() || !file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit()) {
+        const QString reason = image.isNull() ? tr("no image") : file.errorString();
+        return failWith(error, tr("Export PNG: cannot write %1: %2").arg(QDir::toNativeSeparators(path), reason));
+    }
+    return true;
+}
+
+bool PlotsWidget::saveCsv(const QString &path, QString *error) const
+{
+    // the shown series' samples, written atomically
+    const std::string text = shownSeries().csv();
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) ||
+        file.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()) || !file.commit())
+        return failWith(error,
+                        tr("Export CSV: cannot write %1: %2").arg(QDir::toNativeSeparators(path), file.errorString()));
+    return true;
+}
+
+QString PlotsWidget::suggestedName() const
+{
+    const QString name = QString::fromLatin1(groupInfo(m_group).fileName);
+    if (isParticleGroup(m_group) && m_particle >= 0)
+        return QStringLiteral("particle-%1-%2").arg(m_particle).arg(name);
+    return name;
+}
+
+}  // namespace ui

@@ -1,0 +1,105 @@
+#pragma once
+// SimulationController: the UI thread's handle on the simulation. It owns the worker thread, the
+// edit queue and the frame mailbox. Every request (scene, play, pause, step, reset, tilt, steer)
+// becomes an edit that the worker applies between two steps, so none of them ever blocks the UI;
+// frames come back through the latest-wins mailbox and a queued signal.
+
+#include "session/edit_queue.h"
+#include "session/latest_mailbox.h"
+#include "session/simulation_frame.h"
+
+#include <QObject>
+#include <QString>
+#include <cstdint>
+#include <memory>
+
+class QThread;
+
+namespace ui {
+
+class SimulationWorker;
+
+class SimulationController : public QObject {
+    Q_OBJECT
+
+public:
+    // m/s: the largest change a tilt makes to one velocity component
+    static constexpr double kTiltSpeed = 2.0;
+
+    explicit SimulationController(QObject *parent = nullptr);
+    ~SimulationController() override;
+
+    // each returns the edit's sequence number; frame()->appliedEdit reaches it once applied
+    std::uint64_t setScene(std::shared_ptr<const core::SceneDesc> scene, SceneChange change);
+    std::uint64_t play();
+    std::uint64_t pause();
+    std::uint64_t togglePlay();
+    std::uint64_t stepOnce();
+    std::uint64_t reset();
+    std::uint64_t tilt();
+    std::uint64_t steer(int particle, const Eigen::Vector3d &force);
+    // the Drag tool's mouse spring pulls particle toward target; particle -1 lets go
+    std::uint64_t grab(int particle, const Eigen::Vector3d &target);
+    // changes nothing, but the worker publishes a frame once it has applied every earlier edit
+    std::uint64_t sync();
+    // asks the worker to plan the integrator and substeps for a tolerance (m per sub-step) from its
+    // state; returns the request's number, which frame()->accuracyRequest reaches with the plan
+    std::uint64_t planAccuracy(double tolerance);
+    // asks the worker for a copy of its positions and velocities; returns the request's number,
+    // which frame()->captureRequest reaches with the captured state
+    std::uint64_t captureState();
+    // starts recording the session; stopRecording() ends it and returns the request's number,
+    // which frame()->recordingRequest reaches with the recording
+    std::uint64_t startRecording();
+    std::uint64_t stopRecording();
+
+    // the timeline: show the recorded state of a step (pauses), one step back, and the memory the
+    // recording may use (bytes; 0 turns it off)
+    std::uint64_t scrub(std::uint64_t step);
+    std::uint64_t stepBack();
+    std::uint64_t setTimelineBudget(std::size_t bytes);
+
+    // tilts are drawn from this seed: the n-th tilt after setTiltSeed(s) is the same every time
+    void setTiltSeed(std::uint64_t seed);
+
+    // what the UI last asked for (a blow-up also pauses)
+    bool isRunning() const { return m_running; }
+
+    // the newest frame received on the UI thread; null before the first
+    std::shared_ptr<const SimulationFrame> frame() const { return m_frame; }
+
+    // stops the worker thread and waits for it; called by the destructor, safe to call twice
+    void shutDown();
+    bool isShutDown() const { return m_shutDown; }
+    QThread *workerThread() const { return m_thread; }
+
+signals:
+    // a new frame() arrived
+    void frameChanged();
+    void runningChanged(bool running);
+    // the run blew up and paused; the message names the particle, the quantity, the step and time
+    void blewUp(const QString &message);
+
+private:
+    std::uint64_t post(Edit edit);
+    void setRunning(bool running);
+    void takeFrame();
+
+    EditQueue m_edits;
+    LatestMailbox<SimulationFrame> m_mailbox;
+    std::uint64_t m_recordingRequests = 0;
+    QThread *m_thread = nullptr;
+    SimulationWorker *m_worker = nullptr;
+    // the worker's signals to this side, cut on this thread at shutDown()
+    QMetaObject::Connection m_frameConnection;
+    QMetaObject::Connection m_blowUpConnection;
+    std::shared_ptr<const SimulationFrame> m_frame;
+    bool m_running = false;
+    bool m_shutDown = false;
+    std::uint64_t m_tiltSeed = 0;
+    std::uint64_t m_tiltCount = 0;
+    std::uint64_t m_accuracyRequests = 0;
+    std::uint64_t m_captureRequests = 0;
+};
+
+}  // namespace ui

@@ -1,0 +1,69 @@
+#pragma once
+// SimulationWorker: lives on the controller's worker thread. A QTimer ticks it while running; each
+// tick drains the edit queue, advances the simulation by the wall time elapsed (capped) and
+// publishes a frame to the mailbox. Only this object, on its thread, touches the core::State.
+
+#include "session/edit_queue.h"
+#include "session/latest_mailbox.h"
+#include "session/simulation_frame.h"
+#include "session/simulation_runner.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <atomic>
+
+class QTimer;
+
+namespace ui {
+
+class SimulationWorker : public QObject {
+    Q_OBJECT
+
+public:
+    // longest wall time one tick simulates: after a stall the run falls behind instead of racing
+    static constexpr double kMaxTickSeconds = 0.1;
+    // computing time one tick may spend on steps before it gives up what is still owed
+    static constexpr double kStepBudgetSeconds = 0.05;
+    // ms between ticks while running
+    static constexpr int kTickIntervalMs = 16;
+
+    SimulationWorker(EditQueue &edits, LatestMailbox<SimulationFrame> &mailbox);
+
+    // Posts the event that makes the worker apply pending edits now, running or not.
+    static void postWake(SimulationWorker *worker);
+    ~SimulationWorker() override;
+
+    // the UI side sets this before queueing wake(), so that a burst of edits queues one wake
+    std::atomic<bool> &wakePending() { return m_wakePending; }
+
+protected:
+    void customEvent(QEvent *event) override;
+
+signals:
+    // a frame waits in the mailbox, and the mailbox was empty before it
+    void frameReady();
+    // the run stopped because a value stopped being finite or bounded
+    void blewUp(const QString &message);
+
+private:
+    void wake();
+    void tick();
+    void publish();
+
+    EditQueue &m_edits;
+    LatestMailbox<SimulationFrame> &m_mailbox;
+    SimulationRunner m_runner;
+    QTimer *m_timer = nullptr;
+    QElapsedTimer m_clock;  // wall time since the previous tick while running
+    std::atomic<bool> m_wakePending = false;
+    std::uint64_t m_appliedEdit = 0;
+
+    // rates over the current measuring window
+    QElapsedTimer m_window;
+    double m_windowCredited = 0.0;  // s of wall time the run kept up with
+    std::uint64_t m_windowSteps = 0;
+    double m_realTimeFactor = 0.0;
+    double m_stepsPerSecond = 0.0;
+};
+
+}  // namespace ui

@@ -1,0 +1,713 @@
+#include "main_window.h"
+
+#include "ui/dialogs/accuracy_dialog.h"
+#include "ui/viewport/edit_tools.h"
+#include "ui/panels/inspector_panel.h"
+#include "ui/document/autosave.h"
+#include "ui/dialogs/help_dialog.h"
+#include "ui/document/initial_state_command.h"
+#include "ui/panels/parameters_panel.h"
+#include "ui/panels/plots_widget.h"
+#include "ui/document/recent_files.h"
+#include "ui/document/scene_commands.h"
+#include "ui/document/scene_document.h"
+#include "session/session_file.h"
+#include "ui/simulation/simulation_controller.h"
+#include "ui/panels/status_text.h"
+#include "ui/viewport/viewport.h"
+
+#include "core/accuracy_planner.h"
+#include "core/io/scene_file.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDateTime>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QImage>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QRegularExpression>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSignalBlocker>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
+#include <QUndoStack>
+#include <QUndoView>
+
+namespace ui {
+
+namespace {
+
+// the examples in the handout's order; any others found in the resources follow
+constexpr const char *kExampleOrder[] = {"particles", "springs", "collisions", "pool", "cloth", "tearable-cloth"};
+
+// how long the status bar shows what the accuracy planner picked, ms
+constexpr int kPlanMessageMs = 20000;
+
+// the right-hand docks' width on a first start (the view gets the rest), px
+constexpr int kDefaultDockWidth = 400;
+
+QString defaultScreenshotDirectory()
+{
+    const QString pictures = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+    return pictures.isEmpty() ? QDir::homePath() : pictures;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent), m_document(new SceneDocument(this)), m_controller(new SimulationController(this)),
+      m_recentFiles(new RecentFiles(this)), m_viewport(new Viewport(this)),
+      m_screenshotDirectory(defaultScreenshotDirectory())
+{
+    // the 3D view in the middle; it takes the keyboard focus when clicked
+    setObjectName(QStringLiteral("mainWindow"));
+    m_viewport->setObjectName(QStringLiteral("viewport"));
+    m_viewport->setFocusPolicy(Qt::StrongFocus);
+    m_viewport->setMinimumSize(320, 240);
+
+    createActions();
+    createTimeline();  // the view with the timeline under it, in the middle
+    createMenus();
+    createDocks();
+    createEditing();
+    createPlotsDock();
+    createStatusBar();
+    createAutosave();
+    // a scene file dropped anywhere on the window opens
+    setAcceptDrops(true);
+
+    // the document feeds the worker and the title; the worker feeds the views
+    connect(m_document, &SceneDocument::sceneChanged, this, &MainWindow::sceneChanged);
+    connect(m_document, &SceneDocument::modifiedChanged, this, &QWidget::setWindowModified);
+    connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateFileActions);
+    connect(m_controller, &SimulationController::frameChanged, this, &MainWindow::frameChanged);
+    connect(m_controller, &SimulationController::runningChanged, this, &MainWindow::runningChanged);
+    connect(m_controller, &SimulationController::blewUp, this, [this](const QString &message) {
+        showWarning(tr("%1 Paused at the last good state.").arg(message));
+    });
+    connect(m_parameters, &ParametersPanel::valueRefused, this, &MainWindow::showWarning);
+
+    readSettings();
+    QString error;
+    if (!openExample(QString::fromLatin1(kDefaultExample), &error))
+        showWarning(error);
+}
+
+MainWindow::~MainWindow()
+{
+    // the worker stops first, and nothing the children say while they are torn down may reach
+    // this window's slots: by then it is only a QWidget (UBSan's vptr check once caught a signal
+    // reaching a MainWindow slot of a window being destroyed while a scene was still loading)
+    m_controller->shutDown();
+    for (QObject *child : findChildren<QObject *>())
+        child->disconnect(this);
+    // the tools filter the viewport's events and read the document: they go first, before the
+    // children are torn down in creation order (the document before the viewport); the
+    // inspector reads the tools, so it goes before them
+    delete m_inspector;
+    m_inspector = nullptr;
+    delete m_tools;
+    m_tools = nullptr;
+}
+
+void MainWindow::createActions()
+{
+    QStyle *style = this->style();
+
+    // simulation
+    m_playAction = new QAction(style->standardIcon(QStyle::SP_MediaPlay), tr("&Play"), this);
+    m_playAction->setObjectName(QStringLiteral("actionPlay"));
+    m_playAction->setShortcut(Qt::Key_F4);
+    m_playAction->setStatusTip(tr("Start or pause the simulation"));
+    connect(m_playAction, &QAction::triggered, m_controller, &SimulationController::togglePlay);
+
+    m_stepAction = new QAction(style->standardIcon(QStyle::SP_MediaSkipForward), tr("&Step"), this);
+    m_stepAction->setObjectName(QStringLiteral("actionStep"));
+    m_stepAction->setShortcut(Qt::Key_F6);
+    m_stepAction->setStatusTip(tr("Advance one time step, then pause"));
+    connect(m_stepAction, &QAction::triggered, m_controller, &SimulationController::stepOnce);
+
+    m_resetAction = new QAction(style->standardIcon(QStyle::SP_MediaSkipBackward), tr("&Reset"), this);
+    m_resetAction->setObjectName(QStringLiteral("actionReset"));
+    m_resetAction->setShortcut(Qt::Key_F5);
+    m_resetAction->setStatusTip(tr("Back to the scene's initial state"));
+    connect(m_resetAction, &QAction::triggered, m_controller, &SimulationController::reset);
+
+    m_captureAction = new QAction(tr("&Use Current State as Initial"), this);
+    m_captureAction->setObjectName(QStringLiteral("actionUseCurrentState"));
+    m_captureAction->setStatusTip(
+        tr("Make the running positions and velocities the scene's initial conditions (undoable); Reset returns "
+           "to them"));
+    connect(m_captureAction, &QAction::triggered, this, &MainWindow::useCurrentStateAsInitial);
+
+    m_recordAction = new QAction(tr("&Record Session"), this);
+    m_recordAction->setObjectName(QStringLiteral("actionRecordSession"));
+    m_recordAction->setCheckable(true);
+    m_recordAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_recordAction->setStatusTip(tr("Record the run and every edit from now on; unchecking saves the recording, which "
+                                    "springlab-sim --replay runs again to the same bits"));
+    connect(m_recordAction, &QAction::toggled, this, &MainWindow::setRecording);
+
+    m_tiltAction = new QAction(tr("&Tilt"), this);
+    m_tiltAction->setObjectName(QStringLiteral("actionTilt"));
+    m_tiltAction->setShortcut(Qt::Key_T);
+    m_tiltAction->setStatusTip(tr("Kick every free particle with a random velocity"));
+    connect(m_tiltAction, &QAction::triggered, m_controller, &SimulationController::tilt);
+
+    m_collisionsAction = new QAction(tr("&Collisions"), this);
+    m_collisionsAction->setObjectName(QStringLiteral("actionCollisions"));
+    m_collisionsAction->setCheckable(true);
+    m_collisionsAction->setShortcut(Qt::Key_A);
+    m_collisionsAction->setStatusTip(tr("Switch plane and particle collisions on or off"));
+    connect(m_collisionsAction, &QAction::triggered, this, &MainWindow::toggleCollisions);
+
+    m_accuracyAction = new QAction(tr("&Accuracy..."), this);
+    m_accuracyAction->setObjectName(QStringLiteral("actionAccuracy"));
+    m_accuracyAction->setShortcut(Qt::Key_F7);
+    m_accuracyAction->setStatusTip(
+        tr("Type a local error per step; the cheapest integrator and substeps that keep under it are applied"));
+    connect(m_accuracyAction, &QAction::triggered, this, &MainWindow::showAccuracy);
+
+    // steering, for scenes with a steerable particle
+    struct SteerKey {
+        const char *name;
+        const char *text;
+        const char *tip;
+        Qt::Key key;
+        int turn;
+        int change;
+    };
+    const SteerKey steerKeys[] = {
+        {"actionSteerLeft", QT_TR_NOOP("Steer &Left"),
+         QT_TR_NOOP("Turn the push on the steerable particle 15° to the left, seen from above"), Qt::Key_Left, 1, 0},
+        {"actionSteerRight", QT_TR_NOOP("Steer R&ight"),
+         QT_TR_NOOP("Turn the push on the steerable particle 15° to the right, seen from above"), Qt::Key_Right, -1, 0},
+        {"actionSteerStronger", QT_TR_NOOP("Push &Harder"),
+         QT_TR_NOOP("Push the steerable particle harder (the pool's cue ball)"), Qt::Key_Up, 0, 1},
+        {"actionSteerWeaker", QT_TR_NOOP("Push &Softer"),
+         QT_TR_NOOP("Push the steerable particle more softly, down to not at all"), Qt::Key_Down, 0, -1},
+    };
+    for (const SteerKey &key : steerKeys) {
+        auto *action = new QAction(tr(key.text), this);
+        action->setObjectName(QString::fromLatin1(key.name));
+        action->setShortcut(key.key);
+        action->setStatusTip(tr(key.tip));
+        connect(action, &QAction::triggered, this, [this, key] { steer(key.turn, key.change); });
+        m_steerActions << action;
+    }
+}
+
+void MainWindow::createMenus()
+{
+    createFileMenu();
+    createEditMenu();
+
+    // simulation
+    QMenu *simulation = m_simulationMenu = menuBar()->addMenu(tr("&Simulation"));
+    simulation->addAction(m_playAction);
+    simulation->addAction(m_stepAction);
+    simulation->addAction(m_stepBackAction);
+    simulation->addAction(m_resetAction);
+    simulation->addAction(m_captureAction);
+    simulation->addAction(m_recordAction);
+    simulation->addSeparator();
+    simulation->addAction(m_tiltAction);
+    simulation->addAction(m_collisionsAction);
+    simulation->addAction(m_accuracyAction);
+    simulation->addSeparator();
+    simulation->addActions(m_steerActions);
+
+    // view: the camera, then the docks and the toolbar (added with them)
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    QAction *frameAll = m_viewMenu->addAction(tr("&Frame All"), m_viewport, &Viewport::frameAll);
+    frameAll->setObjectName(QStringLiteral("actionFrameAll"));
+    frameAll->setShortcuts({QKeySequence(Qt::Key_F), QKeySequence(Qt::Key_Home)});
+    frameAll->setStatusTip(tr("Point the camera at the whole scene"));
+    m_viewMenu->addSeparator();
+
+    // help
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *keys = help->addAction(tr("&Keyboard and Mouse"), this, &MainWindow::showHelp);
+    keys->setObjectName(QStringLiteral("actionHelp"));
+    keys->setShortcut(Qt::Key_F1);
+    keys->setStatusTip(tr("List every shortcut and mouse gesture"));
+    help->addAction(tr("&About Springlab"), this, &MainWindow::showAbout);
+
+    // toolbar
+    QToolBar *toolbar = addToolBar(tr("Simulation"));
+    toolbar->setObjectName(QStringLiteral("simulationToolBar"));
+    toolbar->addAction(m_playAction);
+    toolbar->addAction(m_stepAction);
+    toolbar->addAction(m_resetAction);
+    m_viewMenu->addAction(toolbar->toggleViewAction());
+}
+
+QWidget *MainWindow::inScrollArea(QWidget *content)
+{
+    // a dock's content scrolls rather than forcing the window taller when it grows
+    auto *scroll = new QScrollArea;
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    return scroll;
+}
+
+void MainWindow::createDocks()
+{
+    // parameters, scrollable when the window is short
+    m_parameters = new ParametersPanel(*m_document);
+    m_parametersDock = new QDockWidget(tr("Parameters"), this);
+    m_parametersDock->setObjectName(QStringLiteral("parametersDock"));
+    m_parametersDock->setWidget(inScrollArea(m_parameters));
+    addDockWidget(Qt::RightDockWidgetArea, m_parametersDock);
+    m_viewMenu->addAction(m_parametersDock->toggleViewAction());
+    createUndoHistoryDock();
+}
+
+void MainWindow::createEditMenu()
+{
+    // undo and redo of every scene change
+    m_editMenu = menuBar()->addMenu(tr("&Edit"));
+    QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("actionUndo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("actionRedo"));
+    // Ctrl+Shift+Z everywhere, and the platform's own key as well where it differs (Ctrl+Y)
+    QList<QKeySequence> redoKeys{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)};
+    for (const QKeySequence &key : QKeySequence::keyBindings(QKeySequence::Redo))
+        if (!redoKeys.contains(key))
+            redoKeys << key;
+    redo->setShortcuts(redoKeys);
+    m_editMenu->addAction(undo);
+    m_editMenu->addAction(redo);
+}
+
+void MainWindow::createUndoHistoryDock()
+{
+    // every step of the undo stack; a click goes back (or forward) to it. Hidden until asked for.
+    m_undoView = new QUndoView(m_document->undoStack());
+    m_undoView->setObjectName(QStringLiteral("undoView"));
+    m_undoView->setEmptyLabel(tr("<as opened>"));
+    m_undoDock = new QDockWidget(tr("Undo History"), this);
+    m_undoDock->setObjectName(QStringLiteral("undoHistoryDock"));
+    m_undoDock->setWidget(m_undoView);
+    addHiddenDock(m_undoDock, Qt::RightDockWidgetArea, "actionUndoHistory",
+                  tr("Show or hide the list of edits that undo and redo walk through"));
+}
+
+QAction *MainWindow::addHiddenDock(QDockWidget *dock, Qt::DockWidgetArea area, const char *actionName,
+                                   const QString &statusTip)
+{
+    // docked but hidden; View has the action that shows it
+    addDockWidget(area, dock);
+    dock->hide();
+    QAction *toggle = dock->toggleViewAction();
+    toggle->setObjectName(QString::fromLatin1(actionName));
+    toggle->setStatusTip(statusTip);
+    m_viewMenu->addAction(toggle);
+    return toggle;
+}
+
+void MainWindow::createStatusBar()
+{
+    // the latest warning on the left, the figures of the run on the right
+    auto label = [this](const char *name, int minimumWidth) {
+        auto *field = new QLabel(this);
+        field->setObjectName(QString::fromLatin1(name));
+        field->setMinimumWidth(minimumWidth);
+        return field;
+    };
+    m_warningLabel = label("statusWarning", 0);
+    m_steerLabel = label("statusSteer", 0);
+    m_timeLabel = label("statusTime", 100);
+    m_rateLabel = label("statusRate", 80);
+    m_stepsLabel = label("statusSteps", 90);
+    m_energyLabel = label("statusEnergy", 110);
+    m_errorLabel = label("statusError", 150);
+    m_driftLabel = label("statusDrift", 90);
+    m_timeLabel->setToolTip(tr("Simulated time"));
+    m_rateLabel->setToolTip(tr("Simulated seconds per second of wall-clock time"));
+    m_stepsLabel->setToolTip(tr("Time steps computed per second of wall-clock time"));
+    m_energyLabel->setToolTip(tr("Total energy: kinetic + gravitational + spring"));
+    m_driftLabel->setToolTip(tr("Change of the total energy since the last reset or scene load, relative to it "
+                                "(in joules when it is about zero)"));
+    statusBar()->addWidget(m_warningLabel, 1);
+    statusBar()->addPermanentWidget(m_steerLabel);
+    statusBar()->addPermanentWidget(m_timeLabel);
+    statusBar()->addPermanentWidget(m_rateLabel);
+    statusBar()->addPermanentWidget(m_stepsLabel);
+    statusBar()->addPermanentWidget(m_energyLabel);
+    statusBar()->addPermanentWidget(m_driftLabel);
+    statusBar()->addPermanentWidget(m_errorLabel);
+    m_steerLabel->hide();
+}
+
+void MainWindow::readSettings()
+{
+    QSettings settings;
+    settings.beginGroup(QStringLiteral("mainWindow"));
+    if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray()))
+        resize(1200, 800);
+    // the docks narrow by default: the view gets most of the window
+    if (!restoreState(settings.value(QStringLiteral("state")).toByteArray()))
+        resizeDocks({m_parametersDock}, {kDefaultDockWidth}, Qt::Horizontal);
+    settings.endGroup();
+    m_screenshotDirectory =
+        settings.value(QStringLiteral("screenshots/directory"), defaultScreenshotDirectory()).toString();
+}
+
+void MainWindow::writeSettings() const
+{
+    QSettings settings;
+    settings.beginGroup(QStringLiteral("mainWindow"));
+    settings.setValue(QStringLiteral("geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("state"), saveState());
+    settings.endGroup();
+    settings.setValue(QStringLiteral("screenshots/directory"), m_screenshotDirectory);
+    writeTimelineSettings(settings);
+}
+
+QStringList MainWindow::exampleNames()
+{
+    QStringList found = QDir(QStringLiteral(":/scenes")).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+    for (QString &name : found)
+        name.chop(5);  // ".json"
+    QStringList ordered;
+    for (const char *name : kExampleOrder)
+        if (found.removeOne(QString::fromLatin1(name)))
+            ordered << QString::fromLatin1(name);
+    return ordered + found;
+}
+
+QString MainWindow::saveScreenshot(QString *error)
+{
+    auto fail = [error](const QString &reason) {
+        if (error)
+            *error = reason;
+        return QString();
+    };
+    const QImage image = m_viewport->grabFramebuffer();
+    if (image.isNull())
+        return fail(tr("Screenshot: the 3D view has no image yet"));
+    const QDir directory(m_screenshotDirectory);
+    if (!directory.mkpath(QStringLiteral(".")))
+        return fail(tr("Screenshot: cannot create the folder %1").arg(QDir::toNativeSeparators(m_screenshotDirectory)));
+
+    // springlab-<scene>-<date>.png, numbered when several land in one second
+    QString scene = m_document->displayName();
+    scene.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_-]+")), QStringLiteral("-"));
+    const QString stem = QStringLiteral("springlab-%1-%2")
+                             .arg(scene, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
+    QString path = directory.filePath(stem + QStringLiteral(".png"));
+    for (int n = 2; QFileInfo::exists(path); ++n)
+        path = directory.filePath(QStringLiteral("%1-%2.png").arg(stem).arg(n));
+    if (!image.save(path, "PNG"))
+        return fail(tr("Screenshot: cannot write %1").arg(QDir::toNativeSeparators(path)));
+    statusBar()->showMessage(tr("Screenshot saved to %1").arg(QDir::toNativeSeparators(path)), 5000);
+    return path;
+}
+
+void MainWindow::setScreenshotDirectory(const QString &directory)
+{
+    m_screenshotDirectory = directory;
+}
+
+QString MainWindow::statusTime() const
+{
+    return m_timeLabel->text();
+}
+
+QString MainWindow::statusRate() const
+{
+    return m_rateLabel->text();
+}
+
+QString MainWindow::statusWarning() const
+{
+    return m_warningLabel->text();
+}
+
+QString MainWindow::statusError() const
+{
+    return m_errorLabel->text();
+}
+
+QString MainWindow::statusDrift() const
+{
+    return m_driftLabel->text();
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    writeSettings();
+    // a clean end: no recovery file is left for the next start
+    m_autosave->discard();
+    // stop the worker before the window goes: nothing may step once the views are gone
+    m_controller->shutDown();
+    event->accept();
+}
+
+void MainWindow::sceneChanged(SceneChange change)
+{
+    const core::SceneDesc &scene = m_document->scene();
+    const std::uint64_t sequence = m_controller->setScene(m_document->sharedScene(), change);
+    if (change != SceneChange::Parameters && change != SceneChange::InitialConditions)
+        m_viewport->setPlanes(scene.planes);
+    if (change == SceneChange::Replace) {
+        // a new scene: fresh steering, no old warning, and a view of all of it once it arrives
+        m_steering = Steering{};
+        m_warningLabel->clear();
+        m_frameAllAfter = sequence;
+        m_plots->startOverAfter(sequence);
+        // a plan still awaited was made for the old scene: drop it
+        if (m_accuracyRequest != 0 && m_accuracy)
+            m_accuracy->showPlan(core::AccuracyPlan{}, tr("Another scene was opened; plan again"));
+        m_accuracyRequest = 0;
+        m_captureRequest = 0;
+    }
+    {
+        const QSignalBlocker block(m_collisionsAction);
+        m_collisionsAction->setChecked(scene.settings.planeCollisions || scene.settings.particleCollisions);
+    }
+    updateSteerActions();
+    updateTitle();
+}
+
+void MainWindow::frameChanged()
+{
+    const std::shared_ptr<const SimulationFrame> frame = m_controller->frame();
+    if (!frame)
+        return;
+
+    // the accuracy plan asked for has come back: apply it
+    if (m_accuracyRequest != 0 && frame->accuracyRequest >= m_accuracyRequest && frame->accuracyPlan) {
+        m_accuracyRequest = 0;
+        applyPlan(*frame->accuracyPlan);
+    }
+    // so has the state asked for by Use Current State as Initial
+    if (m_recordingRequest != 0 && frame->recordingRequest >= m_recordingRequest) {
+        m_recordingRequest = 0;
+        if (frame->recording)
+            saveSessionRecording(*frame->recording);
+    }
+    if (m_captureRequest != 0 && frame->captureRequest >= m_captureRequest && frame->capturedState) {
+        m_captureRequest = 0;
+        applyCapturedState(*frame->capturedState);
+    }
+    if (frame->stability && frame->model)
+        m_parameters->showStability(*frame->stability, *frame->model);
+    // particles too fast for the pair contacts: said once as it starts, not over every later warning
+    const bool tooFast = !frame->pairSpeedWarning.empty();
+    if (tooFast && !m_pairSpeedWarned)
+        showWarning(QString::fromStdString(frame->pairSpeedWarning));
+    m_pairSpeedWarned = tooFast;
+    if (!frame->snapshot)
+        return;
+    m_viewport->setSnapshot(frame->snapshot);
+    showTimeline(*frame);
+    m_plots->addFrame(*frame);
+    if (m_frameAllAfter != 0 && frame->appliedEdit >= m_frameAllAfter) {
+        m_frameAllAfter = 0;
+        m_viewport->frameAll();
+    }
+
+    // the figures of the run
+    const core::Snapshot &snapshot = *frame->snapshot;
+    m_timeLabel->setText(timeText(snapshot.time));
+    m_rateLabel->setText(rateText(frame->running, frame->realTimeFactor));
+    m_stepsLabel->setText(stepsText(frame->running, frame->stepsPerSecond));
+    m_energyLabel->setText(energyText(snapshot.energies.total()));
+    m_driftLabel->setText(driftText(frame->initialEnergies, snapshot.energies.total()));
+    m_errorLabel->setText(localErrorText(frame->localError));
+    m_errorLabel->setToolTip(tr("Local position error of one step of the integrator (one sub-step), estimated by "
+                                "step doubling at step %1; the estimates take %2 % of the computing time")
+                                 .arg(frame->localErrorStep)
+                                 .arg(100.0 * frame->estimateShare, 0, 'f', 2));
+}
+
+void MainWindow::runningChanged(bool running)
+{
+    m_playAction->setText(running ? tr("&Pause") : tr("&Play"));
+    m_playAction->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+}
+
+void MainWindow::showWarning(const QString &message)
+{
+    m_warningLabel->setText(message);
+    m_warningLabel->setToolTip(message);
+}
+
+void MainWindow::updateTitle()
+{
+    setWindowTitle(tr("%1[*] — Springlab").arg(m_document->displayName()));
+    setWindowModified(m_document->isModified());
+}
+
+void MainWindow::updateSteerActions()
+{
+    const core::SceneDesc &scene = m_document->scene();
+    const bool steerable = scene.steerable >= 0 && scene.steerable < static_cast<int>(scene.particles.size());
+    for (QAction *action : m_steerActions)
+        action->setEnabled(steerable);
+    m_steerLabel->setVisible(steerable);
+    if (steerable) {
+        const double mass = scene.particles[static_cast<std::size_t>(scene.steerable)].mass;
+        m_steerLabel->setText(tr("push %1 N towards %2°")
+                                  .arg(m_steering.strength(mass), 0, 'g', 4)
+                                  .arg(m_steering.angle, 0, 'f', 0));
+    }
+}
+
+void MainWindow::chooseScreenshotDirectory()
+{
+    const QString directory =
+        QFileDialog::getExistingDirectory(this, tr("Folder for screenshots"), m_screenshotDirectory);
+    if (!directory.isEmpty())
+        m_screenshotDirectory = directory;
+}
+
+void MainWindow::showHelp()
+{
+    HelpDialog dialog(*menuBar(), this);
+    dialog.exec();
+}
+
+void MainWindow::showAbout()
+{
+    QMessageBox::about(this, tr("About Springlab"),
+                       tr("<p><b>Springlab %1</b></p><p>An editor for particle and mass-spring physics: "
+                          "gravity, drag, damped springs and collisions, simulated live.</p>")
+                           .arg(QApplication::applicationVersion()));
+}
+
+void MainWindow::toggleCollisions(bool on)
+{
+    core::Settings settings = m_document->scene().settings;
+    settings.planeCollisions = on;
+    settings.particleCollisions = on;
+    m_document->undoStack()->push(new SettingsCommand(*m_document, on ? tr("Collisions on") : tr("Collisions off"),
+                                                      QStringLiteral("collisions"), settings));
+    statusBar()->showMessage(on ? tr("Collisions on") : tr("Collisions off"), 3000);
+}
+
+void MainWindow::showAccuracy()
+{
+    if (!m_accuracy) {
+        m_accuracy = new AccuracyDialog(this);
+        connect(m_accuracy, &AccuracyDialog::planRequested, this, &MainWindow::planAccuracy);
+    }
+    m_accuracy->show();
+    m_accuracy->raise();
+    m_accuracy->activateWindow();
+}
+
+void MainWindow::planAccuracy(double tolerance)
+{
+    // the worker plans from its own state; the answer comes back in a frame
+    m_accuracyRequest = m_controller->planAccuracy(tolerance);
+    if (m_accuracy)
+        m_accuracy->setPlanning(true);
+}
+
+void MainWindow::applyPlan(const core::AccuracyPlan &plan)
+{
+    // the pick, integrator and substeps together, is one step of undo
+    QString summary = planText(plan);
+    if (const core::PlanCandidate *pick = plan.pick()) {
+        core::Settings settings = m_document->scene().settings;
+        if (settings.integrator == pick->integrator && settings.substeps == pick->substeps) {
+            summary += tr("; already in use");
+        } else {
+            settings.integrator = pick->integrator;
+            settings.substeps = pick->substeps;
+            const std::string_view name = core::integratorName(pick->integrator);
+            m_document->undoStack()->push(new SettingsCommand(
+                *m_document,
+                tr("Accuracy: %1 with %2 substeps")
+                    .arg(QString::fromLatin1(name.data(), qsizetype(name.size())))
+                    .arg(pick->substeps),
+                QString(), settings));
+        }
+    }
+    statusBar()->showMessage(summary, kPlanMessageMs);
+    if (m_accuracy)
+        m_accuracy->showPlan(plan, summary);
+}
+
+void MainWindow::setRecording(bool on)
+{
+    if (on) {
+        m_controller->startRecording();
+        statusBar()->showMessage(tr("Recording the session; Ctrl+R again to stop and save it"));
+    } else {
+        // the worker hands the recording over in a frame
+        m_recordingRequest = m_controller->stopRecording();
+    }
+}
+
+void MainWindow::saveSessionRecording(const SessionRecording &recording)
+{
+    const QString suggested = QDir::home().filePath(m_document->displayName() + QStringLiteral(".replay.json"));
+    const QString path = chooseFile(FileDialogMode::Save, tr("Save session recording"), suggested);
+    if (path.isEmpty())
+        return;
+    if (const QString error = saveRecording(path, recording); !error.isEmpty()) {
+        ask(QMessageBox::Warning, tr("Save session recording"), error);
+        return;
+    }
+    statusBar()->showMessage(tr("Saved the recording of %1 steps and %2 edits to %3; springlab-sim --replay runs it")
+                                 .arg(recording.steps)
+                                 .arg(recording.entries.size())
+                                 .arg(QDir::toNativeSeparators(path)),
+                             10000);
+}
+
+void MainWindow::useCurrentStateAsInitial()
+{
+    // the worker copies its state out; the answer comes back in a frame
+    m_captureRequest = m_controller->captureState();
+}
+
+void MainWindow::applyCapturedState(const CapturedState &captured)
+{
+    // a scene replaced or given other particles since the request: the state no longer fits
+    const core::State &state = captured.state;
+    if (!captured.scene || state.particleCount() != static_cast<int>(m_document->scene().particles.size())) {
+        showWarning(tr("Use current state as initial: the scene changed meanwhile; nothing was changed"));
+        return;
+    }
+    m_document->undoStack()->push(new InitialStateCommand(
+        *m_document, tr("Use state at t = %1 s as initial").arg(state.time, 0, 'g', 4), state));
+    statusBar()->showMessage(
+        tr("The state at t = %1 s is now the initial state; Reset (F5) returns to it").arg(state.time, 0, 'g', 4),
+        kPlanMessageMs);
+}
+
+void MainWindow::steer(int turn, int change)
+{
+    const core::SceneDesc &scene = m_document->scene();
+    if (scene.steerable < 0 || scene.steerable >= static_cast<int>(scene.particles.size()))
+        return;
+    m_steering.turn(turn);
+    m_steering.change(change);
+    const double mass = scene.particles[static_cast<std::size_t>(scene.steerable)].mass;
+    m_controller->steer(scene.steerable, m_steering.force(mass));
+    updateSteerActions();
+}
+
+}  // namespace ui
