@@ -9,6 +9,7 @@
 #include "ui/export/export_dialog.h"
 #include "ui/dialogs/help_dialog.h"
 #include "ui/export/image_sequence.h"
+#include "ui/export/exporter.h"
 #include "ui/window/main_window.h"
 #include "ui/document/scene_document.h"
 #include "ui/simulation/simulation_controller.h"
@@ -199,7 +200,7 @@ void TestExport::browseAndExport(ui::ExportDialog *dialog, const QString &path)
 void TestExport::exportAndWait(ui::ExportDialog *dialog, const QString &path)
 {
     // the export starts from the dialog and runs to its end
-    QSignalSpy finished(m_window, &ui::MainWindow::exportFinished);
+    QSignalSpy finished(m_window->exporter(), &ui::Exporter::finished);
     browseAndExport(dialog, path);
     QVERIFY(finished.count() == 1 || finished.wait(120000));
     m_exportOk = finished.first().at(0).toBool();
@@ -283,7 +284,7 @@ void TestExport::sequenceShowsTheStepAtEachFrameTime()
     QCOMPARE(frame->snapshot->step, std::uint64_t(9));
     QCOMPARE(frame->snapshot->time, 9 * kTimeStep);
     QVERIFY(!m_window->controller()->isRunning());
-    QVERIFY(!m_window->isExporting());
+    QVERIFY(!m_window->exporter()->isExporting());
 }
 
 void TestExport::sequenceSaysClearlyWhenFfmpegIsNotInstalled()
@@ -303,10 +304,10 @@ void TestExport::sequenceSaysClearlyWhenFfmpegIsNotInstalled()
     dialog->reject();
 
     // asked for an MP4 anyway: the frames are written, and the end says why there is no MP4
-    QSignalSpy finished(m_window, &ui::MainWindow::exportFinished);
+    QSignalSpy finished(m_window->exporter(), &ui::Exporter::finished);
     const QString folder = m_files.filePath(u"no-ffmpeg"_s);
     QString error;
-    QVERIFY2(m_window->startSequenceExport({folder, 30.0, 0.1, QSize(96, 64), true}, &error), qPrintable(error));
+    QVERIFY2(m_window->exporter()->startSequenceExport({folder, 30.0, 0.1, QSize(96, 64), true}, &error), qPrintable(error));
     QVERIFY(finished.wait(60000));
     QVERIFY(!finished.first().at(0).toBool());
     const QString message = finished.first().at(1).toString();
@@ -335,11 +336,11 @@ void TestExport::sequenceMakesAnMp4WhereFfmpegIsInstalled()
 void TestExport::cancelStopsTheSequence()
 {
     // a long sequence, cancelled by the progress dialog's button once frames are coming
-    QSignalSpy finished(m_window, &ui::MainWindow::exportFinished);
+    QSignalSpy finished(m_window->exporter(), &ui::Exporter::finished);
     const QString folder = m_files.filePath(u"cancelled"_s);
     const int frames = ui::sequenceFrameCount(30.0, 10.0);
-    QVERIFY(m_window->startSequenceExport({folder, 30.0, 10.0, QSize(64, 48), false}));
-    QVERIFY(m_window->isExporting());
+    QVERIFY(m_window->exporter()->startSequenceExport({folder, 30.0, 10.0, QSize(64, 48), false}));
+    QVERIFY(m_window->exporter()->isExporting());
     QProgressDialog *progress = m_window->findChild<QProgressDialog *>(u"exportProgress"_s);
     QVERIFY(progress);
     QTRY_VERIFY(progress->isVisible() && progress->value() >= 2);
@@ -356,7 +357,7 @@ void TestExport::cancelStopsTheSequence()
     QCOMPARE_GE(written, 2);
     QCOMPARE_LT(written, frames);
     QVERIFY2(message.contains(u"%1 frame"_s.arg(written)), qPrintable(message));
-    QVERIFY(!m_window->isExporting());
+    QVERIFY(!m_window->exporter()->isExporting());
 }
 
 void TestExport::traceHasARowPerParticleAndExportedStep()

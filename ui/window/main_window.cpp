@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "ui/export/exporter.h"
+
 #include "ui/dialogs/accuracy_dialog.h"
 #include "ui/viewport/edit_tools.h"
 #include "ui/panels/inspector_panel.h"
@@ -73,6 +75,11 @@ MainWindow::MainWindow(QWidget *parent)
     m_viewport->setObjectName(QStringLiteral("viewport"));
     m_viewport->setFocusPolicy(Qt::StrongFocus);
     m_viewport->setMinimumSize(320, 240);
+
+    // File › Export, writing where screenshots go
+    m_exporter = new Exporter(*m_document, *m_controller, *m_viewport, m_prompts,
+                              [this] { return m_screenshotDirectory; }, this);
+    connect(m_exporter, &Exporter::statusMessage, statusBar(), &QStatusBar::showMessage);
 
     createActions();
     createTimeline();  // the view with the timeline under it, in the middle

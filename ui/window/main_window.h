@@ -7,7 +7,7 @@
 // main_window_files.cpp, and File › Export (an image of any size, an image sequence and MP4 of the
 // run, a trace) in main_window_export.cpp.
 
-#include "ui/export/export_settings.h"
+#include "ui/dialogs/prompts.h"
 #include "ui/simulation/steering.h"
 
 #include <QMainWindow>
@@ -24,7 +24,6 @@ class QLabel;
 class QMenu;
 class QDockWidget;
 class QMimeData;
-class QProgressDialog;
 class QToolBar;
 class QSettings;
 class QUndoView;
@@ -39,7 +38,7 @@ namespace ui {
 class AccuracyDialog;
 class EditTools;
 class GenerateDialog;
-class ExportRun;
+class Exporter;
 class InspectorPanel;
 class Autosave;
 class ParametersPanel;
@@ -51,7 +50,6 @@ class SceneDocument;
 class SimulationController;
 struct SimulationFrame;
 class TimelineBar;
-class VideoEncoder;
 class Viewport;
 enum class SceneChange;
 enum class PlotExport;
@@ -67,17 +65,11 @@ public:
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    // every question and message the window shows goes through this function, and the file
-    // dialogs through the next, so that tests can answer them without a modal dialog; the
-    // defaults show a QMessageBox and a QFileDialog
-    using MessageBoxFunction =
-        std::function<QMessageBox::StandardButton(QMessageBox::Icon icon, const QString &title, const QString &text,
-                                                  QMessageBox::StandardButtons buttons,
-                                                  QMessageBox::StandardButton defaultButton)>;
-    enum class FileDialogMode { Open, Save, Folder };
-    // returns the chosen path (a folder's for Folder), or an empty string when cancelled
-    using FileDialogFunction =
-        std::function<QString(FileDialogMode mode, const QString &title, const QString &suggestedPath)>;
+    // every question and message the window shows goes through its Prompts, so that tests can
+    // answer them without a modal dialog (ui/dialogs/prompts.h)
+    using MessageBoxFunction = Prompts::MessageBoxFunction;
+    using FileDialogMode = Prompts::FileDialogMode;
+    using FileDialogFunction = Prompts::FileDialogFunction;
     void setMessageBoxFunction(MessageBoxFunction function);
     void setFileDialogFunction(FileDialogFunction function);
 
@@ -115,17 +107,8 @@ public:
     QString screenshotDirectory() const { return m_screenshotDirectory; }
     void setScreenshotDirectory(const QString &directory);
 
-    // File › Export (main_window_export.cpp). The view drawn at any size into a PNG; false and the
-    // reason if not written
-    bool exportImage(const ImageExport &settings, QString *error = nullptr);
-    // an image sequence of the run from its current state, then an MP4 of it if asked for and
-    // ffmpeg is installed; a trace of the run as CSV. Both run on, with a progress dialog that
-    // can cancel them, and end with exportFinished; false (and error) if they cannot start
-    bool startSequenceExport(const SequenceExport &settings, QString *error = nullptr);
-    bool startTraceExport(const TraceExport &settings, QString *error = nullptr);
-    bool isExporting() const { return m_export != nullptr || m_encoder != nullptr; }
-    // cancels what is being exported, as the progress dialog's Cancel does
-    void cancelExport();
+    // File › Export (ui/export/exporter.h)
+    Exporter *exporter() const { return m_exporter; }
 
     RecentFiles *recentFiles() const { return m_recentFiles; }
     Autosave *autosave() const { return m_autosave; }
@@ -160,11 +143,6 @@ public:
     QString statusWarning() const;
     QString statusError() const;
     QString statusDrift() const;
-
-signals:
-    // File › Export's sequence or trace ended: ok when everything asked for was written; the
-    // message says what was written, or why not (cancelled, failed, ffmpeg not found)
-    void exportFinished(bool ok, const QString &message);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -219,17 +197,6 @@ private:
     void saveSessionRecording(const SessionRecording &recording);
     void exportPlot(PlotExport format);
 
-    // export (main_window_export.cpp)
-    void createExportMenu(QMenu *file);
-    void showExportDialog(ExportKind kind);
-    // what an export wrote, told once it ends: frames is how many export steps were handled;
-    // error is set if writing failed at the end
-    using ExportSummary = std::function<QString(int frames, QString *error)>;
-    bool beginExport(ExportRun *run, const QString &label, ExportSummary summary,
-                     std::optional<SequenceExport> video = std::nullopt);
-    void encodeVideo(const SequenceExport &settings, const QString &written);
-    void finishExport(bool ok, const QString &message);
-
     void chooseScreenshotDirectory();
     void showHelp();
     void showAbout();
@@ -245,8 +212,7 @@ private:
     SimulationController *m_controller = nullptr;
     RecentFiles *m_recentFiles = nullptr;
     Autosave *m_autosave = nullptr;
-    MessageBoxFunction m_messageBox;
-    FileDialogFunction m_fileDialog;
+    Prompts m_prompts{this};
     std::uint64_t m_captureRequest = 0;
     std::uint64_t m_recordingRequest = 0;  // the recording awaited from the worker; 0: none  // the captured state awaited from the worker; 0: none
     bool m_pairSpeedWarned = false;      // the latest frame's particles were past the pair speed limit
@@ -264,9 +230,7 @@ private:
     GenerateDialog *m_generate = nullptr;
     std::uint64_t m_accuracyRequest = 0;  // the plan awaited from the worker; 0: none
     QString m_screenshotDirectory;
-    ExportRun *m_export = nullptr;               // the sequence or trace being exported
-    VideoEncoder *m_encoder = nullptr;           // ffmpeg making the MP4 after a sequence
-    QProgressDialog *m_exportProgress = nullptr; // while either runs
+    Exporter *m_exporter = nullptr;
     Steering m_steering;
     std::uint64_t m_frameAllAfter = 0;  // frame the view once the worker has applied this edit
 

@@ -4,6 +4,8 @@
 
 #include "main_window.h"
 
+#include "ui/export/exporter.h"
+
 #include "ui/document/autosave.h"
 #include "ui/document/recent_files.h"
 #include "ui/document/scene_document.h"
@@ -136,7 +138,7 @@ void MainWindow::createFileMenu()
     screenshot->setShortcut(Qt::Key_F2);
     screenshot->setStatusTip(tr("Save the 3D view as a PNG in the screenshot folder"));
     file->addAction(tr("Screenshot &Folder..."), this, &MainWindow::chooseScreenshotDirectory);
-    createExportMenu(file);
+    m_exporter->addMenu(file);
     file->addSeparator();
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setObjectName(QStringLiteral("actionQuit"));
@@ -153,40 +155,25 @@ void MainWindow::createAutosave()
 
 void MainWindow::setMessageBoxFunction(MessageBoxFunction function)
 {
-    m_messageBox = std::move(function);
+    m_prompts.setMessageBoxFunction(std::move(function));
 }
 
 void MainWindow::setFileDialogFunction(FileDialogFunction function)
 {
-    m_fileDialog = std::move(function);
+    m_prompts.setFileDialogFunction(std::move(function));
 }
 
 QMessageBox::StandardButton MainWindow::ask(QMessageBox::Icon icon, const QString &title, const QString &text,
                                             QMessageBox::StandardButtons buttons,
                                             QMessageBox::StandardButton defaultButton)
 {
-    if (m_messageBox)
-        return m_messageBox(icon, title, text, buttons, defaultButton);
-    QMessageBox box(icon, title, text, buttons, this);
-    box.setDefaultButton(defaultButton);
-    return static_cast<QMessageBox::StandardButton>(box.exec());
+    return m_prompts.ask(icon, title, text, buttons, defaultButton);
 }
 
 QString MainWindow::chooseFile(FileDialogMode mode, const QString &title, const QString &suggestedPath,
                                const QString &filter)
 {
-    if (m_fileDialog)
-        return m_fileDialog(mode, title, suggestedPath);
-    const QString files = filter.isEmpty() ? tr("Springlab scenes (*.json)") : filter;
-    switch (mode) {
-    case FileDialogMode::Open:
-        return QFileDialog::getOpenFileName(this, title, suggestedPath, files);
-    case FileDialogMode::Save:
-        return QFileDialog::getSaveFileName(this, title, suggestedPath, files);
-    case FileDialogMode::Folder:
-        return QFileDialog::getExistingDirectory(this, title, suggestedPath);
-    }
-    return {};
+    return m_prompts.chooseFile(mode, title, suggestedPath, filter);
 }
 
 core::SceneDesc MainWindow::newScene()

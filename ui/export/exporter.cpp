@@ -1,16 +1,13 @@
-// MainWindow's File › Export: the view as a PNG of any size (an offscreen framebuffer), an image
-// sequence of the run with an MP4 of it where ffmpeg is installed, and the run's trace as CSV.
-// The sequence and the trace step the worker's run from where it is (ExportRun), with a progress
-// dialog that can cancel them; the run is left paused at the last step exported.
+#include "exporter.h"
 
-#include "main_window.h"
+#include "export_dialog.h"
+#include "export_run.h"
+#include "image_sequence.h"
+#include "video_encoder.h"
 
-#include "ui/export/export_dialog.h"
-#include "ui/export/export_run.h"
-#include "ui/export/image_sequence.h"
+#include "ui/dialogs/prompts.h"
 #include "ui/document/scene_document.h"
 #include "ui/simulation/simulation_controller.h"
-#include "ui/export/video_encoder.h"
 #include "ui/viewport/viewport.h"
 
 #include "core/io/trace_writer.h"
@@ -21,7 +18,6 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QProgressDialog>
-#include <QStatusBar>
 
 #include <cmath>
 #include <limits>
@@ -55,50 +51,57 @@ QString videoPath(const QString &folder)
 
 }  // namespace
 
-void MainWindow::createExportMenu(QMenu *file)
+Exporter::Exporter(SceneDocument &document, SimulationController &controller, Viewport &viewport, const Prompts &prompts,
+                   std::function<QString()> folder, QWidget *window)
+    : QObject(window), m_document(document), m_controller(controller), m_viewport(viewport), m_prompts(prompts),
+      m_folder(std::move(folder)), m_window(window)
+{
+}
+
+void Exporter::addMenu(QMenu *file)
 {
     QMenu *menu = file->addMenu(tr("E&xport"));
     menu->setObjectName(QStringLiteral("exportMenu"));
-    QAction *image = menu->addAction(tr("&Image..."), this, [this] { showExportDialog(ExportKind::Image); });
+    QAction *image = menu->addAction(tr("&Image..."), this, [this] { showDialog(ExportKind::Image); });
     image->setObjectName(QStringLiteral("actionExportImage"));
     image->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F2));
     image->setStatusTip(tr("Save the 3D view as a PNG of any size (drawn again offscreen, same camera)"));
     QAction *sequence =
-        menu->addAction(tr("Image &Sequence..."), this, [this] { showExportDialog(ExportKind::Sequence); });
+        menu->addAction(tr("Image &Sequence..."), this, [this] { showDialog(ExportKind::Sequence); });
     sequence->setObjectName(QStringLiteral("actionExportSequence"));
     sequence->setStatusTip(tr("Run on from here and save a PNG per frame, and an MP4 where ffmpeg is installed"));
-    QAction *trace = menu->addAction(tr("&Trace CSV..."), this, [this] { showExportDialog(ExportKind::Trace); });
+    QAction *trace = menu->addAction(tr("&Trace CSV..."), this, [this] { showDialog(ExportKind::Trace); });
     trace->setObjectName(QStringLiteral("actionExportTrace"));
     trace->setStatusTip(tr("Run on from here and save positions and velocities as springlab-sim --trace does"));
 }
 
-void MainWindow::showExportDialog(ExportKind kind)
+void Exporter::showDialog(ExportKind kind)
 {
     if (isExporting()) {
-        ask(QMessageBox::Information, tr("Export"), tr("An export is running; cancel it or wait for it first."));
+        m_prompts.ask(QMessageBox::Information, tr("Export"), tr("An export is running; cancel it or wait for it first."));
         return;
     }
 
     // the path through the window's file dialog (the tests' hook), with the right filter
-    const QString stem = QDir(m_screenshotDirectory).filePath(m_document->displayName());
+    const QString stem = QDir(m_folder()).filePath(m_document.displayName());
     auto browse = [this, kind](const QString &current) {
         switch (kind) {
         case ExportKind::Image:
-            return chooseFile(FileDialogMode::Save, tr("Export image"), current, tr("PNG images (*.png)"));
+            return m_prompts.chooseFile(Prompts::FileDialogMode::Save, tr("Export image"), current, tr("PNG images (*.png)"));
         case ExportKind::Sequence:
-            return chooseFile(FileDialogMode::Folder, tr("Folder for the frames"), current);
+            return m_prompts.chooseFile(Prompts::FileDialogMode::Folder, tr("Folder for the frames"), current);
         case ExportKind::Trace:
-            return chooseFile(FileDialogMode::Save, tr("Export trace"), current, tr("CSV files (*.csv)"));
+            return m_prompts.chooseFile(Prompts::FileDialogMode::Save, tr("Export trace"), current, tr("CSV files (*.csv)"));
         }
         return QString();
     };
-    auto *dialog = new ExportDialog(kind, browse, this);
+    auto *dialog = new ExportDialog(kind, browse, m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    const QSize viewSize = m_viewport->size() * m_viewport->devicePixelRatio();
+    const QSize viewSize = m_viewport.size() * m_viewport.devicePixelRatio();
     dialog->setImageSize(kind == ExportKind::Image ? 2 * viewSize : viewSize);
-    dialog->setMaximumSide(m_viewport->maxImageSide());
+    dialog->setMaximumSide(m_viewport.maxImageSide());
     dialog->setFfmpegFound(!VideoEncoder::findFfmpeg().isEmpty());
-    dialog->setTimeStep(m_document->scene().settings.timeStep);
+    dialog->setTimeStep(m_document.scene().settings.timeStep);
     dialog->setPath(stem + (kind == ExportKind::Image    ? QStringLiteral(".png")
                             : kind == ExportKind::Trace ? QStringLiteral(".csv")
                                                         : QStringLiteral("-frames")));
@@ -119,36 +122,36 @@ void MainWindow::showExportDialog(ExportKind kind)
             break;
         }
         if (!ok && !error.isEmpty())
-            ask(QMessageBox::Warning, dialog->windowTitle(), error);
+            m_prompts.ask(QMessageBox::Warning, dialog->windowTitle(), error);
     });
     dialog->open();
 }
 
-bool MainWindow::exportImage(const ImageExport &settings, QString *error)
+bool Exporter::exportImage(const ImageExport &settings, QString *error)
 {
     QString why;
-    const QImage image = m_viewport->renderImage(settings.size, &why);
+    const QImage image = m_viewport.renderImage(settings.size, &why);
     if (image.isNull())
         return failWith(error, tr("Export image: %1").arg(why));
     if (!image.save(settings.path, "PNG"))
         return failWith(error, tr("Export image: cannot write %1").arg(nativePath(settings.path)));
-    statusBar()->showMessage(tr("Saved a %1 × %2 px image to %3")
-                                 .arg(image.width())
-                                 .arg(image.height())
-                                 .arg(nativePath(settings.path)),
-                             kExportMessageMs);
+    emit statusMessage(tr("Saved a %1 × %2 px image to %3")
+                           .arg(image.width())
+                           .arg(image.height())
+                           .arg(nativePath(settings.path)),
+                       kExportMessageMs);
     return true;
 }
 
-bool MainWindow::startSequenceExport(const SequenceExport &settings, QString *error)
+bool Exporter::startSequenceExport(const SequenceExport &settings, QString *error)
 {
     if (isExporting())
         return failWith(error, tr("Export image sequence: an export is running already"));
-    const double timeStep = m_document->scene().settings.timeStep;
+    const double timeStep = m_document.scene().settings.timeStep;
     if (!(settings.fps > 0.0) || !(settings.duration >= 0.0) || !std::isfinite(settings.fps * settings.duration))
         return failWith(error, tr("Export image sequence: the frame rate must be above 0 and the duration at least 0"));
     // one frame drawn now proves that the size can be drawn at all
-    if (QString why; m_viewport->renderImage(settings.size, &why).isNull())
+    if (QString why; m_viewport.renderImage(settings.size, &why).isNull())
         return failWith(error, tr("Export image sequence: %1").arg(why));
 
     // the folder, without frames left from an earlier sequence (ffmpeg would append them)
@@ -156,7 +159,7 @@ bool MainWindow::startSequenceExport(const SequenceExport &settings, QString *er
     if (folder.isEmpty() || !QDir().mkpath(folder))
         return failWith(error, tr("Export image sequence: cannot create the folder %1").arg(nativePath(folder)));
     if (const QStringList old = sequenceFramesIn(folder); !old.isEmpty()) {
-        if (ask(QMessageBox::Question, tr("Export image sequence"),
+        if (m_prompts.ask(QMessageBox::Question, tr("Export image sequence"),
                 tr("%1 already holds %2 frames (frame-*.png). Replace them?").arg(nativePath(folder)).arg(old.size()),
                 QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel) != QMessageBox::Yes)
             return failWith(error, QString());
@@ -167,11 +170,11 @@ bool MainWindow::startSequenceExport(const SequenceExport &settings, QString *er
     // each frame drawn offscreen at the size asked for, with the view's camera
     const int count = sequenceFrameCount(settings.fps, settings.duration);
     auto *run = new ExportRun(
-        *m_controller, sequenceFrameSteps(settings.fps, count, timeStep),
+        m_controller, sequenceFrameSteps(settings.fps, count, timeStep),
         [this, settings](const std::shared_ptr<const core::Snapshot> &snapshot, int index) {
-            m_viewport->setSnapshot(snapshot);
+            m_viewport.setSnapshot(snapshot);
             QString why;
-            const QImage image = m_viewport->renderImage(settings.size, &why);
+            const QImage image = m_viewport.renderImage(settings.size, &why);
             const QString path = sequenceFramePath(settings.folder, index);
             if (image.isNull())
                 return tr("frame %1: %2").arg(index).arg(why);
@@ -180,7 +183,7 @@ bool MainWindow::startSequenceExport(const SequenceExport &settings, QString *er
             return QString();
         },
         this);
-    return beginExport(run, tr("Writing the frames..."), [this, settings](int frames, QString *) {
+    return begin(run, tr("Writing the frames..."), [this, settings](int frames, QString *) {
         const QString written = tr("%n frame(s) of %1 × %2 px at %3 frames/s in %4", nullptr, frames)
                                     .arg(settings.size.width())
                                     .arg(settings.size.height())
@@ -190,11 +193,11 @@ bool MainWindow::startSequenceExport(const SequenceExport &settings, QString *er
     }, settings.video ? std::optional<SequenceExport>(settings) : std::nullopt);
 }
 
-bool MainWindow::startTraceExport(const TraceExport &settings, QString *error)
+bool Exporter::startTraceExport(const TraceExport &settings, QString *error)
 {
     if (isExporting())
         return failWith(error, tr("Export trace: an export is running already"));
-    const double timeStep = m_document->scene().settings.timeStep;
+    const double timeStep = m_document.scene().settings.timeStep;
     const double steps = std::round(settings.duration / timeStep);
     if (!(settings.duration >= 0.0) || !(steps <= double(std::numeric_limits<int>::max())) || settings.every < 1)
         return failWith(error, tr("Export trace: %1 s at a time step of %2 s is not a duration that can be run")
@@ -209,60 +212,59 @@ bool MainWindow::startTraceExport(const TraceExport &settings, QString *error)
     for (std::uint64_t step = 0; step <= static_cast<std::uint64_t>(steps); step += std::uint64_t(settings.every))
         rowSteps.push_back(step);
     auto *run = new ExportRun(
-        *m_controller, std::move(rowSteps),
+        m_controller, std::move(rowSteps),
         [trace](const std::shared_ptr<const core::Snapshot> &snapshot, int) {
             trace->writeRows(*snapshot);
             return QString();
         },
         this);
     const QString path = settings.path;
-    return beginExport(run, tr("Writing the trace..."), [trace, path](int, QString *error) {
+    return begin(run, tr("Writing the trace..."), [trace, path](int, QString *error) {
         *error = trace->close();
         return tr("%n row(s) of step,time,particle,x,y,z,vx,vy,vz in %1", nullptr, int(trace->rowCount()))
             .arg(nativePath(path));
     });
 }
 
-bool MainWindow::beginExport(ExportRun *run, const QString &label, ExportSummary summary,
-                             std::optional<SequenceExport> video)
+bool Exporter::begin(ExportRun *run, const QString &label, Summary summary, std::optional<SequenceExport> video)
 {
     // a progress dialog over the window (no nested event loop), whose Cancel stops the run
-    m_export = run;
-    m_exportProgress = new QProgressDialog(label, tr("Cancel"), 0, run->frameCount(), this);
-    m_exportProgress->setObjectName(QStringLiteral("exportProgress"));
-    m_exportProgress->setWindowTitle(tr("Export"));
-    m_exportProgress->setWindowModality(Qt::WindowModal);
-    m_exportProgress->setMinimumDuration(0);
-    m_exportProgress->setAutoClose(false);
-    m_exportProgress->setAutoReset(false);
-    m_exportProgress->setValue(0);
-    connect(m_exportProgress, &QProgressDialog::canceled, this, &MainWindow::cancelExport);
-    connect(run, &ExportRun::progressed, m_exportProgress, &QProgressDialog::setValue);
+    m_run = run;
+    m_progress = new QProgressDialog(label, tr("Cancel"), 0, run->frameCount(), m_window);
+    m_progress->setObjectName(QStringLiteral("exportProgress"));
+    m_progress->setWindowTitle(tr("Export"));
+    m_progress->setWindowModality(Qt::WindowModal);
+    m_progress->setMinimumDuration(0);
+    m_progress->setAutoClose(false);
+    m_progress->setAutoReset(false);
+    m_progress->setValue(0);
+    connect(m_progress, &QProgressDialog::canceled, this, &Exporter::cancel);
+    connect(run, &ExportRun::progressed, m_progress, &QProgressDialog::setValue);
 
     // at the end: what was written, then the MP4 if one was asked for and the frames are all there
     connect(run, &ExportRun::finished, this,
             [this, run, summary, video](ExportRun::Outcome outcome, const QString &message) {
-                m_export = nullptr;
+                m_run = nullptr;
                 run->deleteLater();
                 QString error;
                 const QString written = summary(run->framesDone(), &error);
                 if (!error.isEmpty())
-                    finishExport(false, tr("Export failed: %1").arg(error));
+                    finish(false, tr("Export failed: %1").arg(error));
                 else if (outcome == ExportRun::Outcome::Cancelled)
-                    finishExport(false, tr("Export cancelled; wrote %1").arg(written));
+                    finish(false, tr("Export cancelled; wrote %1").arg(written));
                 else if (outcome == ExportRun::Outcome::Failed)
-                    finishExport(false, tr("Export stopped: %1; wrote %2").arg(message, written));
+                    finish(false, tr("Export stopped: %1; wrote %2").arg(message, written));
                 else if (video)
                     encodeVideo(*video, written);
                 else
-                    finishExport(true, tr("Exported %1").arg(written));
+                    finish(true, tr("Exported %1").arg(written));
             });
-    m_exportProgress->show();
+    m_progress->show();
     run->start();
     return true;
 }
 
-void MainWindow::encodeVideo(const SequenceExport &settings, const QString &written)
+void Exporter::encodeVideo(const SequenceExport &settings, const QString &written)
 {
     // ffmpeg joins the frames; the dialog waits on it, and Cancel kills it
     m_encoder = new VideoEncoder(this);
@@ -270,35 +272,35 @@ void MainWindow::encodeVideo(const SequenceExport &settings, const QString &writ
     if (!m_encoder->start(settings.fps, settings.folder, videoPath(settings.folder), &error)) {
         m_encoder->deleteLater();
         m_encoder = nullptr;
-        finishExport(false, tr("Exported %1, but no MP4: %2").arg(written, error));
+        finish(false, tr("Exported %1, but no MP4: %2").arg(written, error));
         return;
     }
-    m_exportProgress->setLabelText(tr("Making the MP4 with ffmpeg (%1)...").arg(m_encoder->codec()));
-    m_exportProgress->setRange(0, 0);
+    m_progress->setLabelText(tr("Making the MP4 with ffmpeg (%1)...").arg(m_encoder->codec()));
+    m_progress->setRange(0, 0);
     connect(m_encoder, &VideoEncoder::finished, this, [this, written](bool ok, const QString &message) {
         m_encoder->deleteLater();
         m_encoder = nullptr;
-        finishExport(ok, tr("Exported %1; %2").arg(written, message));
+        finish(ok, tr("Exported %1; %2").arg(written, message));
     });
 }
 
-void MainWindow::cancelExport()
+void Exporter::cancel()
 {
-    if (m_export)
-        m_export->cancel();
+    if (m_run)
+        m_run->cancel();
     else if (m_encoder)
         m_encoder->cancel();
 }
 
-void MainWindow::finishExport(bool ok, const QString &message)
+void Exporter::finish(bool ok, const QString &message)
 {
-    if (m_exportProgress) {
-        m_exportProgress->hide();
-        m_exportProgress->deleteLater();
-        m_exportProgress = nullptr;
+    if (m_progress) {
+        m_progress->hide();
+        m_progress->deleteLater();
+        m_progress = nullptr;
     }
-    statusBar()->showMessage(message, kExportMessageMs);
-    emit exportFinished(ok, message);
+    emit statusMessage(message, kExportMessageMs);
+    emit finished(ok, message);
 }
 
 }  // namespace ui
