@@ -1,15 +1,15 @@
-// The Euler sub-step of a lattice-like model (Model::usesSpringBlocks()), a block of particles at a
+// The Euler sub-step of a lattice-like model (SpringLayout::blocks), a block of particles at a
 // time, with every force pass and the update fused. Run separately, gravity, the springs and the
 // update each stream the particle arrays from memory, and the spring kernel spends its time turning
 // xyz triples into vectors, twelve reads per particle. Here each thread walks its share of the
 // particles block by block, and for each block
 //   1. takes the positions and velocities of the block and of the springs' reach either side into
 //      one array per component (the window), each particle once, as the window slides on;
-//   2. sums the block's forces there: gravity, drag, the springs run by run (Model::blockRuns, or
-//      the short runs joined into long ones, Model::joined), the applied forces, each particle in
-//      the plain passes' order. A run whose ends lie kFarEnds or more apart adds each spring's
-//      force to its ends as it computes it; one whose ends are nearer computes a chunk of forces,
-//      then adds them (addChunk), as its ends share vectors;
+//   2. sums the block's forces there: gravity, drag, the springs run by run
+//      (SpringLayout::blockRuns, or the short runs joined into long ones, SpringLayout::joined),
+//      the applied forces, each particle in the plain passes' order. A run whose ends lie kFarEnds
+//      or more apart adds each spring's force to its ends as it computes it; one whose ends are
+//      nearer computes a chunk of forces, then adds them (addChunk), as its ends share vectors;
 //   3. moves the block's free particles, checking what it writes.
 // The window holds the old values, so a block's springs see the state at the start of the sub-step
 // even after the block before it has moved. The particles just past a thread's share belong to the
@@ -57,7 +57,7 @@ SPRINGLAB_SIMD_CLONES void widenFlags(int count, const std::uint8_t *__restrict 
         out[j] = flags[j] != 0 ? 1.0 : 0.0;
 }
 
-// Uniform: every spring has the first's parameters (Model::SpringRun::uniform), read once
+// Uniform: every spring has the first's parameters (SpringRun::uniform), read once
 template <bool Breakable, bool Uniform>
 SPRINGLAB_SIMD_CLONES void chunkForces(int count, const double *__restrict restLength, const double *__restrict stiffness,
                                        const double *__restrict damping, const double *__restrict broken,
@@ -202,10 +202,10 @@ SPRINGLAB_SIMD_CLONES void splitTriples(const double *__restrict x, const double
     }
 }
 
-// the runs a sub-step walks and their springs' parameters: the joined runs (Model::joined), or the
-// list's own where none were joined or the state has broken flags (one per spring of the list)
+// the runs a sub-step walks and their springs' parameters: the joined runs (SpringLayout::joined),
+// or the list's own where none were joined or the state has broken flags (one per spring of the list)
 struct RunSet {
-    const std::vector<Model::SpringRun> &runs;
+    const std::vector<SpringRun> &runs;
     const std::vector<int> &blockRunOffsets;
     const std::vector<int> &blockRuns;
     const double *restLength;
@@ -215,9 +215,10 @@ struct RunSet {
 
 RunSet runSetFor(const Model &model, bool breakable)
 {
-    const Model::JoinedRuns &joined = model.joined;
+    const SpringLayout &layout = model.springLayout;
+    const SpringLayout::JoinedRuns &joined = layout.joined;
     if (breakable || joined.runs.empty())
-        return RunSet{model.springRuns, model.blockRunOffsets, model.blockRuns, model.restLength.data(),
+        return RunSet{layout.runs, layout.blockRunOffsets, layout.blockRuns, model.restLength.data(),
                       model.stiffness.data(), model.damping.data()};
     return RunSet{joined.runs, joined.blockRunOffsets, joined.blockRuns, joined.restLength.data(),
                   joined.stiffness.data(), joined.damping.data()};
@@ -228,7 +229,7 @@ struct Pass {
     const Model &model;
     State &state;
     double h;
-    int reach;  // Model::springReach
+    int reach;  // SpringLayout::reach
     RunSet runs;
 };
 
@@ -304,7 +305,7 @@ void addAppliedForces(const Pass &pass, const Slot &slot, int begin, int end)
 // are two stretches; where they overlap each particle gets both forces in one pass, in the plain
 // loop's order (addInPlainOrder: end b's first when b > a). Two passes over overlapping stretches
 // would each read values the other has only just written, a few lanes apart, and stall.
-void addChunk(const Slot &slot, const Model::SpringRun &run, const RunSides &sides, int from, int to, int begin,
+void addChunk(const Slot &slot, const SpringRun &run, const RunSides &sides, int from, int to, int begin,
               const double *chunk)
 {
     struct Side {
@@ -364,7 +365,7 @@ EndLanes windowLanes(const Slot &slot, int particle)
 // straight to the ends that lie in the block that starts at begin: the chunk cut where an end
 // enters or leaves the block, each stretch with the ends it has there
 template <bool Breakable>
-void addFarChunk(const Pass &pass, const Slot &slot, const Model::SpringRun &run, const RunSides &sides, int from,
+void addFarChunk(const Pass &pass, const Slot &slot, const SpringRun &run, const RunSides &sides, int from,
                  int to, int begin, const double *broken)
 {
     const RunSet &set = pass.runs;
@@ -404,7 +405,7 @@ void addFarChunk(const Pass &pass, const Slot &slot, const Model::SpringRun &run
 // A run's springs j in [lo, hi), a chunk at a time, their forces added to the ends that lie in
 // the block [begin, end) (sides), in the plain loop's order (addInPlainOrder)
 template <bool Breakable>
-void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run, int lo, int hi,
+void runOnBlock(const Pass &pass, const Slot &slot, const SpringRun &run, int lo, int hi,
                 const RunSides &sides, int begin)
 {
     double chunk[3 * kChunk];
@@ -435,7 +436,7 @@ void springsOnBlock(const Pass &pass, const Slot &slot, int begin, int end)
     const RunSet &set = pass.runs;
     const auto q = static_cast<std::size_t>(begin / kSpringBlock);
     for (int e = set.blockRunOffsets[q]; e < set.blockRunOffsets[q + 1]; ++e) {
-        const Model::SpringRun &run = set.runs[static_cast<std::size_t>(set.blockRuns[static_cast<std::size_t>(e)])];
+        const SpringRun &run = set.runs[static_cast<std::size_t>(set.blockRuns[static_cast<std::size_t>(e)])];
         forEachRunPiece(run, begin, end, [&](int lo, int hi, const RunSides &sides) {
             runOnBlock<Breakable>(pass, slot, run, lo, hi, sides, begin);
         });
@@ -570,7 +571,7 @@ bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double 
 {
     assert(model.plan.subStep == SubStepPath::FusedLattice);
     const bool symplectic = model.integrator == Integrator::SymplecticEuler;
-    const int reach = model.springReach;
+    const int reach = model.springLayout.reach;
     const std::size_t size = slotSize(reach) * static_cast<std::size_t>(twoPhaseShares(model.particleCount()));
     if (work.blockScratch.size() != size)
         work.blockScratch.resize(size);  // on first use, and when the thread count changes

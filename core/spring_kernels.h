@@ -73,7 +73,7 @@ struct RunSides {
 // one stretch of springs j in [lo, hi), or twice when the two ends lie so far apart in the
 // numbering that the springs between touch neither side
 template <typename Piece>
-void forEachRunPiece(const Model::SpringRun &run, int first, int last, Piece &&piece)
+void forEachRunPiece(const SpringRun &run, int first, int last, Piece &&piece)
 {
     const RunSides s{std::max(0, first - run.a), std::min(run.count, last - run.a), std::max(0, first - run.b),
                      std::min(run.count, last - run.b)};
@@ -98,7 +98,7 @@ void forEachRunPiece(const Model::SpringRun &run, int first, int last, Piece &&p
 // (p - b) < (p - a). Chunk by chunk in ascending j, in this order, every particle receives its
 // forces in the plain loop's order, whichever stretch or thread it falls to.
 template <typename AddSide>
-void addInPlainOrder(const Model::SpringRun &run, const RunSides &s, AddSide &&add)
+void addInPlainOrder(const SpringRun &run, const RunSides &s, AddSide &&add)
 {
     if (run.b > run.a) {
         add(s.bLo, s.bHi, run.b, -1.0);

@@ -75,7 +75,7 @@ constexpr int kRunChunk = 256;
 // to the ends of those springs that lie in this thread's particles (sides), in the plain loop's
 // order (addInPlainOrder).
 template <bool Breakable>
-void runPiece(const Model &model, State &state, Workspace &work, const Model::SpringRun &run, int lo, int hi, const RunSides &sides)
+void runPiece(const Model &model, State &state, Workspace &work, const SpringRun &run, int lo, int hi, const RunSides &sides)
 {
     double chunk[3 * kRunChunk];
     const double *x = state.position.data();
@@ -103,7 +103,7 @@ void runPiece(const Model &model, State &state, Workspace &work, const Model::Sp
 template <bool Breakable>
 void runsOnParticles(const Model &model, State &state, Workspace &work, int first, int last)
 {
-    for (const Model::SpringRun &run : model.springRuns)
+    for (const SpringRun &run : model.springLayout.runs)
         forEachRunPiece(run, first, last, [&](int lo, int hi, const RunSides &sides) {
             runPiece<Breakable>(model, state, work, run, lo, hi, sides);
         });
@@ -115,10 +115,11 @@ void addSprings(const Model &model, State &state, Workspace &work)
 {
     if (!model.plan.springs)
         return;
-    if (model.usesSpringRuns())
-        addSpringRuns(model, state, work);
-    else
-        addSpringsGathered(model, state, work);
+    // the pass the layout chose when the model was compiled
+    switch (model.springLayout.pass) {
+    case SpringPass::Runs: addSpringRuns(model, state, work); return;
+    case SpringPass::Gathered: addSpringsGathered(model, state, work); return;
+    }
 }
 
 // Each thread takes a contiguous share of the particles, and that share a block at a time: run by
