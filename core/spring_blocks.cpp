@@ -36,8 +36,6 @@ namespace core {
 
 namespace {
 
-constexpr int kChunk = 256;  // springs per chunk: their forces (6 KB) are added while in the L1 cache
-
 // the two ends of the springs of a chunk, one array per component, already at the chunk's first
 struct EndLanes {
     const double *x, *y, *z, *vx, *vy, *vz;
@@ -116,14 +114,6 @@ SPRINGLAB_SIMD_CLONES void chunkForcesAdded(int count, const double *__restrict 
             toA.z[j] = az + fz;
         }
     }
-}
-
-// force[i] ± perSpring[i] over count values
-SPRINGLAB_SIMD_CLONES void addLane(int count, double sign, const double *__restrict perSpring, double *__restrict force)
-{
-#pragma omp simd
-    for (int i = 0; i < count; ++i)
-        force[i] = sign > 0.0 ? force[i] + perSpring[i] : force[i] - perSpring[i];
 }
 
 // force[i] ± first[i], then ± second[i], over count values: a particle that is end a of one of the
@@ -259,7 +249,7 @@ void slideWindow(Slot &slot, int lo)
     slot.lo = lo;
 }
 
-// gravity and drag: the forces of particles [begin, end) set to 0 + m g - c v, as the passes do
+// gravity: the forces of particles [begin, end) set to 0 + m g, as the passes do
 void startForces(const Pass &pass, const Slot &slot, int begin, int end)
 {
     const Model &model = pass.model;
@@ -270,7 +260,7 @@ void startForces(const Pass &pass, const Slot &slot, int begin, int end)
         if (model.plan.gravity) {
 #pragma omp simd
             for (int p = begin; p < end; ++p)
-                f[p] = 0.0 + g * mass[p];
+                f[p] = startingForce(g, mass[p]);
         } else {
             std::fill(f + begin, f + end, 0.0);
         }
@@ -324,7 +314,7 @@ void addChunk(const Slot &slot, const SpringRun &run, const RunSides &sides, int
     const auto one = [&](const Side &side, int lo, int hi) {
         if (lo < hi)
             for (int axis = 0; axis < 3; ++axis)
-                addLane(hi - lo, side.sign, chunk + axis * kChunk + side.spring + (lo - side.lo),
+                addSigned(hi - lo, side.sign, chunk + axis * kSpringChunk + side.spring + (lo - side.lo),
                         slot.force[static_cast<std::size_t>(axis)] + lo);
     };
     if (count == 1) {
@@ -345,7 +335,7 @@ void addChunk(const Slot &slot, const SpringRun &run, const RunSides &sides, int
     one(first, first.lo, lo);
     one(second, second.lo, lo);
     for (int axis = 0; axis < 3; ++axis) {
-        const double *lane = chunk + axis * kChunk;
+        const double *lane = chunk + axis * kSpringChunk;
         addTwoLanes(hi - lo, first.sign, lane + first.spring + (lo - first.lo), second.sign,
                     lane + second.spring + (lo - second.lo), slot.force[static_cast<std::size_t>(axis)] + lo);
     }
@@ -408,13 +398,13 @@ template <bool Breakable>
 void runOnBlock(const Pass &pass, const Slot &slot, const SpringRun &run, int lo, int hi,
                 const RunSides &sides, int begin)
 {
-    double chunk[3 * kChunk];
-    double broken[Breakable ? kChunk : 1];
-    const ForceLanes out{chunk, chunk + kChunk, chunk + 2 * kChunk};
+    double chunk[3 * kSpringChunk];
+    double broken[Breakable ? kSpringChunk : 1];
+    const ForceLanes out{chunk, chunk + kSpringChunk, chunk + 2 * kSpringChunk};
     const RunSet &set = pass.runs;
     const bool far = std::abs(run.b - run.a) >= kFarEnds;
-    for (int from = lo; from < hi; from += kChunk) {
-        const int to = std::min(hi, from + kChunk);
+    for (int from = lo; from < hi; from += kSpringChunk) {
+        const int to = std::min(hi, from + kSpringChunk);
         if constexpr (Breakable)
             widenFlags(to - from, pass.state.springBroken.data() + run.first + from, broken);
         if (far) {
@@ -445,7 +435,7 @@ void springsOnBlock(const Pass &pass, const Slot &slot, int begin, int end)
 
 // the Euler update of the free particles [from, to) of the block that starts at begin, from the
 // window's old values, written to the state's arrays; whether any new value is bad (as
-// integrate.cpp's eulerUpdate, the same operations)
+// integrate.cpp's eulerUpdate, the same eulerCoordinate)
 template <bool Symplectic>
 SPRINGLAB_SIMD_CLONES bool moveLanes(int from, int to, double h, const double *__restrict invMass,
                                      const std::array<const double *, 3> &force, const std::array<const double *, 6> &old,
@@ -468,16 +458,9 @@ SPRINGLAB_SIMD_CLONES bool moveLanes(int from, int to, double h, const double *_
         const double f[3] = {fx[p], fy[p], fz[p]};
         const double oldX[3] = {px[p], py[p], pz[p]};
         const double oldV[3] = {qx[p], qy[p], qz[p]};
-        for (int axis = 0; axis < 3; ++axis) {
-            const double next = oldV[axis] + kick * f[axis];
-            const double moved = oldX[axis] + h * (Symplectic ? next : oldV[axis]);
-            v[3 * p + axis] = next;
-            x[3 * p + axis] = moved;
-            // & rather than &&: no branch, so that the loop vectorises (NaN fails both tests)
-            const int fine = static_cast<int>(std::abs(next) <= kBlowupBound) &
-                             static_cast<int>(std::abs(moved) <= kBlowupBound);
-            bad |= fine ^ 1;
-        }
+        for (int axis = 0; axis < 3; ++axis)
+            bad |= eulerCoordinate<Symplectic>(h, kick, f[axis], oldX[axis], oldV[axis], x[3 * p + axis],
+                                               v[3 * p + axis]);
     }
     return bad != 0;
 }
