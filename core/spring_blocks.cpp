@@ -516,7 +516,7 @@ bool stepShare(const Pass &pass, Slot &slot, int first, int last)
 }
 
 template <bool Breakable, bool Symplectic>
-bool stepBlocks(const Pass &pass, double *scratch)
+bool stepBlocks(const Pass &pass, double *scratch, SharesInTurn inTurn)
 {
     const Model &model = pass.model;
     const int n = model.particleCount();
@@ -544,7 +544,8 @@ bool stepBlocks(const Pass &pass, double *scratch)
             extendWindow(pass, slot, last, std::min(n, firstEnd + reach));
             if (stepShare<Breakable, Symplectic>(pass, slot, first, last))
                 bad.store(true, std::memory_order_relaxed);
-        });
+        },
+        inTurn);
     return bad.load(std::memory_order_relaxed);
 }
 
@@ -552,10 +553,15 @@ bool stepBlocks(const Pass &pass, double *scratch)
 
 bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double h)
 {
+    return stepSpringBlocks(model, state, work, h, SharesInTurn{});
+}
+
+bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double h, const SharesInTurn &inTurn)
+{
     assert(model.plan.subStep == SubStepPath::FusedLattice);
     const bool symplectic = model.integrator == Integrator::SymplecticEuler;
     const int reach = model.springLayout.reach;
-    const std::size_t size = slotSize(reach) * static_cast<std::size_t>(twoPhaseShares(model.particleCount()));
+    const std::size_t size = slotSize(reach) * static_cast<std::size_t>(twoPhaseShares(model.particleCount(), inTurn));
     if (work.blockScratch.size() != size)
         work.blockScratch.resize(size);  // on first use, and when the thread count changes
     const bool breakable = !state.springBroken.empty();
@@ -563,9 +569,10 @@ bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double 
     double *scratch = work.blockScratch.data();
     bool bad = false;
     if (breakable)
-        bad = symplectic ? stepBlocks<true, true>(pass, scratch) : stepBlocks<true, false>(pass, scratch);
+        bad = symplectic ? stepBlocks<true, true>(pass, scratch, inTurn) : stepBlocks<true, false>(pass, scratch, inTurn);
     else
-        bad = symplectic ? stepBlocks<false, true>(pass, scratch) : stepBlocks<false, false>(pass, scratch);
+        bad = symplectic ? stepBlocks<false, true>(pass, scratch, inTurn)
+                         : stepBlocks<false, false>(pass, scratch, inTurn);
     work.profile.forceEvaluations += 1;
     return !bad;
 }

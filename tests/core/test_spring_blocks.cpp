@@ -347,14 +347,13 @@ void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit()
         if (run.threads > core::maxThreadCount())
             continue;
         core::setThreadCount(run.threads);
-        core::sequentialShares() = core::SequentialShares{run.sequential, run.descending};
         test::Sim fused = test::compile(scene);
         prepare(fused);
         for (int sub = 0; sub < 3; ++sub) {
             // it checked what it wrote, and all was well
-            QVERIFY(core::stepSpringBlocks(*fused.model, fused.state, fused.work, h));
+            QVERIFY(core::stepSpringBlocks(*fused.model, fused.state, fused.work, h,
+                                           core::SharesInTurn{run.sequential, run.descending}));
         }
-        core::sequentialShares() = core::SequentialShares{};
         const Eigen::Index positions = (fused.state.position.array() != separate.state.position.array()).count();
         const Eigen::Index velocities = (fused.state.velocity.array() != separate.state.velocity.array()).count();
         QVERIFY2(positions == 0 && velocities == 0,
