@@ -1,5 +1,6 @@
 #include "parallel.h"
 #include "passes.h"
+#include "spring_kernels.h"
 
 namespace core {
 
@@ -12,6 +13,7 @@ void addGravity(const Model &model, State &, Workspace &work)
 }
 
 // the forces set to 0 + m g: the same bits as clearing them and adding m g, in one pass
+// (startingForce, which the fused sub-step's start over lanes shares)
 void startWithGravity(const Model &model, State &, Workspace &work)
 {
     const double *mass = model.mass.data();
@@ -21,7 +23,7 @@ void startWithGravity(const Model &model, State &, Workspace &work)
 #pragma omp simd
         for (int i = begin; i < end; ++i)
             for (int axis = 0; axis < 3; ++axis)
-                force[3 * i + axis] = 0.0 + g[axis] * mass[i];
+                force[3 * i + axis] = startingForce(g[axis], mass[i]);
     });
 }
 

@@ -1,11 +1,11 @@
 #include "parallel.h"
 #include "passes.h"
+#include "spring_kernels.h"
 
 #include "step.h"
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
 
 namespace core {
 
@@ -23,7 +23,8 @@ namespace {
 // (symplectic) or the old one does (explicit). Flat arrays with unit stride so that it vectorises;
 // the same IEEE operations in the same order as (h / m) f and h v written with Eigen columns.
 // Returns whether any new value is not finite or past kBlowupBound, found in the same loop (the
-// finite check then need not read the arrays again).
+// finite check then need not read the arrays again). The arithmetic is eulerCoordinate's, which the
+// fused sub-step's update over lanes (spring_blocks.cpp) shares.
 template <bool Symplectic>
 bool eulerUpdate(int begin, int end, const double *__restrict invMass, const double *__restrict force,
                  double *__restrict x, double *__restrict v, double h)
@@ -33,17 +34,9 @@ bool eulerUpdate(int begin, int end, const double *__restrict invMass, const dou
     for (int p = begin; p < end; ++p) {
         const int i = 3 * p;
         const double kick = h * invMass[p];
-        for (int axis = 0; axis < 3; ++axis) {
-            const double old = v[i + axis];
-            const double next = old + kick * force[i + axis];
-            const double moved = x[i + axis] + h * (Symplectic ? next : old);
-            v[i + axis] = next;
-            x[i + axis] = moved;
-            // & rather than &&: no branch, so that the loop vectorises (NaN fails both tests)
-            const int fine = static_cast<int>(std::abs(next) <= kBlowupBound) &
-                             static_cast<int>(std::abs(moved) <= kBlowupBound);
-            bad |= fine ^ 1;
-        }
+        for (int axis = 0; axis < 3; ++axis)
+            bad |= eulerCoordinate<Symplectic>(h, kick, force[i + axis], x[i + axis], v[i + axis], x[i + axis],
+                                               v[i + axis]);
     }
     return bad != 0;
 }

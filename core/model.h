@@ -4,6 +4,7 @@
 // needs; a pass the plan leaves out is never run.
 
 #include "scene.h"
+#include "spring_layout.h"
 
 #include <Eigen/Core>
 #include <memory>
@@ -30,16 +31,6 @@ struct StepPlan {
 
     bool operator==(const StepPlan &) const = default;
 };
-
-// particles per block of the fused lattice sub-step (spring_blocks.cpp): a block's forces and its
-// positions and velocities with the springs' reach either side stay in the L2 cache (786 KB for a
-// 1024 × 1024 cloth, whose bend springs reach 2048 particles). A spring with its ends in two blocks
-// is computed for each, so a larger block computes fewer twice: 8192 was 10-20% faster than 4096
-// on the 1024 × 1024 cloth and no slower on the smaller ones (docs/benchmarks.md)
-inline constexpr int kSpringBlock = 8192;
-// Model::joined: runs this short are worth joining, across gaps of at most this many particles
-inline constexpr int kJoinRunsBelow = 128;
-inline constexpr int kJoinGap = 8;
 
 struct Model {
     // settings
@@ -75,49 +66,8 @@ struct Model {
     // and 2 k + 1 for its end b
     std::vector<int> springOffsets;
     std::vector<int> springEnds;
-    // the spring list cut into runs of consecutive springs whose two ends both step by one
-    // particle from one spring to the next, as a lattice's springs do when they are made row by
-    // row: a run's springs are (a + j, b + j), j = 0 … count - 1, springs first + j. Over a run
-    // the ends are read and the forces added with unit stride, with no gathers. The spring pass
-    // takes that road when the runs are long (usesSpringRuns()).
-    struct SpringRun {
-        int first = 0;  // the run's first spring
-        int count = 0;
-        int a = 0;      // end a of its first spring
-        int b = 0;      // end b of its first spring
-        // every spring of the run has the first's rest length, stiffness and damping: the kernels
-        // read them once, not once a spring (a cloth's run is one kind of spring)
-        bool uniform = false;
-    };
-    std::vector<SpringRun> springRuns;
-    // the farthest apart the two ends of a run lie in the numbering, max |b - a|: how far past a
-    // block of particles its springs reach
-    int springReach = 0;
-    // the runs with an end in each block of kSpringBlock particles, ascending: block q's are
-    // blockRuns[blockRunOffsets[q] .. blockRunOffsets[q + 1]). Made only for models that use the
-    // blocks (usesSpringBlocks())
-    std::vector<int> blockRunOffsets;
-    std::vector<int> blockRuns;
-    // The runs once more for the fused sub-step, short ones joined: runs shorter than
-    // kJoinRunsBelow with the same offset b - a that follow each other in the list, each starting a
-    // few particles (at most kJoinGap) past the last one's end, become one run. The particles in
-    // between are ends of padding springs with no rest length, stiffness or damping, whose force is
-    // exactly zero, and a force sum never is -0 (it starts at 0 + m g), so adding the padding's ±0
-    // changes no bit. A 64 × 64 cloth's rows of 63 springs become a run of 4095, which the kernels
-    // take in full vectors instead of a remainder and a dozen calls a row. A joined run's `first`
-    // indexes the three arrays here, one value per spring of the run, padding included. The
-    // broken flags are the state's, one per spring of the list, so a state with flags steps by
-    // springRuns; so does a model whose springs can break, which has none. Empty where no run was
-    // joined.
-    struct JoinedRuns {
-        std::vector<SpringRun> runs;
-        Eigen::VectorXd restLength;  // m
-        Eigen::VectorXd stiffness;   // N/m
-        Eigen::VectorXd damping;     // N·s/m
-        std::vector<int> blockRunOffsets;  // as blockRunOffsets and blockRuns, for these runs
-        std::vector<int> blockRuns;
-    };
-    JoinedRuns joined;
+    // the same list as the vectorised kernels walk it, and the spring pass it takes
+    SpringLayout springLayout;
 
     // planes n·p = offset, unit normals
     Eigen::Matrix3Xd planeNormal;
@@ -128,11 +78,6 @@ struct Model {
     int particleCount() const { return static_cast<int>(mass.size()); }
     int springCount() const { return static_cast<int>(springA.size()); }
     int planeCount() const { return static_cast<int>(planeOffset.size()); }
-    // runs of 8 springs or more on average: shorter ones cost more in bookkeeping than they save
-    bool usesSpringRuns() const { return !springRuns.empty() && springCount() >= 8 * static_cast<int>(springRuns.size()); }
-    // the Euler schemes step such a model a block of particles at a time, forces and update fused
-    // (spring_blocks.cpp): its springs must not reach past the next block
-    bool usesSpringBlocks() const { return plan.springs && usesSpringRuns() && springReach <= kSpringBlock; }
     bool isPinned(int particle) const { return invMass[particle] == 0.0; }
     double subStep() const { return timeStep / substeps; }
 };

@@ -62,25 +62,21 @@ void parallelChunks(int count, Body &&body)
     body(0, count);
 }
 
-// For the tests of a two-phase pass: its shares run one after another on the calling thread, as
-// if there were `shares` threads, in ascending or descending order. In one order each thread moves
-// its particles before the next thread starts, in the other before the previous one does: the two
-// ways a real schedule can hand a neighbour's particles over too late. 0 shares: off.
-struct SequentialShares {
+// How a two-phase pass shares out its work: across the threads (0 shares, the default), or, for
+// its tests, `shares` shares one after another on the calling thread, as if there were that many
+// threads, in ascending or descending order. In one order each thread moves its particles before
+// the next thread starts, in the other before the previous one does: the two ways a real schedule
+// can hand a neighbour's particles over too late. A value passed in, never a setting of its own.
+struct SharesInTurn {
     int shares = 0;
     bool descending = false;
 };
-inline SequentialShares &sequentialShares()
-{
-    static SequentialShares setting;
-    return setting;
-}
 
 // how many shares parallelChunksInTwoPhases() cuts count into: the scratch to make for it
-inline int twoPhaseShares(int count)
+inline int twoPhaseShares(int count, SharesInTurn inTurn = {})
 {
-    if (sequentialShares().shares > 0)
-        return sequentialShares().shares;
+    if (inTurn.shares > 0)
+        return inTurn.shares;
 #ifdef SPRINGLAB_OPENMP
     if (splitAcrossThreads(count))
         return omp_get_max_threads();
@@ -91,18 +87,18 @@ inline int twoPhaseShares(int count)
 
 // each thread's contiguous share of [0, count): first(thread, begin, end) on every share, then,
 // once every thread has finished its first, second(thread, begin, end) on the same share. For a
-// pass whose threads must copy what their neighbours are about to overwrite
+// pass whose threads must copy what their neighbours are about to overwrite. inTurn: see above
 template <typename First, typename Second>
-void parallelChunksInTwoPhases(int count, First &&first, Second &&second)
+void parallelChunksInTwoPhases(int count, First &&first, Second &&second, SharesInTurn inTurn = {})
 {
     const auto share = [count](long long thread, long long threads) {
         return std::pair<int, int>(static_cast<int>(count * thread / threads), static_cast<int>(count * (thread + 1) / threads));
     };
-    if (const SequentialShares order = sequentialShares(); order.shares > 0) {
+    if (inTurn.shares > 0) {
         for (int pass = 0; pass < 2; ++pass)
-            for (int k = 0; k < order.shares; ++k) {
-                const int thread = order.descending ? order.shares - 1 - k : k;
-                const auto [begin, end] = share(thread, order.shares);
+            for (int k = 0; k < inTurn.shares; ++k) {
+                const int thread = inTurn.descending ? inTurn.shares - 1 - k : k;
+                const auto [begin, end] = share(thread, inTurn.shares);
                 if (pass == 0)
                     first(thread, begin, end);
                 else

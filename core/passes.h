@@ -9,6 +9,8 @@
 
 namespace core {
 
+struct SharesInTurn;  // parallel.h
+
 // forces at (x, v) into work.force
 void addGravity(const Model &model, State &state, Workspace &work);        // gravity.cpp: m g
 void startWithGravity(const Model &model, State &state, Workspace &work);  // gravity.cpp: forces = m g
@@ -36,6 +38,8 @@ void adaptiveRk45(const Model &model, State &state, Workspace &work, double h);
 // update; returns whether every new value of the free particles is finite and bounded
 // (spring_blocks.cpp)
 bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double h);
+// the same with its thread shares run one after another on the calling thread, for the tests
+bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double h, const SharesInTurn &inTurn);
 
 // the restitution of a contact approaching at normalSpeed (< 0): the scene's, or 0 for a resting
 // contact slower than model.restingSpeed

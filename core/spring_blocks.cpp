@@ -1,15 +1,15 @@
-// The Euler sub-step of a lattice-like model (Model::usesSpringBlocks()), a block of particles at a
+// The Euler sub-step of a lattice-like model (SpringLayout::blocks), a block of particles at a
 // time, with every force pass and the update fused. Run separately, gravity, the springs and the
 // update each stream the particle arrays from memory, and the spring kernel spends its time turning
 // xyz triples into vectors, twelve reads per particle. Here each thread walks its share of the
 // particles block by block, and for each block
 //   1. takes the positions and velocities of the block and of the springs' reach either side into
 //      one array per component (the window), each particle once, as the window slides on;
-//   2. sums the block's forces there: gravity, drag, the springs run by run (Model::blockRuns, or
-//      the short runs joined into long ones, Model::joined), the applied forces, each particle in
-//      the plain passes' order. A run whose ends lie kFarEnds or more apart adds each spring's
-//      force to its ends as it computes it; one whose ends are nearer computes a chunk of forces,
-//      then adds them (addChunk), as its ends share vectors;
+//   2. sums the block's forces there: gravity, drag, the springs run by run
+//      (SpringLayout::blockRuns, or the short runs joined into long ones, SpringLayout::joined),
+//      the applied forces, each particle in the plain passes' order. A run whose ends lie kFarEnds
+//      or more apart adds each spring's force to its ends as it computes it; one whose ends are
+//      nearer computes a chunk of forces, then adds them (addChunk), as its ends share vectors;
 //   3. moves the block's free particles, checking what it writes.
 // The window holds the old values, so a block's springs see the state at the start of the sub-step
 // even after the block before it has moved. The particles just past a thread's share belong to the
@@ -36,8 +36,6 @@ namespace core {
 
 namespace {
 
-constexpr int kChunk = 256;  // springs per chunk: their forces (6 KB) are added while in the L1 cache
-
 // the two ends of the springs of a chunk, one array per component, already at the chunk's first
 struct EndLanes {
     const double *x, *y, *z, *vx, *vy, *vz;
@@ -57,7 +55,7 @@ SPRINGLAB_SIMD_CLONES void widenFlags(int count, const std::uint8_t *__restrict 
         out[j] = flags[j] != 0 ? 1.0 : 0.0;
 }
 
-// Uniform: every spring has the first's parameters (Model::SpringRun::uniform), read once
+// Uniform: every spring has the first's parameters (SpringRun::uniform), read once
 template <bool Breakable, bool Uniform>
 SPRINGLAB_SIMD_CLONES void chunkForces(int count, const double *__restrict restLength, const double *__restrict stiffness,
                                        const double *__restrict damping, const double *__restrict broken,
@@ -116,14 +114,6 @@ SPRINGLAB_SIMD_CLONES void chunkForcesAdded(int count, const double *__restrict 
             toA.z[j] = az + fz;
         }
     }
-}
-
-// force[i] ± perSpring[i] over count values
-SPRINGLAB_SIMD_CLONES void addLane(int count, double sign, const double *__restrict perSpring, double *__restrict force)
-{
-#pragma omp simd
-    for (int i = 0; i < count; ++i)
-        force[i] = sign > 0.0 ? force[i] + perSpring[i] : force[i] - perSpring[i];
 }
 
 // force[i] ± first[i], then ± second[i], over count values: a particle that is end a of one of the
@@ -202,10 +192,10 @@ SPRINGLAB_SIMD_CLONES void splitTriples(const double *__restrict x, const double
     }
 }
 
-// the runs a sub-step walks and their springs' parameters: the joined runs (Model::joined), or the
-// list's own where none were joined or the state has broken flags (one per spring of the list)
+// the runs a sub-step walks and their springs' parameters: the joined runs (SpringLayout::joined),
+// or the list's own where none were joined or the state has broken flags (one per spring of the list)
 struct RunSet {
-    const std::vector<Model::SpringRun> &runs;
+    const std::vector<SpringRun> &runs;
     const std::vector<int> &blockRunOffsets;
     const std::vector<int> &blockRuns;
     const double *restLength;
@@ -215,9 +205,10 @@ struct RunSet {
 
 RunSet runSetFor(const Model &model, bool breakable)
 {
-    const Model::JoinedRuns &joined = model.joined;
+    const SpringLayout &layout = model.springLayout;
+    const SpringLayout::JoinedRuns &joined = layout.joined;
     if (breakable || joined.runs.empty())
-        return RunSet{model.springRuns, model.blockRunOffsets, model.blockRuns, model.restLength.data(),
+        return RunSet{layout.runs, layout.blockRunOffsets, layout.blockRuns, model.restLength.data(),
                       model.stiffness.data(), model.damping.data()};
     return RunSet{joined.runs, joined.blockRunOffsets, joined.blockRuns, joined.restLength.data(),
                   joined.stiffness.data(), joined.damping.data()};
@@ -228,7 +219,7 @@ struct Pass {
     const Model &model;
     State &state;
     double h;
-    int reach;  // Model::springReach
+    int reach;  // SpringLayout::reach
     RunSet runs;
 };
 
@@ -258,7 +249,7 @@ void slideWindow(Slot &slot, int lo)
     slot.lo = lo;
 }
 
-// gravity and drag: the forces of particles [begin, end) set to 0 + m g - c v, as the passes do
+// gravity: the forces of particles [begin, end) set to 0 + m g, as the passes do
 void startForces(const Pass &pass, const Slot &slot, int begin, int end)
 {
     const Model &model = pass.model;
@@ -269,7 +260,7 @@ void startForces(const Pass &pass, const Slot &slot, int begin, int end)
         if (model.plan.gravity) {
 #pragma omp simd
             for (int p = begin; p < end; ++p)
-                f[p] = 0.0 + g * mass[p];
+                f[p] = startingForce(g, mass[p]);
         } else {
             std::fill(f + begin, f + end, 0.0);
         }
@@ -304,7 +295,7 @@ void addAppliedForces(const Pass &pass, const Slot &slot, int begin, int end)
 // are two stretches; where they overlap each particle gets both forces in one pass, in the plain
 // loop's order (addInPlainOrder: end b's first when b > a). Two passes over overlapping stretches
 // would each read values the other has only just written, a few lanes apart, and stall.
-void addChunk(const Slot &slot, const Model::SpringRun &run, const RunSides &sides, int from, int to, int begin,
+void addChunk(const Slot &slot, const SpringRun &run, const RunSides &sides, int from, int to, int begin,
               const double *chunk)
 {
     struct Side {
@@ -323,7 +314,7 @@ void addChunk(const Slot &slot, const Model::SpringRun &run, const RunSides &sid
     const auto one = [&](const Side &side, int lo, int hi) {
         if (lo < hi)
             for (int axis = 0; axis < 3; ++axis)
-                addLane(hi - lo, side.sign, chunk + axis * kChunk + side.spring + (lo - side.lo),
+                addSigned(hi - lo, side.sign, chunk + axis * kSpringChunk + side.spring + (lo - side.lo),
                         slot.force[static_cast<std::size_t>(axis)] + lo);
     };
     if (count == 1) {
@@ -344,7 +335,7 @@ void addChunk(const Slot &slot, const Model::SpringRun &run, const RunSides &sid
     one(first, first.lo, lo);
     one(second, second.lo, lo);
     for (int axis = 0; axis < 3; ++axis) {
-        const double *lane = chunk + axis * kChunk;
+        const double *lane = chunk + axis * kSpringChunk;
         addTwoLanes(hi - lo, first.sign, lane + first.spring + (lo - first.lo), second.sign,
                     lane + second.spring + (lo - second.lo), slot.force[static_cast<std::size_t>(axis)] + lo);
     }
@@ -364,7 +355,7 @@ EndLanes windowLanes(const Slot &slot, int particle)
 // straight to the ends that lie in the block that starts at begin: the chunk cut where an end
 // enters or leaves the block, each stretch with the ends it has there
 template <bool Breakable>
-void addFarChunk(const Pass &pass, const Slot &slot, const Model::SpringRun &run, const RunSides &sides, int from,
+void addFarChunk(const Pass &pass, const Slot &slot, const SpringRun &run, const RunSides &sides, int from,
                  int to, int begin, const double *broken)
 {
     const RunSet &set = pass.runs;
@@ -404,16 +395,16 @@ void addFarChunk(const Pass &pass, const Slot &slot, const Model::SpringRun &run
 // A run's springs j in [lo, hi), a chunk at a time, their forces added to the ends that lie in
 // the block [begin, end) (sides), in the plain loop's order (addInPlainOrder)
 template <bool Breakable>
-void runOnBlock(const Pass &pass, const Slot &slot, const Model::SpringRun &run, int lo, int hi,
+void runOnBlock(const Pass &pass, const Slot &slot, const SpringRun &run, int lo, int hi,
                 const RunSides &sides, int begin)
 {
-    double chunk[3 * kChunk];
-    double broken[Breakable ? kChunk : 1];
-    const ForceLanes out{chunk, chunk + kChunk, chunk + 2 * kChunk};
+    double chunk[3 * kSpringChunk];
+    double broken[Breakable ? kSpringChunk : 1];
+    const ForceLanes out{chunk, chunk + kSpringChunk, chunk + 2 * kSpringChunk};
     const RunSet &set = pass.runs;
     const bool far = std::abs(run.b - run.a) >= kFarEnds;
-    for (int from = lo; from < hi; from += kChunk) {
-        const int to = std::min(hi, from + kChunk);
+    for (int from = lo; from < hi; from += kSpringChunk) {
+        const int to = std::min(hi, from + kSpringChunk);
         if constexpr (Breakable)
             widenFlags(to - from, pass.state.springBroken.data() + run.first + from, broken);
         if (far) {
@@ -435,7 +426,7 @@ void springsOnBlock(const Pass &pass, const Slot &slot, int begin, int end)
     const RunSet &set = pass.runs;
     const auto q = static_cast<std::size_t>(begin / kSpringBlock);
     for (int e = set.blockRunOffsets[q]; e < set.blockRunOffsets[q + 1]; ++e) {
-        const Model::SpringRun &run = set.runs[static_cast<std::size_t>(set.blockRuns[static_cast<std::size_t>(e)])];
+        const SpringRun &run = set.runs[static_cast<std::size_t>(set.blockRuns[static_cast<std::size_t>(e)])];
         forEachRunPiece(run, begin, end, [&](int lo, int hi, const RunSides &sides) {
             runOnBlock<Breakable>(pass, slot, run, lo, hi, sides, begin);
         });
@@ -444,7 +435,7 @@ void springsOnBlock(const Pass &pass, const Slot &slot, int begin, int end)
 
 // the Euler update of the free particles [from, to) of the block that starts at begin, from the
 // window's old values, written to the state's arrays; whether any new value is bad (as
-// integrate.cpp's eulerUpdate, the same operations)
+// integrate.cpp's eulerUpdate, the same eulerCoordinate)
 template <bool Symplectic>
 SPRINGLAB_SIMD_CLONES bool moveLanes(int from, int to, double h, const double *__restrict invMass,
                                      const std::array<const double *, 3> &force, const std::array<const double *, 6> &old,
@@ -467,16 +458,9 @@ SPRINGLAB_SIMD_CLONES bool moveLanes(int from, int to, double h, const double *_
         const double f[3] = {fx[p], fy[p], fz[p]};
         const double oldX[3] = {px[p], py[p], pz[p]};
         const double oldV[3] = {qx[p], qy[p], qz[p]};
-        for (int axis = 0; axis < 3; ++axis) {
-            const double next = oldV[axis] + kick * f[axis];
-            const double moved = oldX[axis] + h * (Symplectic ? next : oldV[axis]);
-            v[3 * p + axis] = next;
-            x[3 * p + axis] = moved;
-            // & rather than &&: no branch, so that the loop vectorises (NaN fails both tests)
-            const int fine = static_cast<int>(std::abs(next) <= kBlowupBound) &
-                             static_cast<int>(std::abs(moved) <= kBlowupBound);
-            bad |= fine ^ 1;
-        }
+        for (int axis = 0; axis < 3; ++axis)
+            bad |= eulerCoordinate<Symplectic>(h, kick, f[axis], oldX[axis], oldV[axis], x[3 * p + axis],
+                                               v[3 * p + axis]);
     }
     return bad != 0;
 }
@@ -532,7 +516,7 @@ bool stepShare(const Pass &pass, Slot &slot, int first, int last)
 }
 
 template <bool Breakable, bool Symplectic>
-bool stepBlocks(const Pass &pass, double *scratch)
+bool stepBlocks(const Pass &pass, double *scratch, SharesInTurn inTurn)
 {
     const Model &model = pass.model;
     const int n = model.particleCount();
@@ -560,7 +544,8 @@ bool stepBlocks(const Pass &pass, double *scratch)
             extendWindow(pass, slot, last, std::min(n, firstEnd + reach));
             if (stepShare<Breakable, Symplectic>(pass, slot, first, last))
                 bad.store(true, std::memory_order_relaxed);
-        });
+        },
+        inTurn);
     return bad.load(std::memory_order_relaxed);
 }
 
@@ -568,10 +553,15 @@ bool stepBlocks(const Pass &pass, double *scratch)
 
 bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double h)
 {
+    return stepSpringBlocks(model, state, work, h, SharesInTurn{});
+}
+
+bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double h, const SharesInTurn &inTurn)
+{
     assert(model.plan.subStep == SubStepPath::FusedLattice);
     const bool symplectic = model.integrator == Integrator::SymplecticEuler;
-    const int reach = model.springReach;
-    const std::size_t size = slotSize(reach) * static_cast<std::size_t>(twoPhaseShares(model.particleCount()));
+    const int reach = model.springLayout.reach;
+    const std::size_t size = slotSize(reach) * static_cast<std::size_t>(twoPhaseShares(model.particleCount(), inTurn));
     if (work.blockScratch.size() != size)
         work.blockScratch.resize(size);  // on first use, and when the thread count changes
     const bool breakable = !state.springBroken.empty();
@@ -579,9 +569,10 @@ bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double 
     double *scratch = work.blockScratch.data();
     bool bad = false;
     if (breakable)
-        bad = symplectic ? stepBlocks<true, true>(pass, scratch) : stepBlocks<true, false>(pass, scratch);
+        bad = symplectic ? stepBlocks<true, true>(pass, scratch, inTurn) : stepBlocks<true, false>(pass, scratch, inTurn);
     else
-        bad = symplectic ? stepBlocks<false, true>(pass, scratch) : stepBlocks<false, false>(pass, scratch);
+        bad = symplectic ? stepBlocks<false, true>(pass, scratch, inTurn)
+                         : stepBlocks<false, false>(pass, scratch, inTurn);
     work.profile.forceEvaluations += 1;
     return !bad;
 }

@@ -1,10 +1,14 @@
 #pragma once
-// What the vectorised spring kernels (springs.cpp, spring_blocks.cpp) share: the target clones
-// they are built with, the handout's damped spring, and how a run of springs is cut at the edges of
-// a stretch of particles and in which order its forces reach their ends.
+// What the vectorised kernels share: the target clones they are built with, the handout's damped
+// spring, how a run of springs is cut at the edges of a stretch of particles and in which order its
+// forces reach their ends, the chunk size and the signed add of the spring passes (springs.cpp,
+// spring_blocks.cpp), and the arithmetic of the passes that the fused sub-step repeats over lanes
+// (gravity.cpp's start, integrate.cpp's Euler update), so that both give the same bits by
+// construction.
 
 #include "geometry.h"
 #include "model.h"
+#include "step.h"
 
 #include <algorithm>
 
@@ -22,6 +26,39 @@
 #endif
 
 namespace core {
+
+// springs per chunk of a run: their forces (6 KB) are computed and added while in the L1 cache
+inline constexpr int kSpringChunk = 256;
+
+// force[i] ± perSpring[i] over count values, unit stride: a chunk's forces added to their ends,
+// whether stored as xyz triples (3 values a spring) or one lane per component (spring_kernels.cpp)
+void addSigned(int count, double sign, const double *perSpring, double *force);
+
+// a particle's force before any pass adds to it, one component: 0 + m g, the same bits as clearing
+// it and adding m g. The passes over xyz triples (gravity.cpp) and over lanes (spring_blocks.cpp)
+// stay two loops, each with unit stride over its own layout
+[[gnu::always_inline]] inline double startingForce(double g, double mass)
+{
+    return 0.0 + g * mass;
+}
+
+// One Euler update of one coordinate of a particle: the new velocity oldV + kick f, kick = h / m,
+// moves it (symplectic) or the old one does (explicit). Returns 1 when a new value is not finite or
+// is past kBlowupBound. The updates over xyz triples (integrate.cpp) and over the fused sub-step's
+// lanes (spring_blocks.cpp) stay two loops, each vectorised over its own layout; this is what they
+// compute, so their bits agree.
+template <bool Symplectic>
+[[gnu::always_inline]] inline int eulerCoordinate(double h, double kick, double force, double oldX, double oldV,
+                                                  double &x, double &v)
+{
+    const double next = oldV + kick * force;
+    const double moved = oldX + h * (Symplectic ? next : oldV);
+    v = next;
+    x = moved;
+    // & rather than &&: no branch, so that the loop vectorises (NaN fails both tests)
+    const int fine = static_cast<int>(std::abs(next) <= kBlowupBound) & static_cast<int>(std::abs(moved) <= kBlowupBound);
+    return fine ^ 1;
+}
 
 // One spring's ends: the difference of their positions, d = xa - xb, and of their velocities.
 struct SpringEnds {
@@ -73,7 +110,7 @@ struct RunSides {
 // one stretch of springs j in [lo, hi), or twice when the two ends lie so far apart in the
 // numbering that the springs between touch neither side
 template <typename Piece>
-void forEachRunPiece(const Model::SpringRun &run, int first, int last, Piece &&piece)
+void forEachRunPiece(const SpringRun &run, int first, int last, Piece &&piece)
 {
     const RunSides s{std::max(0, first - run.a), std::min(run.count, last - run.a), std::max(0, first - run.b),
                      std::min(run.count, last - run.b)};
@@ -98,7 +135,7 @@ void forEachRunPiece(const Model::SpringRun &run, int first, int last, Piece &&p
 // (p - b) < (p - a). Chunk by chunk in ascending j, in this order, every particle receives its
 // forces in the plain loop's order, whichever stretch or thread it falls to.
 template <typename AddSide>
-void addInPlainOrder(const Model::SpringRun &run, const RunSides &s, AddSide &&add)
+void addInPlainOrder(const SpringRun &run, const RunSides &s, AddSide &&add)
 {
     if (run.b > run.a) {
         add(s.bLo, s.bHi, run.b, -1.0);

@@ -59,31 +59,19 @@ SPRINGLAB_SIMD_CLONES void runForces(int count, const double *__restrict restLen
                      Breakable && broken[j] != 0, out + 3 * j);
 }
 
-// force[i] += sign · perSpring[i] over 3 × count values, unit stride
-SPRINGLAB_SIMD_CLONES void addForces(int count, double sign, const double *__restrict perSpring,
-                                     double *__restrict force)
-{
-#pragma omp simd
-    for (int i = 0; i < 3 * count; ++i)
-        force[i] = sign > 0.0 ? force[i] + perSpring[i] : force[i] - perSpring[i];
-}
-
-// springs per chunk of a run: 6 KB of forces, computed and added while they are in the L1 cache
-constexpr int kRunChunk = 256;
-
 // The run's springs j in [lo, hi), a chunk at a time: compute the chunk's forces, then add them
 // to the ends of those springs that lie in this thread's particles (sides), in the plain loop's
 // order (addInPlainOrder).
 template <bool Breakable>
-void runPiece(const Model &model, State &state, Workspace &work, const Model::SpringRun &run, int lo, int hi, const RunSides &sides)
+void runPiece(const Model &model, State &state, Workspace &work, const SpringRun &run, int lo, int hi, const RunSides &sides)
 {
-    double chunk[3 * kRunChunk];
+    double chunk[3 * kSpringChunk];
     const double *x = state.position.data();
     const double *v = state.velocity.data();
     double *f = work.force.data();
     const std::uint8_t *broken = Breakable ? state.springBroken.data() + run.first : nullptr;
-    for (int begin = lo; begin < hi; begin += kRunChunk) {
-        const int end = std::min(hi, begin + kRunChunk);
+    for (int begin = lo; begin < hi; begin += kSpringChunk) {
+        const int end = std::min(hi, begin + kSpringChunk);
         const int spring = run.first + begin;
         runForces<Breakable>(end - begin, model.restLength.data() + spring, model.stiffness.data() + spring,
                              model.damping.data() + spring, Breakable ? broken + begin : nullptr,
@@ -93,7 +81,7 @@ void runPiece(const Model &model, State &state, Workspace &work, const Model::Sp
             const int from = std::max(begin, lowest);
             const int to = std::min(end, highest);
             if (from < to)
-                addForces(to - from, sign, chunk + 3 * (from - begin), f + 3 * (particle + from));
+                addSigned(3 * (to - from), sign, chunk + 3 * (from - begin), f + 3 * (particle + from));
         });
     }
 }
@@ -103,7 +91,7 @@ void runPiece(const Model &model, State &state, Workspace &work, const Model::Sp
 template <bool Breakable>
 void runsOnParticles(const Model &model, State &state, Workspace &work, int first, int last)
 {
-    for (const Model::SpringRun &run : model.springRuns)
+    for (const SpringRun &run : model.springLayout.runs)
         forEachRunPiece(run, first, last, [&](int lo, int hi, const RunSides &sides) {
             runPiece<Breakable>(model, state, work, run, lo, hi, sides);
         });
@@ -115,24 +103,25 @@ void addSprings(const Model &model, State &state, Workspace &work)
 {
     if (!model.plan.springs)
         return;
-    if (model.usesSpringRuns())
-        addSpringRuns(model, state, work);
-    else
-        addSpringsGathered(model, state, work);
+    // the pass the layout chose when the model was compiled
+    switch (model.springLayout.pass) {
+    case SpringPass::Runs: addSpringRuns(model, state, work); return;
+    case SpringPass::Gathered: addSpringsGathered(model, state, work); return;
+    }
 }
 
 // Each thread takes a contiguous share of the particles, and that share a block at a time: run by
 // run, the forces of the springs with an end in the block, in the plain loop's order (runPiece).
 // The same bits as addSpringsReference on any number of threads and for any block size. A block's
 // positions, velocities and forces (576 KB) stay in the cache while every run passes over them;
-// without blocks a large cloth streams them from memory once for each kind of spring.
+// without blocks a large cloth streams them from memory once for each kind of spring. The blocks
+// are the fused sub-step's (kSpringBlock), for the same reason.
 void addSpringRuns(const Model &model, State &state, Workspace &work)
 {
-    constexpr int kBlock = 8192;  // particles
     const bool breakable = !state.springBroken.empty();
     parallelChunks(model.particleCount(), [&](int first, int last) {
-        for (int begin = first; begin < last; begin += kBlock) {
-            const int end = std::min(last, begin + kBlock);
+        for (int begin = first; begin < last; begin += kSpringBlock) {
+            const int end = std::min(last, begin + kSpringBlock);
             if (breakable)
                 runsOnParticles<true>(model, state, work, begin, end);
             else

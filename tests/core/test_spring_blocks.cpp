@@ -43,7 +43,7 @@ struct Options {
 
 // Runs of one offset after another in the list and in the numbering, as a lattice's rows are:
 // lengths up to past kJoinRunsBelow and gaps up to past kJoinGap, so that some join and some do not;
-// one row in three of one kind of spring (Model::SpringRun::uniform)
+// one row in three of one kind of spring (SpringRun::uniform)
 void addRows(core::SceneDesc &scene, test::Lcg &next)
 {
     const int n = static_cast<int>(scene.particles.size());
@@ -116,7 +116,7 @@ void TestSpringBlocks::latticeModelsUseBlocks()
 {
     core::ClothOptions cloth;
     cloth.cols = cloth.rows = 40;
-    QVERIFY(core::compileModel(core::makeCloth(cloth))->usesSpringBlocks());
+    QVERIFY(core::compileModel(core::makeCloth(cloth))->springLayout.blocks);
 
     // ends farther apart than a block: the springs would reach past the next block
     core::SceneDesc far = test::quietScene();
@@ -126,18 +126,18 @@ void TestSpringBlocks::latticeModelsUseBlocks()
     for (int i = 0; i + core::kSpringBlock + 1 < n; ++i)
         far.springs.push_back(core::SpringDesc{i, i + core::kSpringBlock + 1, 10.0, 0.1, 1.0});
     const auto farModel = core::compileModel(far);
-    QVERIFY(farModel->usesSpringRuns());
-    QCOMPARE(farModel->springReach, core::kSpringBlock + 1);
-    QVERIFY(!farModel->usesSpringBlocks());
+    QCOMPARE(farModel->springLayout.pass, core::SpringPass::Runs);
+    QCOMPARE(farModel->springLayout.reach, core::kSpringBlock + 1);
+    QVERIFY(!farModel->springLayout.blocks);
 
     // one block apart exactly: still within reach
     for (core::SpringDesc &spring : far.springs)
         spring.b -= 1;
-    QVERIFY(core::compileModel(far)->usesSpringBlocks());
+    QVERIFY(core::compileModel(far)->springLayout.blocks);
 
     // no springs: nothing to fuse
     far.springs.clear();
-    QVERIFY(!core::compileModel(far)->usesSpringBlocks());
+    QVERIFY(!core::compileModel(far)->springLayout.blocks);
 }
 
 void TestSpringBlocks::indexListsEveryRunOfEachBlock()
@@ -145,21 +145,22 @@ void TestSpringBlocks::indexListsEveryRunOfEachBlock()
     Options options;
     options.particles = 20000;
     const auto model = core::compileModel(randomRuns(options, 3u));
-    QVERIFY(model->usesSpringBlocks());
+    QVERIFY(model->springLayout.blocks);
     const int blocks = (model->particleCount() + core::kSpringBlock - 1) / core::kSpringBlock;
-    QCOMPARE(int(model->blockRunOffsets.size()), blocks + 1);
+    QCOMPARE(int(model->springLayout.blockRunOffsets.size()), blocks + 1);
     for (int q = 0; q < blocks; ++q) {
         const int lo = q * core::kSpringBlock;
         const int hi = lo + core::kSpringBlock;
         std::vector<int> expected;
-        for (int r = 0; r < int(model->springRuns.size()); ++r) {
-            const core::Model::SpringRun &run = model->springRuns[std::size_t(r)];
+        for (int r = 0; r < int(model->springLayout.runs.size()); ++r) {
+            const core::SpringRun &run = model->springLayout.runs[std::size_t(r)];
             const auto touches = [&](int end) { return end < hi && end + run.count > lo; };
             if (touches(run.a) || touches(run.b))
                 expected.push_back(r);
         }
-        const std::vector<int> listed(model->blockRuns.begin() + model->blockRunOffsets[std::size_t(q)],
-                                      model->blockRuns.begin() + model->blockRunOffsets[std::size_t(q) + 1]);
+        const core::SpringLayout &layout = model->springLayout;
+        const std::vector<int> listed(layout.blockRuns.begin() + layout.blockRunOffsets[std::size_t(q)],
+                                      layout.blockRuns.begin() + layout.blockRunOffsets[std::size_t(q) + 1]);
         QVERIFY(!expected.empty());
         QCOMPARE(listed, expected);
     }
@@ -172,19 +173,19 @@ void TestSpringBlocks::joinsShortRunsAcrossSmallGaps()
     core::ClothOptions cloth;
     cloth.rows = cloth.cols = 64;
     const auto model = core::compileModel(core::makeCloth(cloth));
-    QVERIFY(model->usesSpringBlocks());
-    const core::Model::JoinedRuns &joined = model->joined;
+    QVERIFY(model->springLayout.blocks);
+    const core::SpringLayout::JoinedRuns &joined = model->springLayout.joined;
     QCOMPARE(int(joined.runs.size()), 6);  // structural, shear and bend, two directions each
     int covered = 0;
     std::size_t r = 0;
-    for (const core::Model::SpringRun &into : joined.runs) {
+    for (const core::SpringRun &into : joined.runs) {
         QCOMPARE(into.first, covered);
         // the list's runs that make it up, in order, each at its place
         int springs = 0;
-        for (; r < model->springRuns.size() && model->springRuns[r].a < into.a + into.count &&
-               model->springRuns[r].b - model->springRuns[r].a == into.b - into.a;
+        for (; r < model->springLayout.runs.size() && model->springLayout.runs[r].a < into.a + into.count &&
+               model->springLayout.runs[r].b - model->springLayout.runs[r].a == into.b - into.a;
              ++r) {
-            const core::Model::SpringRun &run = model->springRuns[r];
+            const core::SpringRun &run = model->springLayout.runs[r];
             const int at = into.first + run.a - into.a;
             QCOMPARE(joined.restLength.segment(at, run.count), model->restLength.segment(run.first, run.count));
             QCOMPARE(joined.stiffness.segment(at, run.count), model->stiffness.segment(run.first, run.count));
@@ -198,7 +199,7 @@ void TestSpringBlocks::joinsShortRunsAcrossSmallGaps()
         QVERIFY(padding < into.count / 8);
         covered += into.count;
     }
-    QCOMPARE(r, model->springRuns.size());
+    QCOMPARE(r, model->springLayout.runs.size());
     QCOMPARE(int(joined.stiffness.size()), covered);
 
     // springs that can break: the state's flags are the list's, so nothing is joined
@@ -206,8 +207,8 @@ void TestSpringBlocks::joinsShortRunsAcrossSmallGaps()
     tearable.springs[17].breakStrain = 0.2;
     const auto breakable = core::compileModel(tearable);
     QVERIFY(breakable->plan.springBreaks);
-    QVERIFY(breakable->usesSpringBlocks());
-    QVERIFY(breakable->joined.runs.empty());
+    QVERIFY(breakable->springLayout.blocks);
+    QVERIFY(breakable->springLayout.joined.runs.empty());
 
     // rows of kJoinRunsBelow springs or more, or kJoinGap + 1 particles apart, stay the list's runs
     for (const bool wide : {false, true}) {
@@ -220,9 +221,9 @@ void TestSpringBlocks::joinsShortRunsAcrossSmallGaps()
             for (int j = 0; j < length; ++j)
                 rows.springs.push_back(core::SpringDesc{row * step + j, row * step + j + 1, 10.0, 0.1, 1e-2});
         const auto apart = core::compileModel(rows);
-        QVERIFY(apart->usesSpringBlocks());
-        QCOMPARE(int(apart->springRuns.size()), 7);
-        QVERIFY(apart->joined.runs.empty());
+        QVERIFY(apart->springLayout.blocks);
+        QCOMPARE(int(apart->springLayout.runs.size()), 7);
+        QVERIFY(apart->springLayout.joined.runs.empty());
         // one particle nearer or one spring shorter: they join
         for (core::SpringDesc &spring : rows.springs) {
             const int row = spring.a / step;
@@ -236,8 +237,8 @@ void TestSpringBlocks::joinsShortRunsAcrossSmallGaps()
                                               [&](const core::SpringDesc &spring) { return spring.a % step == length - 1; }),
                                rows.springs.end());
         const auto near = core::compileModel(rows);
-        QCOMPARE(int(near->springRuns.size()), 7);
-        QCOMPARE(int(near->joined.runs.size()), 1);
+        QCOMPARE(int(near->springLayout.runs.size()), 7);
+        QCOMPARE(int(near->springLayout.joined.runs.size()), 1);
     }
 }
 
@@ -249,9 +250,9 @@ void TestSpringBlocks::runsOfOneKindAreUniform()
     options.rows = options.cols = 200;  // rows too long to join
     core::SceneDesc cloth = core::makeCloth(options);
     const auto model = core::compileModel(cloth);
-    QVERIFY(model->joined.runs.empty());
-    QCOMPARE(int(model->springRuns.size()), 200 + 199 + 199 + 200 + 2);  // rows of each kind, two columns
-    for (const core::Model::SpringRun &run : model->springRuns)
+    QVERIFY(model->springLayout.joined.runs.empty());
+    QCOMPARE(int(model->springLayout.runs.size()), 200 + 199 + 199 + 200 + 2);  // rows of each kind, two columns
+    for (const core::SpringRun &run : model->springLayout.runs)
         QVERIFY(run.uniform);
     for (const int field : {0, 1, 2}) {
         core::SceneDesc nudged = cloth;
@@ -259,10 +260,10 @@ void TestSpringBlocks::runsOfOneKindAreUniform()
         double &value = field == 0 ? spring.restLength : field == 1 ? spring.stiffness : spring.damping;
         value = std::nextafter(value, 1.0);
         const auto changed = core::compileModel(nudged);
-        const auto uniformRuns = std::count_if(changed->springRuns.begin(), changed->springRuns.end(),
-                                               [](const core::Model::SpringRun &run) { return run.uniform; });
-        QCOMPARE(int(uniformRuns), int(changed->springRuns.size()) - 1);
-        QVERIFY(!changed->springRuns[std::size_t(1000 / 199)].uniform);
+        const auto uniformRuns = std::count_if(changed->springLayout.runs.begin(), changed->springLayout.runs.end(),
+                                               [](const core::SpringRun &run) { return run.uniform; });
+        QCOMPARE(int(uniformRuns), int(changed->springLayout.runs.size()) - 1);
+        QVERIFY(!changed->springLayout.runs[std::size_t(1000 / 199)].uniform);
     }
 }
 
@@ -316,14 +317,14 @@ void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit()
     const double h = 1e-3;
 
     test::Sim separate = test::compile(scene);
-    QVERIFY(separate.model->usesSpringBlocks());
-    QCOMPARE(!separate.model->joined.runs.empty(), rows);  // the random runs alone never join
+    QVERIFY(separate.model->springLayout.blocks);
+    QCOMPARE(!separate.model->springLayout.joined.runs.empty(), rows);  // the random runs alone never join
     if (rows) {  // and are never of one kind; some rows are, and some of those stay alone
-        const auto uniform = [](const std::vector<core::Model::SpringRun> &runs) {
-            return std::count_if(runs.begin(), runs.end(), [](const core::Model::SpringRun &run) { return run.uniform && run.count > 1; });
+        const auto uniform = [](const std::vector<core::SpringRun> &runs) {
+            return std::count_if(runs.begin(), runs.end(), [](const core::SpringRun &run) { return run.uniform && run.count > 1; });
         };
-        QVERIFY(uniform(separate.model->springRuns) > 0);
-        QVERIFY(uniform(separate.model->joined.runs) > 0);
+        QVERIFY(uniform(separate.model->springLayout.runs) > 0);
+        QVERIFY(uniform(separate.model->springLayout.joined.runs) > 0);
     }
     QCOMPARE(separate.model->plan.gravity, gravity);
     QCOMPARE(separate.model->plan.drag, drag);
@@ -346,14 +347,13 @@ void TestSpringBlocks::blocksEqualTheSeparatePassesToTheBit()
         if (run.threads > core::maxThreadCount())
             continue;
         core::setThreadCount(run.threads);
-        core::sequentialShares() = core::SequentialShares{run.sequential, run.descending};
         test::Sim fused = test::compile(scene);
         prepare(fused);
         for (int sub = 0; sub < 3; ++sub) {
             // it checked what it wrote, and all was well
-            QVERIFY(core::stepSpringBlocks(*fused.model, fused.state, fused.work, h));
+            QVERIFY(core::stepSpringBlocks(*fused.model, fused.state, fused.work, h,
+                                           core::SharesInTurn{run.sequential, run.descending}));
         }
-        core::sequentialShares() = core::SequentialShares{};
         const Eigen::Index positions = (fused.state.position.array() != separate.state.position.array()).count();
         const Eigen::Index velocities = (fused.state.velocity.array() != separate.state.velocity.array()).count();
         QVERIFY2(positions == 0 && velocities == 0,
@@ -375,7 +375,7 @@ void TestSpringBlocks::badValueStopsTheStep()
     options.particles = 20000;
     for (int culprit : {0, 9001, 19999}) {
         test::Sim sim = test::compile(randomRuns(options, 7u));
-        QVERIFY(sim.model->usesSpringBlocks());
+        QVERIFY(sim.model->springLayout.blocks);
         QVERIFY(sim.step());
         sim.state.velocity(1, culprit) = 2.0 * core::kBlowupBound;
         QVERIFY(!sim.step());
@@ -394,7 +394,7 @@ void TestSpringBlocks::profileTimesTheFusedSubStep()
     core::SceneDesc scene = randomRuns(options, 5u);
     scene.settings.substeps = 4;
     test::Sim sim = test::compile(scene);
-    QVERIFY(sim.model->usesSpringBlocks());
+    QVERIFY(sim.model->springLayout.blocks);
     QVERIFY(sim.step());
     QVERIFY(sim.step());
     const core::Profile &profile = sim.work.profile;

@@ -158,10 +158,10 @@ void TestSprings::clothIsCutIntoRuns()
     // shears) or one run for the whole cloth (structural and bend down the columns): 4 n runs
     const int n = 30;
     const test::Sim cloth = test::compile(movingCloth(n, 3u));
-    QCOMPARE(int(cloth.model->springRuns.size()), 4 * n);
-    QVERIFY(cloth.model->usesSpringRuns());
+    QCOMPARE(int(cloth.model->springLayout.runs.size()), 4 * n);
+    QCOMPARE(cloth.model->springLayout.pass, core::SpringPass::Runs);
     int covered = 0;
-    for (const core::Model::SpringRun &run : cloth.model->springRuns) {
+    for (const core::SpringRun &run : cloth.model->springLayout.runs) {
         QCOMPARE(run.first, covered);
         for (int j = 0; j < run.count; ++j) {
             QCOMPARE(cloth.model->springA[std::size_t(run.first + j)], run.a + j);
@@ -177,7 +177,7 @@ void TestSprings::clothIsCutIntoRuns()
         scattered.particles.push_back(test::particle(Eigen::Vector3d(i, 0, 0)));
     for (int k = 0; k < 49; ++k)
         scattered.springs.push_back(core::SpringDesc{(k * 7) % 50, (k * 7 + 13) % 50, 10.0, 0.1, 1.0});
-    QVERIFY(!test::compile(scattered).model->usesSpringRuns());
+    QCOMPARE(test::compile(scattered).model->springLayout.pass, core::SpringPass::Gathered);
 }
 
 void TestSprings::runsEqualThePlainLoopToTheBit_data()
@@ -204,7 +204,7 @@ void TestSprings::runsEqualThePlainLoopToTheBit()
                                                  Eigen::Vector3d(next(100) * 1e-2, next(100) * 1e-2, 0.0)));
     test::addRandomRuns(scene, {1, -1, 2, -3, particles / 2 + 1, -(particles / 2 + 7), 37}, 400, next);
     const core::Model probe = *core::compileModel(scene);
-    QVERIFY2(probe.usesSpringRuns(), "the scene should be cut into long runs");
+    QVERIFY2(probe.springLayout.pass == core::SpringPass::Runs, "the scene should be cut into long runs");
 
     const int before = core::threadCount();
     const Eigen::Matrix3Xd start = Eigen::Matrix3Xd::Random(3, particles);  // on top, as in a step
