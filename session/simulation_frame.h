@@ -42,7 +42,7 @@ struct SimulationFrame {
     std::shared_ptr<const core::Snapshot> snapshot;
     std::shared_ptr<const core::Model> model;      // the model the snapshot was stepped with
     std::shared_ptr<const core::SceneDesc> scene;  // the scene that model was compiled from
-    std::uint64_t appliedEdit = 0;  // sequence number of the newest edit applied before this frame
+    std::uint64_t appliedMessage = 0;  // sequence number of the newest message applied before this frame
     bool running = false;
 
     // measured over the last second or so of running; 0 while paused or not yet measured

@@ -28,7 +28,7 @@ double symmetricUnit(std::mt19937_64 &random)
     return 2.0 * unit - 1.0;
 }
 
-// the visitor that dispatches each kind of edit
+// the visitor that dispatches each kind of message
 template <typename... Handlers>
 struct Overloaded : Handlers... {
     using Handlers::operator()...;
@@ -71,30 +71,30 @@ bool sameStructure(const core::SceneDesc &a, const core::SceneDesc &b)
 
 }  // namespace
 
-bool SimulationRunner::changesTheRun(const Edit &edit) const
+bool SimulationRunner::changesTheRun(const Message &message) const
 {
-    return std::holds_alternative<SetSceneEdit>(edit) || std::holds_alternative<PlayEdit>(edit) ||
-           std::holds_alternative<TiltEdit>(edit) || std::holds_alternative<SteerEdit>(edit) ||
-           std::holds_alternative<GrabEdit>(edit) || std::holds_alternative<StartRecordingEdit>(edit);
+    return std::holds_alternative<SetSceneEdit>(message) || std::holds_alternative<Play>(message) ||
+           std::holds_alternative<TiltEdit>(message) || std::holds_alternative<SteerEdit>(message) ||
+           std::holds_alternative<GrabEdit>(message) || std::holds_alternative<StartRecording>(message);
 }
 
-void SimulationRunner::apply(const Edit &edit)
+void SimulationRunner::apply(const Message &message)
 {
-    // an edit that changes the run, made while a recorded step is shown, goes on from that step
-    if (m_scrub && changesTheRun(edit))
+    // a message that changes the run, applied while a recorded step is shown, goes on from that step
+    if (m_scrub && changesTheRun(message))
         resumeFromScrub();
 
     // what changes the run goes into the recording; requests for copies and plans do not
-    if (m_recording && !std::holds_alternative<SyncEdit>(edit) && !std::holds_alternative<PlanAccuracyEdit>(edit) &&
-        !std::holds_alternative<CaptureStateEdit>(edit) && !std::holds_alternative<StartRecordingEdit>(edit) &&
-        !std::holds_alternative<StopRecordingEdit>(edit) && !std::holds_alternative<ScrubEdit>(edit) &&
-        !std::holds_alternative<StepBackEdit>(edit) && !std::holds_alternative<TimelineBudgetEdit>(edit))
-        m_recording->entries.push_back({m_stepsTaken - m_recordingFrom, edit});
+    if (m_recording && !std::holds_alternative<Sync>(message) && !std::holds_alternative<PlanAccuracy>(message) &&
+        !std::holds_alternative<CaptureState>(message) && !std::holds_alternative<StartRecording>(message) &&
+        !std::holds_alternative<StopRecording>(message) && !std::holds_alternative<Scrub>(message) &&
+        !std::holds_alternative<StepBack>(message) && !std::holds_alternative<SetTimelineBudget>(message))
+        m_recording->entries.push_back({m_stepsTaken - m_recordingFrom, message});
     std::visit(Overloaded{
                    [this](const SetSceneEdit &e) { setScene(e); },
-                   [this](const PlayEdit &) { m_running = hasScene(); },
-                   [this](const PauseEdit &) { m_running = false; },
-                   [this](const StepOnceEdit &) {
+                   [this](const Play &) { m_running = hasScene(); },
+                   [this](const Pause &) { m_running = false; },
+                   [this](const StepOnce &) {
                        m_running = false;
                        // inside the recording: one step on through it; at its end, a new step
                        if (m_scrub && scrubStep() && *scrubStep() < m_timeline.lastStep()) {
@@ -110,28 +110,28 @@ void SimulationRunner::apply(const Edit &edit)
                            m_estimateStale = true;
                        }
                    },
-                   [this](const ResetEdit &) { reset(); },
+                   [this](const Reset &) { reset(); },
                    [this](const TiltEdit &e) { tilt(e); },
                    [this](const SteerEdit &e) { steer(e); },
-                   [](const SyncEdit &) {},
-                   [this](const PlanAccuracyEdit &e) { planAccuracy(e); },
-                   [this](const CaptureStateEdit &e) { captureState(e); },
+                   [](const Sync &) {},
+                   [this](const PlanAccuracy &e) { planAccuracy(e); },
+                   [this](const CaptureState &e) { captureState(e); },
                    [this](const GrabEdit &e) { grab(e); },
-                   [this](const StartRecordingEdit &) { startRecording(); },
-                   [this](const StopRecordingEdit &e) {
+                   [this](const StartRecording &) { startRecording(); },
+                   [this](const StopRecording &e) {
                        m_finishedRecording = stopRecording();
                        m_recordingRequest = e.request;
                    },
-                   [this](const ScrubEdit &e) { scrubTo(e.step); },
-                   [this](const StepBackEdit &) { stepBack(); },
-                   [this](const TimelineBudgetEdit &e) { m_timeline.setBudget(e.bytes); },
+                   [this](const Scrub &e) { scrubTo(e.step); },
+                   [this](const StepBack &) { stepBack(); },
+                   [this](const SetTimelineBudget &e) { m_timeline.setBudget(e.bytes); },
                },
-               edit);
+               message);
 
     // the edited state starts a keyframe: replays after it use the new model and forces
-    if (hasScene() && (std::holds_alternative<SetSceneEdit>(edit) || std::holds_alternative<ResetEdit>(edit) ||
-                       std::holds_alternative<TiltEdit>(edit) || std::holds_alternative<SteerEdit>(edit) ||
-                       std::holds_alternative<GrabEdit>(edit)))
+    if (hasScene() && (std::holds_alternative<SetSceneEdit>(message) || std::holds_alternative<Reset>(message) ||
+                       std::holds_alternative<TiltEdit>(message) || std::holds_alternative<SteerEdit>(message) ||
+                       std::holds_alternative<GrabEdit>(message)))
         keyframe();
 }
 
@@ -165,7 +165,7 @@ bool SimulationRunner::scrubTo(std::uint64_t step)
     m_owed = 0.0;
     if (!m_scrub)
         m_scrub.emplace();
-    Scrub &scrub = *m_scrub;
+    ScrubbedStep &scrub = *m_scrub;
     // on from the step shown when it lies between the keyframe and the target (stepping forward)
     const bool onward = scrub.model == key->model && scrub.state.step >= key->state.step && scrub.state.step <= step &&
                         scrub.state.particleCount() == key->state.particleCount();
@@ -196,7 +196,7 @@ void SimulationRunner::stepBack()
 // now in the editor takes over (as an edit would), and what was recorded after it is gone
 void SimulationRunner::resumeFromScrub()
 {
-    Scrub scrub = std::move(*m_scrub);
+    ScrubbedStep scrub = std::move(*m_scrub);
     m_scrub.reset();
     m_timeline.truncateAfter(scrub.state.step);
     ++m_resumes;
@@ -517,7 +517,7 @@ void SimulationRunner::estimate(bool counted)
     m_stepSecondsSinceEstimate = 0.0;
 }
 
-void SimulationRunner::planAccuracy(const PlanAccuracyEdit &edit)
+void SimulationRunner::planAccuracy(const PlanAccuracy &request)
 {
     // the cost of a force evaluation as measured in this run, else timed now
     auto plan = std::make_shared<core::AccuracyPlan>();
@@ -525,13 +525,13 @@ void SimulationRunner::planAccuracy(const PlanAccuracyEdit &edit)
         double secondsPerEvaluation = core::profiledSecondsPerEvaluation(m_work.profile);
         if (!(secondsPerEvaluation > 0.0))
             secondsPerEvaluation = core::timedSecondsPerEvaluation(*m_model, m_state);
-        *plan = core::planAccuracy(*m_model, m_state, edit.tolerance, secondsPerEvaluation);
+        *plan = core::planAccuracy(*m_model, m_state, request.tolerance, secondsPerEvaluation);
     }
     m_plan = std::move(plan);
-    m_planRequest = edit.request;
+    m_planRequest = request.request;
 }
 
-void SimulationRunner::captureState(const CaptureStateEdit &edit)
+void SimulationRunner::captureState(const CaptureState &request)
 {
     // a copy in doubles: the scene's initial conditions get exactly what the run has
     // (while scrubbing, the step shown)
@@ -541,7 +541,7 @@ void SimulationRunner::captureState(const CaptureStateEdit &edit)
         captured->scene = m_scrub ? m_scrub->scene : m_scene;
     }
     m_captured = std::move(captured);
-    m_captureRequest = edit.request;
+    m_captureRequest = request.request;
 }
 
 std::shared_ptr<const core::Snapshot> SimulationRunner::snapshot() const

@@ -1,8 +1,8 @@
 #pragma once
 // SimulationRunner: the worker's Qt-free half. It owns the compiled Model and the State, applies
-// edits between steps, and turns wall time into whole steps of the model's time step. It has no
+// messages between steps, and turns wall time into whole steps of the model's time step. It has no
 // thread and no timer of its own: SimulationWorker calls it from its tick, and the unit tests call
-// it directly, one edit or one advance at a time.
+// it directly, one message or one advance at a time.
 //
 // It also keeps the live accuracy figures: a step-doubling estimate of the local error, refreshed
 // after an edit and, while running, at most every kEstimateInterval of wall time and only once the
@@ -19,7 +19,7 @@
 // (one line of history, no branches).
 
 #include "captured_state.h"
-#include "edit_queue.h"
+#include "messages.h"
 #include "session_recording.h"
 #include "timeline.h"
 
@@ -51,8 +51,8 @@ public:
         double droppedSeconds = 0.0;  // s of wall time left unsimulated (the run fell behind)
     };
 
-    // applies one edit between two steps
-    void apply(const Edit &edit);
+    // applies one message between two steps
+    void apply(const Message &message);
 
     // recording (session_recording.h): from startRecording() on, every edit that changes the run
     // is kept with the steps taken before it; stopRecording() ends it and hands it over (null when
@@ -60,7 +60,7 @@ public:
     void startRecording();
     std::shared_ptr<const SessionRecording> stopRecording();
     bool isRecording() const { return m_recording != nullptr; }
-    // the recording the latest StopRecordingEdit ended (null if none was running) and its request
+    // the recording the latest StopRecording ended (null if none was running) and its request
     std::shared_ptr<const SessionRecording> finishedRecording() const { return m_finishedRecording; }
     std::uint64_t recordingRequest() const { return m_recordingRequest; }
     // steps that stuck since the first scene: a tick that blows up goes back to its start, and
@@ -151,16 +151,16 @@ private:
     bool stepOnce();
     void checkPairSpeed();
     void estimate(bool counted);
-    void planAccuracy(const PlanAccuracyEdit &edit);
-    void captureState(const CaptureStateEdit &edit);
+    void planAccuracy(const PlanAccuracy &request);
+    void captureState(const CaptureState &request);
 
     // the timeline
-    struct Scrub {
+    struct ScrubbedStep {
         std::shared_ptr<const core::Model> model;
         std::shared_ptr<const core::SceneDesc> scene;
         core::State state;
     };
-    bool changesTheRun(const Edit &edit) const;
+    bool changesTheRun(const Message &message) const;
     HeldForces heldForces() const;
     void keyframe();
     bool scrubTo(std::uint64_t step);
@@ -172,7 +172,7 @@ private:
     core::State m_state;
     core::Workspace m_work;  // the steps' scratch and profile, for the run and the scrubs alike
     Timeline m_timeline;
-    std::optional<Scrub> m_scrub;  // while a recorded step is shown
+    std::optional<ScrubbedStep> m_scrub;  // while a recorded step is shown
     std::uint64_t m_resumes = 0;
     std::uint64_t m_resumedAt = 0;
     core::State m_lastGood;  // the state before the latest steps, restored if they blow up

@@ -90,7 +90,7 @@ void TestSimulationRunner::advancesInWholeStepsAndOwesTheRest()
 {
     // time step 0.25 s: 0.625 s of wall time is 2 steps and 0.125 s owed; 0.125 s more is a third
     ui::SimulationRunner runner = runnerWith(springScene());
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     QCOMPARE(runner.advance(0.625, kNoBudgetLimit).steps, 2);
     QCOMPARE(runner.state().time, 0.5);
     QCOMPARE(runner.advance(0.125, kNoBudgetLimit).steps, 1);
@@ -102,8 +102,8 @@ void TestSimulationRunner::pausedDoesNotAdvance()
 {
     ui::SimulationRunner runner = runnerWith(springScene());
     QCOMPARE(runner.advance(1.0, kNoBudgetLimit).steps, 0);
-    runner.apply(ui::PlayEdit{});
-    runner.apply(ui::PauseEdit{});
+    runner.apply(ui::Play{});
+    runner.apply(ui::Pause{});
     QCOMPARE(runner.advance(1.0, kNoBudgetLimit).steps, 0);
     QCOMPARE(runner.state().time, 0.0);
 }
@@ -112,7 +112,7 @@ void TestSimulationRunner::budgetDropsTheBacklog()
 {
     // no computing time at all: one step, and the rest is given up rather than owed
     ui::SimulationRunner runner = runnerWith(springScene());
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     const ui::SimulationRunner::Advance advance = runner.advance(1.0, 0.0);
     QCOMPARE(advance.steps, 1);
     QCOMPARE(advance.droppedSeconds, 0.75);
@@ -122,8 +122,8 @@ void TestSimulationRunner::budgetDropsTheBacklog()
 void TestSimulationRunner::stepOnceStepsAndPauses()
 {
     ui::SimulationRunner runner = runnerWith(springScene());
-    runner.apply(ui::PlayEdit{});
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::Play{});
+    runner.apply(ui::StepOnce{});
     QVERIFY(!runner.isRunning());
     QCOMPARE(runner.state().step, 1u);
     QCOMPARE(runner.snapshot()->step, 1u);
@@ -133,11 +133,11 @@ void TestSimulationRunner::resetRestoresTheInitialStateExactly()
 {
     const auto scene = springScene();
     ui::SimulationRunner runner = runnerWith(scene);
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     QVERIFY(runner.advance(2.0, kNoBudgetLimit).steps > 0);
     QVERIFY(runner.state().position(0, 1) != 1.0);
 
-    runner.apply(ui::ResetEdit{});
+    runner.apply(ui::Reset{});
     const core::State &state = runner.state();
     QCOMPARE(state.time, 0.0);
     QCOMPARE(state.step, 0u);
@@ -151,7 +151,7 @@ void TestSimulationRunner::resetRestoresTheInitialStateExactly()
 void TestSimulationRunner::parameterChangeKeepsTheState()
 {
     ui::SimulationRunner runner = runnerWith(springScene(100.0));
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     const core::State before = runner.state();
 
     runner.apply(ui::SetSceneEdit{springScene(400.0), ui::SceneChange::Parameters});
@@ -164,14 +164,14 @@ void TestSimulationRunner::parameterChangeKeepsTheState()
     core::State expected = before;
     core::Workspace work;
     core::step(*core::compileModel(*springScene(400.0)), expected, work);
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     QVERIFY(runner.state().position == expected.position);
 }
 
 void TestSimulationRunner::structureChangeKeepsTheMotionWhenTheCountMatches()
 {
     ui::SimulationRunner runner = runnerWith(springScene());
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     const core::State before = runner.state();
 
     // the same particles, one more spring: the motion carries over
@@ -201,7 +201,7 @@ void TestSimulationRunner::editedParticlesStartFromTheirNewDescription()
     scene->particles.push_back(scene->particles[1]);
     scene->particles[2].position = {2.0, 0.0, 0.0};
     ui::SimulationRunner runner = runnerWith(scene);
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     const core::State before = runner.state();
     QVERIFY(before.position.col(1) != Eigen::Vector3d(1.0, 0.0, 0.0));
 
@@ -230,7 +230,7 @@ void TestSimulationRunner::grabPullsTowardTheTargetAndLetsGo()
     scene->springs.clear();
     scene->particles[1].velocity.setZero();
     ui::SimulationRunner runner = runnerWith(scene);
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     const Eigen::Vector3d target(1.0, 2.0, 0.0);
     runner.apply(ui::GrabEdit{1, target});
     runner.advance(1.0, kNoBudgetLimit);
@@ -253,7 +253,7 @@ void TestSimulationRunner::grabPullsTowardTheTargetAndLetsGo()
 void TestSimulationRunner::replaceStartsAfresh()
 {
     ui::SimulationRunner runner = runnerWith(springScene());
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(1.0, kNoBudgetLimit);
     runner.apply(ui::SetSceneEdit{springScene(50.0), ui::SceneChange::Replace});
     QVERIFY(!runner.isRunning());
@@ -292,13 +292,13 @@ void TestSimulationRunner::steeringPushesTheParticle()
     ui::SimulationRunner runner = runnerWith(springScene(0.0));
     const Eigen::Vector3d force(2.0, 0.0, -1.0);
     runner.apply(ui::SteerEdit{1, force});
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     const Eigen::Vector3d expected = springScene()->particles[1].velocity + 0.25 * force;
     QVERIFY(runner.state().velocity.col(1) == expected);
 
     // a zero force stops pushing
     runner.apply(ui::SteerEdit{1, Eigen::Vector3d::Zero()});
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     QVERIFY(runner.state().velocity.col(1) == expected);
     QCOMPARE(runner.state().appliedCount, 0);
 }
@@ -307,7 +307,7 @@ void TestSimulationRunner::steeringSurvivesResetButNotReplace()
 {
     ui::SimulationRunner runner = runnerWith(springScene(0.0));
     runner.apply(ui::SteerEdit{1, Eigen::Vector3d(1.0, 0.0, 0.0)});
-    runner.apply(ui::ResetEdit{});
+    runner.apply(ui::Reset{});
     QCOMPARE(runner.state().appliedCount, 1);
     runner.apply(ui::SetSceneEdit{springScene(0.0), ui::SceneChange::Parameters});
     QCOMPARE(runner.state().appliedCount, 1);
@@ -319,7 +319,7 @@ void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
 {
     // far too stiff for the time step: the amplitude grows ~h²k/m = 10⁷ times a step
     ui::SimulationRunner runner = runnerWith(springScene(1e9, 0.1));
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(0.1, kNoBudgetLimit);
     const core::State good = runner.state();
     runner.advance(0.1, kNoBudgetLimit);
@@ -346,7 +346,7 @@ void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
 
     // it can go on from there once the scene is fixed
     runner.apply(ui::SetSceneEdit{springScene(100.0, 0.1), ui::SceneChange::Parameters});
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     QVERIFY(!runner.takeBlowupMessage().has_value());
 }
 
@@ -397,14 +397,14 @@ void TestSimulationRunner::pairSpeedWarningFollowsTheRun()
 
     // the run is checked too: a kick past the limit shows after the steps
     runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Parameters});
-    runner.apply(ui::ResetEdit{});
+    runner.apply(ui::Reset{});
     QVERIFY(!runner.pairSpeedWarning().empty());
     auto slow = std::make_shared<core::SceneDesc>(*scene);
     slow->particles[0].velocity = {1.0, 0.0, 0.0};
     runner.apply(ui::SetSceneEdit{slow, ui::SceneChange::Structure});
     QVERIFY(runner.pairSpeedWarning().empty());
     runner.apply(ui::SteerEdit{0, Eigen::Vector3d(5000.0, 0.0, 0.0)});  // 1 kg: 5000 m/s² along x
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(0.05, kNoBudgetLimit);
     QVERIFY(!runner.pairSpeedWarning().empty());
 }
@@ -424,7 +424,7 @@ void TestSimulationRunner::examplesStayInsideThePairSpeedLimit()
                                           QStringLiteral(".json"));
     QVERIFY2(loaded.ok(), qPrintable(loaded.error));
     ui::SimulationRunner runner = runnerWith(std::make_shared<core::SceneDesc>(*loaded.scene));
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     for (int tick = 0; tick < 100; ++tick) {
         runner.advance(0.03, kNoBudgetLimit);
         QVERIFY2(runner.pairSpeedWarning().empty(), runner.pairSpeedWarning().c_str());
@@ -443,7 +443,7 @@ void TestSimulationRunner::errorEstimateFollowsEdits()
     QVERIFY(*runner.localError() > 0.0);
 
     // a step, then another integrator: each time the estimate of the state and model now
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     runner.updateEstimate();
     QCOMPARE(runner.localErrorStep(), 1u);
     QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
@@ -461,7 +461,7 @@ void TestSimulationRunner::errorEstimateRefreshesWhileRunning()
     // running: a new estimate comes within a bounded number of ticks, of the state they ended at
     ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
     runner.updateEstimate();
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     int ticks = 0;
     while (runner.localErrorStep() == 0 && ticks < 100000) {
         runner.advance(0.05, kNoBudgetLimit);
@@ -488,7 +488,7 @@ void TestSimulationRunner::driftIsMeasuredFromTheLastReset()
     QCOMPARE(runner.snapshot()->energies.total(), runner.initialEnergies().total());
 
     // symplectic Euler on a spring: the energy moves during the run
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(0.37, kNoBudgetLimit);
     QVERIFY(runner.snapshot()->energies.total() != runner.initialEnergies().total());
 
@@ -497,7 +497,7 @@ void TestSimulationRunner::driftIsMeasuredFromTheLastReset()
     softer->springs[0].stiffness = 50.0;
     runner.apply(ui::SetSceneEdit{softer, ui::SceneChange::Parameters});
     QCOMPARE(runner.initialEnergies().total(), initial.total());
-    runner.apply(ui::ResetEdit{});
+    runner.apply(ui::Reset{});
     QCOMPARE(runner.snapshot()->energies.total(), runner.initialEnergies().total());
     QVERIFY(runner.initialEnergies().total() != initial.total());  // the softer spring stores less
 }
@@ -508,7 +508,7 @@ void TestSimulationRunner::errorEstimateIsCheapOnTheCloth()
     io::LoadResult loaded = io::loadScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/cloth.json"));
     QVERIFY2(loaded.ok(), qPrintable(loaded.error));
     ui::SimulationRunner runner = runnerWith(std::make_shared<const core::SceneDesc>(std::move(*loaded.scene)));
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     std::uint64_t estimates = 0;
     std::uint64_t lastStep = 0;
     for (int tick = 0; tick < 180; ++tick) {
@@ -533,8 +533,8 @@ void TestSimulationRunner::accuracyPlanIsMadeFromTheRunnersState()
 {
     ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
     QVERIFY(runner.accuracyPlan() == nullptr);
-    runner.apply(ui::StepOnceEdit{});
-    runner.apply(ui::PlanAccuracyEdit{1e-6, 7});
+    runner.apply(ui::StepOnce{});
+    runner.apply(ui::PlanAccuracy{1e-6, 7});
 
     // a row per fixed-step integrator, tagged with the request; the state was not stepped
     QCOMPARE(runner.accuracyRequest(), 7u);

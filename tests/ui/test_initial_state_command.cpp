@@ -25,10 +25,10 @@ bool runPastABreak(ui::SimulationRunner &runner, std::shared_ptr<const core::Sce
         return false;
     scene = std::make_shared<const core::SceneDesc>(*loaded.scene);
     runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     for (int tick = 0; tick < 2000 && runner.state().breaks.size() < 3; ++tick)
         runner.advance(scene->settings.timeStep, kNoBudgetLimit);
-    runner.apply(ui::PauseEdit{});
+    runner.apply(ui::Pause{});
     return runner.state().breaks.size() >= 3;
 }
 
@@ -36,7 +36,7 @@ bool runPastABreak(ui::SimulationRunner &runner, std::shared_ptr<const core::Sce
 std::uint64_t hashAfter(ui::SimulationRunner &runner, int steps)
 {
     for (int i = 0; i < steps; ++i)
-        runner.apply(ui::StepOnceEdit{});
+        runner.apply(ui::StepOnce{});
     return core::stateHash(runner.state());
 }
 
@@ -55,7 +55,7 @@ void TestInitialStateCommand::tornSpringsLeaveTheScene()
     ui::SimulationRunner runner;
     std::shared_ptr<const core::SceneDesc> scene;
     QVERIFY(runPastABreak(runner, scene));
-    runner.apply(ui::CaptureStateEdit{1});
+    runner.apply(ui::CaptureState{1});
     QVERIFY(runner.capturedState());
     const core::State captured = runner.capturedState()->state;
     QCOMPARE(captured.step, runner.state().step);
@@ -104,7 +104,7 @@ void TestInitialStateCommand::theRunGoesOnThroughEditUndoAndRedo()
     QVERIFY(runPastABreak(runner, scene));
     QVERIFY(runPastABreak(control, scene));
     QCOMPARE(core::stateHash(runner.state()), core::stateHash(control.state()));
-    runner.apply(ui::CaptureStateEdit{1});
+    runner.apply(ui::CaptureState{1});
     ui::SceneDocument document;
     document.setScene(scene, ui::SceneChange::Replace);
     QObject::connect(&document, &ui::SceneDocument::sceneChanged, [&](ui::SceneChange change) {

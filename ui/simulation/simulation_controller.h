@@ -1,10 +1,10 @@
 #pragma once
 // SimulationController: the UI thread's handle on the simulation. It owns the worker thread, the
-// edit queue and the frame mailbox. Every request (scene, play, pause, step, reset, tilt, steer)
-// becomes an edit that the worker applies between two steps, so none of them ever blocks the UI;
+// message queue and the frame mailbox. Every request (scene, play, pause, step, reset, tilt, steer)
+// becomes a message that the worker applies between two steps, so none of them ever blocks the UI;
 // frames come back through the latest-wins mailbox and a queued signal.
 
-#include "session/edit_queue.h"
+#include "session/messages.h"
 #include "session/latest_mailbox.h"
 #include "session/simulation_frame.h"
 
@@ -29,7 +29,7 @@ public:
     explicit SimulationController(QObject *parent = nullptr);
     ~SimulationController() override;
 
-    // each returns the edit's sequence number; frame()->appliedEdit reaches it once applied
+    // each returns the message's sequence number; frame()->appliedMessage reaches it once applied
     std::uint64_t setScene(std::shared_ptr<const core::SceneDesc> scene, SceneChange change);
     std::uint64_t play();
     std::uint64_t pause();
@@ -40,7 +40,7 @@ public:
     std::uint64_t steer(int particle, const Eigen::Vector3d &force);
     // the Drag tool's mouse spring pulls particle toward target; particle -1 lets go
     std::uint64_t grab(int particle, const Eigen::Vector3d &target);
-    // changes nothing, but the worker publishes a frame once it has applied every earlier edit
+    // changes nothing, but the worker publishes a frame once it has applied every earlier message
     std::uint64_t sync();
     // asks the worker to plan the integrator and substeps for a tolerance (m per sub-step) from its
     // state; returns the request's number, which frame()->accuracyRequest reaches with the plan
@@ -81,11 +81,11 @@ signals:
     void blewUp(const QString &message);
 
 private:
-    std::uint64_t post(Edit edit);
+    std::uint64_t post(Message message);
     void setRunning(bool running);
     void takeFrame();
 
-    EditQueue m_edits;
+    MessageQueue m_messages;
     LatestMailbox<SimulationFrame> m_mailbox;
     std::uint64_t m_recordingRequests = 0;
     QThread *m_thread = nullptr;

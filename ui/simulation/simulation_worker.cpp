@@ -18,8 +18,8 @@ const QEvent::Type kWakeEvent = static_cast<QEvent::Type>(QEvent::registerEventT
 
 }  // namespace
 
-SimulationWorker::SimulationWorker(EditQueue &edits, LatestMailbox<SimulationFrame> &mailbox)
-    : m_edits(edits), m_mailbox(mailbox), m_timer(new QTimer(this))
+SimulationWorker::SimulationWorker(MessageQueue &messages, LatestMailbox<SimulationFrame> &mailbox)
+    : m_messages(messages), m_mailbox(mailbox), m_timer(new QTimer(this))
 {
     // the timer is a child, so it moves to the worker thread with this object
     m_timer->setTimerType(Qt::PreciseTimer);
@@ -63,12 +63,12 @@ void SimulationWorker::tick()
 {
     const bool wasRunning = m_runner.isRunning();
 
-    // edits first: they land between two steps
-    EditQueue::Batch batch = m_edits.drain();
-    for (const Edit &edit : batch.edits)
-        m_runner.apply(edit);
-    bool changed = !batch.edits.empty();
-    m_appliedEdit = batch.lastSequence;
+    // messages first: they land between two steps
+    MessageQueue::Batch batch = m_messages.drain();
+    for (const Message &message : batch.messages)
+        m_runner.apply(message);
+    bool changed = !batch.messages.empty();
+    m_appliedMessage = batch.lastSequence;
 
     // then the steps that the wall time elapsed since the last tick asks for
     if (m_runner.isRunning()) {
@@ -103,7 +103,7 @@ void SimulationWorker::tick()
         m_stepsPerSecond = 0.0;
     }
 
-    // an edit or a blow-up changed what the error estimate is of: estimate again
+    // a message or a blow-up changed what the error estimate is of: estimate again
     m_runner.updateEstimate();
 
     // an edit changed the model: its stability limit, for the parameters panel
@@ -132,7 +132,7 @@ void SimulationWorker::publish()
     // the snapshot's own model and scene, the recorded ones while a past step is shown
     frame->model = m_runner.shownModel();
     frame->scene = m_runner.shownScene();
-    frame->appliedEdit = m_appliedEdit;
+    frame->appliedMessage = m_appliedMessage;
     frame->running = m_runner.isRunning();
     frame->realTimeFactor = m_realTimeFactor;
     frame->stepsPerSecond = m_stepsPerSecond;

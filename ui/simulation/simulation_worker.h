@@ -1,9 +1,9 @@
 #pragma once
 // SimulationWorker: lives on the controller's worker thread. A QTimer ticks it while running; each
-// tick drains the edit queue, advances the simulation by the wall time elapsed (capped) and
+// tick drains the message queue, advances the simulation by the wall time elapsed (capped) and
 // publishes a frame to the mailbox. Only this object, on its thread, touches the core::State.
 
-#include "session/edit_queue.h"
+#include "session/messages.h"
 #include "session/latest_mailbox.h"
 #include "session/simulation_frame.h"
 #include "session/simulation_runner.h"
@@ -27,13 +27,13 @@ public:
     // ms between ticks while running
     static constexpr int kTickIntervalMs = 16;
 
-    SimulationWorker(EditQueue &edits, LatestMailbox<SimulationFrame> &mailbox);
+    SimulationWorker(MessageQueue &messages, LatestMailbox<SimulationFrame> &mailbox);
 
-    // Posts the event that makes the worker apply pending edits now, running or not.
+    // Posts the event that makes the worker apply pending messages now, running or not.
     static void postWake(SimulationWorker *worker);
     ~SimulationWorker() override;
 
-    // the UI side sets this before queueing wake(), so that a burst of edits queues one wake
+    // the UI side sets this before queueing wake(), so that a burst of messages queues one wake
     std::atomic<bool> &wakePending() { return m_wakePending; }
 
 protected:
@@ -50,13 +50,13 @@ private:
     void tick();
     void publish();
 
-    EditQueue &m_edits;
+    MessageQueue &m_messages;
     LatestMailbox<SimulationFrame> &m_mailbox;
     SimulationRunner m_runner;
     QTimer *m_timer = nullptr;
     QElapsedTimer m_clock;  // wall time since the previous tick while running
     std::atomic<bool> m_wakePending = false;
-    std::uint64_t m_appliedEdit = 0;
+    std::uint64_t m_appliedMessage = 0;
 
     // rates over the current measuring window
     QElapsedTimer m_window;

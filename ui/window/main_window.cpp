@@ -521,7 +521,7 @@ void MainWindow::frameChanged()
     m_viewport->setSnapshot(frame->snapshot);
     showTimeline(*frame);
     m_plots->addFrame(*frame);
-    if (m_frameAllAfter != 0 && frame->appliedEdit >= m_frameAllAfter) {
+    if (m_frameAllAfter != 0 && frame->appliedMessage >= m_frameAllAfter) {
         m_frameAllAfter = 0;
         m_viewport->frameAll();
     }
