@@ -2,9 +2,10 @@
 // Messages: everything the UI asks of the running simulation, applied by the worker between two
 // steps. Edits change the scene or the run (SetSceneEdit, TiltEdit, SteerEdit, GrabEdit; their
 // names say so); the rest control the run (play, pause, step, reset), move through the timeline
-// (scrub, step back) or ask for a one-off answer. The UI thread pushes, the worker drains at the start of each tick, so the worker's State is never read
-// or written from the UI thread (MuJoCo's `simulate` applies its pending actions the same way).
-// Qt-free, so the unit tests can drive it directly.
+// (scrub, step back) or ask for a one-off answer, which comes back once as a reply (replies.h).
+// The UI thread pushes, the worker drains at the start of each tick, so the worker's State is
+// never read or written from the UI thread (MuJoCo's `simulate` applies its pending actions the
+// same way). Qt-free, so the unit tests can drive it directly.
 
 #include "core/scene.h"
 
@@ -56,19 +57,19 @@ struct Reset {};     // back to the scene's initial conditions
 struct Sync {};      // changes nothing; its frame shows that every earlier message was applied
 
 // plan the integrator and substeps for a tolerance from the current state (core/accuracy_planner.h);
-// the plan comes back in the frames, tagged with the request's number
+// the plan comes back as an AccuracyPlanReply, tagged with the request's number
 struct PlanAccuracy {
     double tolerance = 1e-6;    // m, local position error per sub-step
     std::uint64_t request = 0;  // the controller's number for this request
 };
 // copy the current positions and velocities out (captured_state.h) for "Use current state as
-// initial"; they come back in the frames, tagged with the request's number
+// initial"; they come back as a CapturedStateReply, tagged with the request's number
 struct CaptureState {
     std::uint64_t request = 0;  // the controller's number for this request
 };
 
-// session recording (session_recording.h): start, and stop handing the recording back in the
-// frames, tagged with the request's number
+// session recording (session_recording.h): start, and stop handing the recording back as a
+// RecordingReply, tagged with the request's number
 struct StartRecording {};
 struct StopRecording {
     std::uint64_t request = 0;

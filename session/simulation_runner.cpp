@@ -118,10 +118,7 @@ void SimulationRunner::apply(const Message &message)
                    [this](const CaptureState &e) { captureState(e); },
                    [this](const GrabEdit &e) { grab(e); },
                    [this](const StartRecording &) { startRecording(); },
-                   [this](const StopRecording &e) {
-                       m_finishedRecording = stopRecording();
-                       m_recordingRequest = e.request;
-                   },
+                   [this](const StopRecording &e) { m_replies.push_back(RecordingReply{e.request, stopRecording()}); },
                    [this](const Scrub &e) { scrubTo(e.step); },
                    [this](const StepBack &) { stepBack(); },
                    [this](const SetTimelineBudget &e) { m_timeline.setBudget(e.bytes); },
@@ -527,8 +524,7 @@ void SimulationRunner::planAccuracy(const PlanAccuracy &request)
             secondsPerEvaluation = core::timedSecondsPerEvaluation(*m_model, m_state);
         *plan = core::planAccuracy(*m_model, m_state, request.tolerance, secondsPerEvaluation);
     }
-    m_plan = std::move(plan);
-    m_planRequest = request.request;
+    m_replies.push_back(AccuracyPlanReply{request.request, std::move(plan)});
 }
 
 void SimulationRunner::captureState(const CaptureState &request)
@@ -540,8 +536,7 @@ void SimulationRunner::captureState(const CaptureState &request)
         captured->state = shownState();
         captured->scene = m_scrub ? m_scrub->scene : m_scene;
     }
-    m_captured = std::move(captured);
-    m_captureRequest = request.request;
+    m_replies.push_back(CapturedStateReply{request.request, std::move(captured)});
 }
 
 std::shared_ptr<const core::Snapshot> SimulationRunner::snapshot() const

@@ -20,6 +20,7 @@
 
 #include "captured_state.h"
 #include "messages.h"
+#include "replies.h"
 #include "session_recording.h"
 #include "timeline.h"
 
@@ -34,6 +35,8 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace ui {
 
@@ -60,9 +63,6 @@ public:
     void startRecording();
     std::shared_ptr<const SessionRecording> stopRecording();
     bool isRecording() const { return m_recording != nullptr; }
-    // the recording the latest StopRecording ended (null if none was running) and its request
-    std::shared_ptr<const SessionRecording> finishedRecording() const { return m_finishedRecording; }
-    std::uint64_t recordingRequest() const { return m_recordingRequest; }
     // steps that stuck since the first scene: a tick that blows up goes back to its start, and
     // its steps are taken back from the count too
     std::uint64_t stepsTaken() const { return m_stepsTaken; }
@@ -129,13 +129,9 @@ public:
     // estimateSeconds() / stepSeconds(), 0 before any step
     double estimateShare() const { return m_stepSeconds > 0.0 ? m_estimateSeconds / m_stepSeconds : 0.0; }
 
-    // the latest accuracy plan (null before the first request) and the request it answers
-    std::shared_ptr<const core::AccuracyPlan> accuracyPlan() const { return m_plan; }
-    std::uint64_t accuracyRequest() const { return m_planRequest; }
-
-    // the latest captured state (null before the first request) and the request it answers
-    std::shared_ptr<const CapturedState> capturedState() const { return m_captured; }
-    std::uint64_t captureRequest() const { return m_captureRequest; }
+    // the replies to the messages applied since the last call (PlanAccuracy, CaptureState,
+    // StopRecording), oldest first, each handed over once
+    std::vector<Reply> takeReplies() { return std::exchange(m_replies, {}); }
 
 private:
     void setScene(const SetSceneEdit &edit);
@@ -195,11 +191,7 @@ private:
     double m_estimateSeconds = 0.0;
     core::Energies m_initialEnergies;
 
-    std::shared_ptr<const core::AccuracyPlan> m_plan;
-    std::uint64_t m_planRequest = 0;
-
-    std::shared_ptr<const CapturedState> m_captured;
-    std::uint64_t m_captureRequest = 0;
+    std::vector<Reply> m_replies;  // not yet taken
 
     // the mouse spring: the particle held (-1: none) and where the cursor holds it
     int m_grabParticle = -1;
@@ -208,8 +200,6 @@ private:
     std::uint64_t m_stepsTaken = 0;
     std::shared_ptr<SessionRecording> m_recording;  // while recording
     std::uint64_t m_recordingFrom = 0;              // m_stepsTaken when it started
-    std::shared_ptr<const SessionRecording> m_finishedRecording;
-    std::uint64_t m_recordingRequest = 0;
 
     // the steering force, kept across resets and parameter changes
     int m_steerParticle = -1;

@@ -394,7 +394,9 @@ void TestSimCli::replayRunsARecordingToItsBits()
     runner.apply(ui::SetSceneEdit{changed, ui::SceneChange::Parameters});
     runner.advance(0.2, 1e9);
     runner.apply(ui::StopRecording{1});
-    const auto recording = runner.finishedRecording();
+    const std::optional<ui::RecordingReply> stopped = ui::findReply<ui::RecordingReply>(runner.takeReplies());
+    QVERIFY(stopped);
+    const auto recording = stopped->recording;
     QVERIFY(recording && recording->steps > 0);
     const QString session = path(u"session.replay.json"_s);
     QCOMPARE(ui::saveRecording(session, *recording), QString());

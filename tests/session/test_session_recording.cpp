@@ -31,8 +31,17 @@ std::shared_ptr<const core::SceneDesc> netScene()
     return std::make_shared<const core::SceneDesc>(scene);
 }
 
+// the recording a StopRecording handed back, and the request it answers
+std::shared_ptr<const ui::SessionRecording> stoppedRecording(ui::SimulationRunner &runner, std::uint64_t *request = nullptr)
+{
+    const std::optional<ui::RecordingReply> reply = ui::findReply<ui::RecordingReply>(runner.takeReplies());
+    if (request)
+        *request = reply ? reply->request : 0;
+    return reply ? reply->recording : nullptr;
+}
+
 // the runner's own session: every kind of edit, some mid-run, and a tick that blows up
-std::shared_ptr<const ui::SessionRecording> recordSession(ui::SimulationRunner &runner)
+std::shared_ptr<const ui::SessionRecording> recordSession(ui::SimulationRunner &runner, std::uint64_t *request = nullptr)
 {
     runner.apply(ui::SetSceneEdit{netScene(), ui::SceneChange::Replace});
     runner.apply(ui::Play{});
@@ -80,7 +89,7 @@ std::shared_ptr<const ui::SessionRecording> recordSession(ui::SimulationRunner &
     runner.advance(0.03, kNoBudgetLimit);
     runner.apply(ui::StopRecording{1});
     runner.advance(0.05, kNoBudgetLimit);  // after the end: not part of it
-    return runner.finishedRecording();
+    return stoppedRecording(runner, request);
 }
 
 }  // namespace
@@ -101,9 +110,10 @@ private slots:
 void TestSessionRecording::replayEndsWithTheRecordedBits()
 {
     ui::SimulationRunner runner;
-    const auto recording = recordSession(runner);
+    std::uint64_t request = 0;
+    const auto recording = recordSession(runner, &request);
     QVERIFY(recording);
-    QCOMPARE(runner.recordingRequest(), std::uint64_t(1));
+    QCOMPARE(request, std::uint64_t(1));
     QVERIFY(!runner.isRecording());
     // every kind of edit is in it, Sync is not; the steering held from before starts it
     QCOMPARE(recording->entries.size(), std::size_t(13));
@@ -181,8 +191,9 @@ void TestSessionRecording::nothingIsRecordedWithoutAStart()
     runner.apply(ui::Play{});
     runner.advance(0.05, kNoBudgetLimit);
     runner.apply(ui::StopRecording{5});
-    QCOMPARE(runner.recordingRequest(), std::uint64_t(5));
-    QVERIFY(!runner.finishedRecording());
+    std::uint64_t request = 0;
+    QVERIFY(!stoppedRecording(runner, &request));
+    QCOMPARE(request, std::uint64_t(5));
 }
 
 // the tearable cloth run past its first break, then 50 steps recorded
@@ -204,7 +215,7 @@ std::shared_ptr<const ui::SessionRecording> recordAfterABreak(ui::SimulationRunn
     while (runner.stepsTaken() < from + 50)
         runner.advance(h, kNoBudgetLimit);
     runner.apply(ui::StopRecording{1});
-    return runner.finishedRecording();
+    return stoppedRecording(runner);
 }
 
 // a recording that starts after springs have broken carries them: its replay, from memory and

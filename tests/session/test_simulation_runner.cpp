@@ -532,13 +532,15 @@ void TestSimulationRunner::errorEstimateIsCheapOnTheCloth()
 void TestSimulationRunner::accuracyPlanIsMadeFromTheRunnersState()
 {
     ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
-    QVERIFY(runner.accuracyPlan() == nullptr);
+    QVERIFY(!ui::findReply<ui::AccuracyPlanReply>(runner.takeReplies()));
     runner.apply(ui::StepOnce{});
     runner.apply(ui::PlanAccuracy{1e-6, 7});
 
     // a row per fixed-step integrator, tagged with the request; the state was not stepped
-    QCOMPARE(runner.accuracyRequest(), 7u);
-    const auto plan = runner.accuracyPlan();
+    const std::optional<ui::AccuracyPlanReply> reply = ui::findReply<ui::AccuracyPlanReply>(runner.takeReplies());
+    QVERIFY(reply);
+    QCOMPARE(reply->request, 7u);
+    const auto plan = reply->plan;
     QVERIFY(plan != nullptr);
     QCOMPARE(plan->tolerance, 1e-6);
     QCOMPARE(plan->candidates.size(), std::size(core::kIntegrators) - 1);

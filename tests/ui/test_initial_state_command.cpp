@@ -56,8 +56,9 @@ void TestInitialStateCommand::tornSpringsLeaveTheScene()
     std::shared_ptr<const core::SceneDesc> scene;
     QVERIFY(runPastABreak(runner, scene));
     runner.apply(ui::CaptureState{1});
-    QVERIFY(runner.capturedState());
-    const core::State captured = runner.capturedState()->state;
+    const std::optional<ui::CapturedStateReply> reply = ui::findReply<ui::CapturedStateReply>(runner.takeReplies());
+    QVERIFY(reply && reply->captured);
+    const core::State captured = reply->captured->state;
     QCOMPARE(captured.step, runner.state().step);
 
     ui::SceneDocument document;
@@ -105,12 +106,14 @@ void TestInitialStateCommand::theRunGoesOnThroughEditUndoAndRedo()
     QVERIFY(runPastABreak(control, scene));
     QCOMPARE(core::stateHash(runner.state()), core::stateHash(control.state()));
     runner.apply(ui::CaptureState{1});
+    const std::optional<ui::CapturedStateReply> reply = ui::findReply<ui::CapturedStateReply>(runner.takeReplies());
+    QVERIFY(reply && reply->captured);
     ui::SceneDocument document;
     document.setScene(scene, ui::SceneChange::Replace);
     QObject::connect(&document, &ui::SceneDocument::sceneChanged, [&](ui::SceneChange change) {
         runner.apply(ui::SetSceneEdit{document.sharedScene(), change});
     });
-    document.undoStack()->push(new ui::InitialStateCommand(document, QStringLiteral("initial"), runner.capturedState()->state));
+    document.undoStack()->push(new ui::InitialStateCommand(document, QStringLiteral("initial"), reply->captured->state));
     QCOMPARE(runner.state().position, control.state().position);
     QCOMPARE(std::count(runner.state().springBroken.begin(), runner.state().springBroken.end(), 1), 0L);
     QCOMPARE(hashAfter(runner, 15), hashAfter(control, 15));

@@ -4,6 +4,8 @@
 #include "thread_handover.h"
 
 #include <QThread>
+#include <type_traits>
+#include <variant>
 
 namespace ui {
 
@@ -21,16 +23,18 @@ std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t count)
 }  // namespace
 
 SimulationController::SimulationController(QObject *parent)
-    : QObject(parent), m_thread(new QThread(this)), m_worker(new SimulationWorker(m_messages, m_mailbox))
+    : QObject(parent), m_thread(new QThread(this)), m_worker(new SimulationWorker(m_messages, m_replies, m_mailbox))
 {
     // the worker lives on its own thread and is deleted there when the thread finishes
     m_thread->setObjectName(QStringLiteral("simulation"));
     m_worker->moveToThread(m_thread);
     connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
 
-    // frames and blow-ups come back queued, onto this (the UI) thread
+    // frames, replies and blow-ups come back queued, onto this (the UI) thread
     m_frameConnection = connect(m_worker, &SimulationWorker::frameReady, this, &SimulationController::takeFrame,
                                 Qt::QueuedConnection);
+    m_repliesConnection = connect(m_worker, &SimulationWorker::repliesReady, this,
+                                  &SimulationController::takeReplies, Qt::QueuedConnection);
     m_blowUpConnection = connect(m_worker, &SimulationWorker::blewUp, this, [this](const QString &message) {
         setRunning(false);
         emit blewUp(message);
@@ -54,6 +58,7 @@ void SimulationController::shutDown()
     // (By their handles: a disconnect by sender would read the worker's QObject from this thread.)
     disconnect(m_frameConnection);
     disconnect(m_blowUpConnection);
+    disconnect(m_repliesConnection);
     // the worker's event loop ends, its timer stops with it, and the worker is deleted on its thread
     handOverRelease(m_worker);
     m_thread->quit();
@@ -191,6 +196,22 @@ void SimulationController::takeFrame()
         return;
     m_frame = std::move(frame);
     emit frameChanged();
+}
+
+void SimulationController::takeReplies()
+{
+    for (const Reply &reply : m_replies.drain())
+        std::visit(
+            [this](const auto &r) {
+                using R = std::decay_t<decltype(r)>;
+                if constexpr (std::is_same_v<R, AccuracyPlanReply>)
+                    emit accuracyPlanned(r);
+                else if constexpr (std::is_same_v<R, CapturedStateReply>)
+                    emit stateCaptured(r);
+                else
+                    emit recordingStopped(r);
+            },
+            reply);
 }
 
 }  // namespace ui

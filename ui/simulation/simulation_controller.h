@@ -2,10 +2,13 @@
 // SimulationController: the UI thread's handle on the simulation. It owns the worker thread, the
 // message queue and the frame mailbox. Every request (scene, play, pause, step, reset, tilt, steer)
 // becomes a message that the worker applies between two steps, so none of them ever blocks the UI;
-// frames come back through the latest-wins mailbox and a queued signal.
+// frames come back through the latest-wins mailbox and a queued signal, and the answers to one-off
+// requests (a plan, a captured state, a recording) through the reply queue, each announced once
+// by its own signal.
 
 #include "session/messages.h"
 #include "session/latest_mailbox.h"
+#include "session/replies.h"
 #include "session/simulation_frame.h"
 
 #include <QObject>
@@ -43,13 +46,13 @@ public:
     // changes nothing, but the worker publishes a frame once it has applied every earlier message
     std::uint64_t sync();
     // asks the worker to plan the integrator and substeps for a tolerance (m per sub-step) from its
-    // state; returns the request's number, which frame()->accuracyRequest reaches with the plan
+    // state; returns the request's number, which accuracyPlanned() carries with the plan
     std::uint64_t planAccuracy(double tolerance);
     // asks the worker for a copy of its positions and velocities; returns the request's number,
-    // which frame()->captureRequest reaches with the captured state
+    // which stateCaptured() carries with the captured state
     std::uint64_t captureState();
     // starts recording the session; stopRecording() ends it and returns the request's number,
-    // which frame()->recordingRequest reaches with the recording
+    // which recordingStopped() carries with the recording
     std::uint64_t startRecording();
     std::uint64_t stopRecording();
 
@@ -79,20 +82,27 @@ signals:
     void runningChanged(bool running);
     // the run blew up and paused; the message names the particle, the quantity, the step and time
     void blewUp(const QString &message);
+    // the replies to planAccuracy(), captureState() and stopRecording(), each once
+    void accuracyPlanned(const ui::AccuracyPlanReply &reply);
+    void stateCaptured(const ui::CapturedStateReply &reply);
+    void recordingStopped(const ui::RecordingReply &reply);
 
 private:
     std::uint64_t post(Message message);
     void setRunning(bool running);
     void takeFrame();
+    void takeReplies();
 
     MessageQueue m_messages;
     LatestMailbox<SimulationFrame> m_mailbox;
+    ReplyQueue m_replies;
     std::uint64_t m_recordingRequests = 0;
     QThread *m_thread = nullptr;
     SimulationWorker *m_worker = nullptr;
     // the worker's signals to this side, cut on this thread at shutDown()
     QMetaObject::Connection m_frameConnection;
     QMetaObject::Connection m_blowUpConnection;
+    QMetaObject::Connection m_repliesConnection;
     std::shared_ptr<const SimulationFrame> m_frame;
     bool m_running = false;
     bool m_shutDown = false;

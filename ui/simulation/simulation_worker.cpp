@@ -18,8 +18,8 @@ const QEvent::Type kWakeEvent = static_cast<QEvent::Type>(QEvent::registerEventT
 
 }  // namespace
 
-SimulationWorker::SimulationWorker(MessageQueue &messages, LatestMailbox<SimulationFrame> &mailbox)
-    : m_messages(messages), m_mailbox(mailbox), m_timer(new QTimer(this))
+SimulationWorker::SimulationWorker(MessageQueue &messages, ReplyQueue &replies, LatestMailbox<SimulationFrame> &mailbox)
+    : m_messages(messages), m_replies(replies), m_mailbox(mailbox), m_timer(new QTimer(this))
 {
     // the timer is a child, so it moves to the worker thread with this object
     m_timer->setTimerType(Qt::PreciseTimer);
@@ -68,6 +68,14 @@ void SimulationWorker::tick()
     for (const Message &message : batch.messages)
         m_runner.apply(message);
     bool changed = !batch.messages.empty();
+
+    // the answers to one-off requests, each once, ahead of the frame that follows them
+    bool told = false;
+    for (Reply &reply : m_runner.takeReplies())
+        if (m_replies.push(std::move(reply)) && !told) {
+            told = true;
+            emit repliesReady();
+        }
     m_appliedMessage = batch.lastSequence;
 
     // then the steps that the wall time elapsed since the last tick asks for
@@ -140,12 +148,6 @@ void SimulationWorker::publish()
     frame->localErrorStep = m_runner.localErrorStep();
     frame->initialEnergies = m_runner.initialEnergies();
     frame->estimateShare = m_runner.estimateShare();
-    frame->accuracyPlan = m_runner.accuracyPlan();
-    frame->accuracyRequest = m_runner.accuracyRequest();
-    frame->capturedState = m_runner.capturedState();
-    frame->captureRequest = m_runner.captureRequest();
-    frame->recording = m_runner.finishedRecording();
-    frame->recordingRequest = m_runner.recordingRequest();
     frame->stability = m_runner.stability();
     frame->pairSpeedWarning = m_runner.pairSpeedWarning();
     const Timeline &timeline = m_runner.timeline();

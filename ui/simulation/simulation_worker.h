@@ -1,10 +1,11 @@
 #pragma once
 // SimulationWorker: lives on the controller's worker thread. A QTimer ticks it while running; each
-// tick drains the message queue, advances the simulation by the wall time elapsed (capped) and
-// publishes a frame to the mailbox. Only this object, on its thread, touches the core::State.
+// tick drains the message queue, advances the simulation by the wall time elapsed (capped),
+// hands the replies to one-off requests to the reply queue and publishes a frame to the mailbox. Only this object, on its thread, touches the core::State.
 
 #include "session/messages.h"
 #include "session/latest_mailbox.h"
+#include "session/replies.h"
 #include "session/simulation_frame.h"
 #include "session/simulation_runner.h"
 
@@ -27,7 +28,7 @@ public:
     // ms between ticks while running
     static constexpr int kTickIntervalMs = 16;
 
-    SimulationWorker(MessageQueue &messages, LatestMailbox<SimulationFrame> &mailbox);
+    SimulationWorker(MessageQueue &messages, ReplyQueue &replies, LatestMailbox<SimulationFrame> &mailbox);
 
     // Posts the event that makes the worker apply pending messages now, running or not.
     static void postWake(SimulationWorker *worker);
@@ -42,6 +43,8 @@ protected:
 signals:
     // a frame waits in the mailbox, and the mailbox was empty before it
     void frameReady();
+    // replies wait in the reply queue, and the queue was empty before them
+    void repliesReady();
     // the run stopped because a value stopped being finite or bounded
     void blewUp(const QString &message);
 
@@ -51,6 +54,7 @@ private:
     void publish();
 
     MessageQueue &m_messages;
+    ReplyQueue &m_replies;
     LatestMailbox<SimulationFrame> &m_mailbox;
     SimulationRunner m_runner;
     QTimer *m_timer = nullptr;
