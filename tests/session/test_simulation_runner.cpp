@@ -354,10 +354,10 @@ void TestSimulationRunner::stabilityLimitFollowsEdits()
 {
     // 1 kg on k = 100 N/m: ω = 10 rad/s, so symplectic Euler is stable below 2/ω = 0.2 s
     ui::SimulationRunner runner = runnerWith(springScene(100.0));
-    QVERIFY(!runner.stability().has_value());
+    QVERIFY(!runner.diagnostics().stability().has_value());
     QVERIFY(runner.updateStability());
-    QVERIFY(runner.stability().has_value());
-    QVERIFY(std::abs(runner.stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.2) < 1e-6);
+    QVERIFY(runner.diagnostics().stability().has_value());
+    QVERIFY(std::abs(runner.diagnostics().stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.2) < 1e-6);
     QVERIFY(!runner.updateStability());  // nothing changed: not analysed again
 
     // four times stiffer halves it; with auto substeps the model takes as many as the limit asks:
@@ -365,7 +365,7 @@ void TestSimulationRunner::stabilityLimitFollowsEdits()
     auto stiffer = std::make_shared<core::SceneDesc>(*springScene(400.0));
     runner.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
     QVERIFY(runner.updateStability());
-    QVERIFY(std::abs(runner.stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.1) < 1e-6);
+    QVERIFY(std::abs(runner.diagnostics().stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.1) < 1e-6);
     QCOMPARE(runner.model()->substeps, 1);
     auto automatic = std::make_shared<core::SceneDesc>(*stiffer);
     automatic->settings.autoSubsteps = true;
@@ -386,27 +386,27 @@ void TestSimulationRunner::pairSpeedWarningFollowsTheRun()
     still.position = {3.0, 0.0, 0.0};
     scene->particles = {thrown, still};
     ui::SimulationRunner runner = runnerWith(scene);
-    QVERIFY2(QString::fromStdString(runner.pairSpeedWarning()).startsWith("Particles move up to 0.3 m apart"),
-             runner.pairSpeedWarning().c_str());
+    QVERIFY2(QString::fromStdString(runner.diagnostics().pairSpeedWarning()).startsWith("Particles move up to 0.3 m apart"),
+             runner.diagnostics().pairSpeedWarning().c_str());
 
     // two substeps bring it under, as the warning says
     auto split = std::make_shared<core::SceneDesc>(*scene);
     split->settings.substeps = 2;
     runner.apply(ui::SetSceneEdit{split, ui::SceneChange::Parameters});
-    QVERIFY(runner.pairSpeedWarning().empty());
+    QVERIFY(runner.diagnostics().pairSpeedWarning().empty());
 
     // the run is checked too: a kick past the limit shows after the steps
     runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Parameters});
     runner.apply(ui::Reset{});
-    QVERIFY(!runner.pairSpeedWarning().empty());
+    QVERIFY(!runner.diagnostics().pairSpeedWarning().empty());
     auto slow = std::make_shared<core::SceneDesc>(*scene);
     slow->particles[0].velocity = {1.0, 0.0, 0.0};
     runner.apply(ui::SetSceneEdit{slow, ui::SceneChange::Structure});
-    QVERIFY(runner.pairSpeedWarning().empty());
+    QVERIFY(runner.diagnostics().pairSpeedWarning().empty());
     runner.apply(ui::SteerEdit{0, Eigen::Vector3d(5000.0, 0.0, 0.0)});  // 1 kg: 5000 m/s² along x
     runner.apply(ui::Play{});
     runner.advance(0.05, kNoBudgetLimit);
-    QVERIFY(!runner.pairSpeedWarning().empty());
+    QVERIFY(!runner.diagnostics().pairSpeedWarning().empty());
 }
 
 void TestSimulationRunner::examplesStayInsideThePairSpeedLimit_data()
@@ -427,7 +427,7 @@ void TestSimulationRunner::examplesStayInsideThePairSpeedLimit()
     runner.apply(ui::Play{});
     for (int tick = 0; tick < 100; ++tick) {
         runner.advance(0.03, kNoBudgetLimit);
-        QVERIFY2(runner.pairSpeedWarning().empty(), runner.pairSpeedWarning().c_str());
+        QVERIFY2(runner.diagnostics().pairSpeedWarning().empty(), runner.diagnostics().pairSpeedWarning().c_str());
     }
 }
 
@@ -435,25 +435,25 @@ void TestSimulationRunner::errorEstimateFollowsEdits()
 {
     // loaded: an estimate of the initial state, the same as step doubling's own
     ui::SimulationRunner runner = runnerWith(springScene());
-    QVERIFY(!runner.localError().has_value());
+    QVERIFY(!runner.diagnostics().localError().has_value());
     runner.updateEstimate();
-    QVERIFY(runner.localError().has_value());
-    QCOMPARE(runner.localErrorStep(), 0u);
-    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
-    QVERIFY(*runner.localError() > 0.0);
+    QVERIFY(runner.diagnostics().localError().has_value());
+    QCOMPARE(runner.diagnostics().localErrorStep(), 0u);
+    QCOMPARE(*runner.diagnostics().localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    QVERIFY(*runner.diagnostics().localError() > 0.0);
 
     // a step, then another integrator: each time the estimate of the state and model now
     runner.apply(ui::StepOnce{});
     runner.updateEstimate();
-    QCOMPARE(runner.localErrorStep(), 1u);
-    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
-    const double symplectic = *runner.localError();
+    QCOMPARE(runner.diagnostics().localErrorStep(), 1u);
+    QCOMPARE(*runner.diagnostics().localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    const double symplectic = *runner.diagnostics().localError();
     auto rk4 = std::make_shared<core::SceneDesc>(*springScene());
     rk4->settings.integrator = core::Integrator::Rk4;
     runner.apply(ui::SetSceneEdit{rk4, ui::SceneChange::Parameters});
     runner.updateEstimate();
-    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
-    QVERIFY(*runner.localError() < symplectic);  // fourth order against first, same step
+    QCOMPARE(*runner.diagnostics().localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    QVERIFY(*runner.diagnostics().localError() < symplectic);  // fourth order against first, same step
 }
 
 void TestSimulationRunner::errorEstimateRefreshesWhileRunning()
@@ -463,19 +463,19 @@ void TestSimulationRunner::errorEstimateRefreshesWhileRunning()
     runner.updateEstimate();
     runner.apply(ui::Play{});
     int ticks = 0;
-    while (runner.localErrorStep() == 0 && ticks < 100000) {
+    while (runner.diagnostics().localErrorStep() == 0 && ticks < 100000) {
         runner.advance(0.05, kNoBudgetLimit);
         ++ticks;
     }
-    QVERIFY2(runner.localErrorStep() > 0, "no estimate while running");
-    QCOMPARE(runner.localErrorStep(), runner.state().step);
-    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    QVERIFY2(runner.diagnostics().localErrorStep() > 0, "no estimate while running");
+    QCOMPARE(runner.diagnostics().localErrorStep(), runner.state().step);
+    QCOMPARE(*runner.diagnostics().localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
 
     // never more often than every kEstimateInterval of wall time: not after the next tick
-    const std::uint64_t at = runner.localErrorStep();
+    const std::uint64_t at = runner.diagnostics().localErrorStep();
     runner.advance(0.05, kNoBudgetLimit);
-    QCOMPARE(runner.localErrorStep(), at);
-    QVERIFY(runner.estimateSeconds() > 0.0);
+    QCOMPARE(runner.diagnostics().localErrorStep(), at);
+    QVERIFY(runner.diagnostics().estimateSeconds() > 0.0);
 }
 
 void TestSimulationRunner::driftIsMeasuredFromTheLastReset()
@@ -484,22 +484,22 @@ void TestSimulationRunner::driftIsMeasuredFromTheLastReset()
     const auto scene = springScene(100.0, 0.01);
     ui::SimulationRunner runner = runnerWith(scene);
     const core::Energies initial = core::energies(*runner.model(), runner.state());
-    QCOMPARE(runner.initialEnergies().total(), initial.total());
-    QCOMPARE(runner.snapshot()->energies.total(), runner.initialEnergies().total());
+    QCOMPARE(runner.diagnostics().initialEnergies().total(), initial.total());
+    QCOMPARE(runner.snapshot()->energies.total(), runner.diagnostics().initialEnergies().total());
 
     // symplectic Euler on a spring: the energy moves during the run
     runner.apply(ui::Play{});
     runner.advance(0.37, kNoBudgetLimit);
-    QVERIFY(runner.snapshot()->energies.total() != runner.initialEnergies().total());
+    QVERIFY(runner.snapshot()->energies.total() != runner.diagnostics().initialEnergies().total());
 
     // a parameter change keeps the reference; a reset measures again from the initial state
     auto softer = std::make_shared<core::SceneDesc>(*scene);
     softer->springs[0].stiffness = 50.0;
     runner.apply(ui::SetSceneEdit{softer, ui::SceneChange::Parameters});
-    QCOMPARE(runner.initialEnergies().total(), initial.total());
+    QCOMPARE(runner.diagnostics().initialEnergies().total(), initial.total());
     runner.apply(ui::Reset{});
-    QCOMPARE(runner.snapshot()->energies.total(), runner.initialEnergies().total());
-    QVERIFY(runner.initialEnergies().total() != initial.total());  // the softer spring stores less
+    QCOMPARE(runner.snapshot()->energies.total(), runner.diagnostics().initialEnergies().total());
+    QVERIFY(runner.diagnostics().initialEnergies().total() != initial.total());  // the softer spring stores less
 }
 
 void TestSimulationRunner::errorEstimateIsCheapOnTheCloth()
@@ -513,20 +513,20 @@ void TestSimulationRunner::errorEstimateIsCheapOnTheCloth()
     std::uint64_t lastStep = 0;
     for (int tick = 0; tick < 180; ++tick) {
         runner.advance(1.0 / 60.0, kNoBudgetLimit);
-        if (runner.localErrorStep() != lastStep) {
-            lastStep = runner.localErrorStep();
+        if (runner.diagnostics().localErrorStep() != lastStep) {
+            lastStep = runner.diagnostics().localErrorStep();
             ++estimates;
         }
     }
 
     // estimates through the run (about four per second of wall time), at a small share of its cost
-    QVERIFY(runner.localError().has_value());
+    QVERIFY(runner.diagnostics().localError().has_value());
     QVERIFY2(estimates >= 6 && estimates <= 13, qPrintable(QString::number(estimates)));
     qInfo("cloth: %llu steps, %llu estimates, steps %.3f s, estimates %.5f s: %.2f %% of the steps' time",
           static_cast<unsigned long long>(runner.state().step), static_cast<unsigned long long>(estimates),
-          runner.stepSeconds(), runner.estimateSeconds(), 100.0 * runner.estimateShare());
-    QVERIFY2(runner.estimateShare() < ui::SimulationRunner::kEstimateShare,
-             qPrintable(QString::number(runner.estimateShare())));
+          runner.diagnostics().stepSeconds(), runner.diagnostics().estimateSeconds(), 100.0 * runner.diagnostics().estimateShare());
+    QVERIFY2(runner.diagnostics().estimateShare() < ui::RunDiagnostics::kEstimateShare,
+             qPrintable(QString::number(runner.diagnostics().estimateShare())));
 }
 
 void TestSimulationRunner::accuracyPlanIsMadeFromTheRunnersState()

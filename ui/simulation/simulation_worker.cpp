@@ -144,26 +144,28 @@ void SimulationWorker::publish()
     frame->running = m_runner.isRunning();
     frame->realTimeFactor = m_realTimeFactor;
     frame->stepsPerSecond = m_stepsPerSecond;
-    frame->localError = m_runner.localError();
-    frame->localErrorStep = m_runner.localErrorStep();
-    frame->initialEnergies = m_runner.initialEnergies();
-    frame->estimateShare = m_runner.estimateShare();
-    frame->stability = m_runner.stability();
-    frame->pairSpeedWarning = m_runner.pairSpeedWarning();
-    const Timeline &timeline = m_runner.timeline();
+    const RunDiagnostics &diagnostics = m_runner.diagnostics();
+    frame->localError = diagnostics.localError();
+    frame->localErrorStep = diagnostics.localErrorStep();
+    frame->initialEnergies = diagnostics.initialEnergies();
+    frame->estimateShare = diagnostics.estimateShare();
+    frame->stability = diagnostics.stability();
+    frame->pairSpeedWarning = diagnostics.pairSpeedWarning();
+    const Scrubber &scrubber = m_runner.scrubber();
+    const Timeline &timeline = scrubber.timeline();
     TimelineInfo &info = frame->timeline;
     info.empty = timeline.empty();
     info.firstStep = timeline.firstStep();
     info.lastStep = timeline.lastStep();
     info.firstTime = timeline.firstTime();
     info.lastTime = timeline.lastTime();
-    info.scrubStep = m_runner.scrubStep();
+    info.scrubStep = scrubber.scrubStep();
     info.usedBytes = timeline.usedBytes();
     info.budgetBytes = timeline.budget();
     info.breakSteps = timeline.breakSteps();
     info.locked = m_runner.isRecording();
-    info.resumes = m_runner.resumes();
-    info.resumedAt = m_runner.resumedAt();
+    info.resumes = scrubber.resumes();
+    info.resumedAt = scrubber.resumedAt();
     if (m_mailbox.publish(std::move(frame)))
         emit frameReady();
 }
