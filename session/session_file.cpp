@@ -94,7 +94,7 @@ const char *changeName(SceneChange change)
     return "replace";
 }
 
-QByteArray editJson(const Edit &edit)
+QByteArray messageJson(const Message &message)
 {
     return std::visit(
         [](const auto &e) -> QByteArray {
@@ -102,13 +102,13 @@ QByteArray editJson(const Edit &edit)
             if constexpr (std::is_same_v<E, SetSceneEdit>)
                 return "\"edit\": \"set-scene\", \"change\": \"" + QByteArray(changeName(e.change)) +
                        "\", \"scene\": " + quoted(io::sceneToJson(*e.scene));
-            else if constexpr (std::is_same_v<E, PlayEdit>)
+            else if constexpr (std::is_same_v<E, Play>)
                 return "\"edit\": \"play\"";
-            else if constexpr (std::is_same_v<E, PauseEdit>)
+            else if constexpr (std::is_same_v<E, Pause>)
                 return "\"edit\": \"pause\"";
-            else if constexpr (std::is_same_v<E, StepOnceEdit>)
+            else if constexpr (std::is_same_v<E, StepOnce>)
                 return "\"edit\": \"step-once\"";
-            else if constexpr (std::is_same_v<E, ResetEdit>)
+            else if constexpr (std::is_same_v<E, Reset>)
                 return "\"edit\": \"reset\"";
             else if constexpr (std::is_same_v<E, TiltEdit>)
                 return "\"edit\": \"tilt\", \"seed\": \"" + QByteArray::number(e.seed) +
@@ -122,7 +122,7 @@ QByteArray editJson(const Edit &edit)
             else
                 return "\"edit\": \"none\"";  // requests that change nothing are never recorded
         },
-        edit);
+        message);
 }
 
 // reads one recording, stopping at the first problem with its JSON path
@@ -246,7 +246,7 @@ public:
         return true;
     }
 
-    bool edit(const QJsonObject &object, const QString &path, const core::SceneDesc &current, Edit &out)
+    bool message(const QJsonObject &object, const QString &path, const core::SceneDesc &current, Message &out)
     {
         const QString kind = object.value(u"edit"_s).toString();
         if (kind == u"set-scene"_s) {
@@ -267,13 +267,13 @@ public:
                 return false;
             out = e;
         } else if (kind == u"play"_s) {
-            out = PlayEdit{};
+            out = Play{};
         } else if (kind == u"pause"_s) {
-            out = PauseEdit{};
+            out = Pause{};
         } else if (kind == u"step-once"_s) {
-            out = StepOnceEdit{};
+            out = StepOnce{};
         } else if (kind == u"reset"_s) {
-            out = ResetEdit{};
+            out = Reset{};
         } else if (kind == u"tilt"_s) {
             TiltEdit e;
             bool ok = false;
@@ -315,7 +315,7 @@ QByteArray recordingToJson(const SessionRecording &r)
     out += "    \"edits\": [";
     for (std::size_t i = 0; i < r.entries.size(); ++i)
         out += QByteArray(i ? ",\n" : "\n") + "        {\"steps\": " + QByteArray::number(r.entries[i].steps) + ", " +
-               editJson(r.entries[i].edit) + '}';
+               messageJson(r.entries[i].message) + '}';
     out += r.entries.empty() ? "],\n" : "\n    ],\n";
     out += "    \"steps\": " + QByteArray::number(r.steps) + ",\n";
     out += "    \"hash\": \"" + QByteArray::number(r.finalHash, 16).rightJustified(16, '0') + "\"\n}\n";
@@ -356,13 +356,13 @@ RecordingLoad parseRecording(const QByteArray &json, const QString &sourceName)
         const QString path = u"edits[%1]"_s.arg(i);
         SessionRecording::Entry entry;
         ok = reader.count(edits[i].toObject().value(u"steps"_s), path + u".steps"_s, entry.steps) &&
-             reader.edit(edits[i].toObject(), path, *current, entry.edit);
+             reader.message(edits[i].toObject(), path, *current, entry.message);
         if (ok && entry.steps < previous)
             ok = reader.fail(path + u".steps"_s, u"goes back in time (%1 after %2)"_s.arg(entry.steps).arg(previous));
         if (!ok)
             break;
         previous = entry.steps;
-        if (const auto *set = std::get_if<SetSceneEdit>(&entry.edit))
+        if (const auto *set = std::get_if<SetSceneEdit>(&entry.message))
             current = set->scene;
         r->entries.push_back(std::move(entry));
     }

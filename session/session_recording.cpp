@@ -14,13 +14,13 @@ ReplayResult replay(const SessionRecording &recording)
         return result;
     }
     SimulationRunner runner;
-    runner.apply(TimelineBudgetEdit{0});  // a replay is not scrubbed: no timeline to keep
+    runner.apply(SetTimelineBudget{0});  // a replay is not scrubbed: no timeline to keep
     runner.apply(SetSceneEdit{recording.scene, SceneChange::Replace});
     if (!runner.restoreRecordedStart(recording)) {
         result.error = "the recorded state does not fit the recorded scene";
         return result;
     }
-    // each edit after the steps taken before it; a step that blows up here never stuck in the
+    // each message after the steps taken before it; a step that blows up here never stuck in the
     // recorded run (the runner went back before it), so the replay has gone astray
     const auto stepTo = [&](std::uint64_t steps) {
         while (runner.stepsTaken() < steps)
@@ -34,7 +34,7 @@ ReplayResult replay(const SessionRecording &recording)
     for (const SessionRecording::Entry &entry : recording.entries) {
         if (!stepTo(entry.steps))
             return result;
-        runner.apply(entry.edit);
+        runner.apply(entry.message);
     }
     if (!stepTo(recording.steps))
         return result;

@@ -1,11 +1,11 @@
 #pragma once
 // SessionRecording: a run as the worker lived it, to replay bit for bit: the scene and the state
-// when recording started, then every edit that changes the run, each stamped with the number of
-// steps taken before it, and the steps taken in all. Replaying it on a fresh SimulationRunner
-// (replay()) applies the same edits after the same steps, so it ends with the same bits; the
+// when recording started, then every message that changes the run (the edits, play, pause, step
+// and reset), each stamped with the number of steps taken before it, and the steps taken in all. Replaying it on a fresh SimulationRunner
+// (replay()) applies the same messages after the same steps, so it ends with the same bits; the
 // recording keeps the hash of the state it ended with to prove it. Qt-free.
 
-#include "edit_queue.h"
+#include "messages.h"
 
 #include "core/scene.h"
 #include "core/state.h"
@@ -25,8 +25,8 @@ struct SessionRecording {
     core::State start;
 
     struct Entry {
-        std::uint64_t steps = 0;  // steps taken since the start before this edit
-        Edit edit;
+        std::uint64_t steps = 0;  // steps taken since the start before this message
+        Message message;
     };
     std::vector<Entry> entries;
     std::uint64_t steps = 0;      // steps taken from the start to the end

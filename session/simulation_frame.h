@@ -1,12 +1,9 @@
 #pragma once
 // SimulationFrame: what the worker publishes after a tick: the snapshot of the state, the model it
-// was stepped with, how fast the run keeps up with the wall clock, how accurate it is, and the
-// latest accuracy plan and captured state asked for. Immutable once published.
+// was stepped with, how fast the run keeps up with the wall clock and how accurate it is.
+// Immutable once published. (One-off answers come back as replies, replies.h.)
 
-#include "captured_state.h"
-#include "session_recording.h"
 
-#include "core/accuracy_planner.h"
 #include "core/diagnostics.h"
 #include "core/model.h"
 #include "core/scene.h"
@@ -42,7 +39,7 @@ struct SimulationFrame {
     std::shared_ptr<const core::Snapshot> snapshot;
     std::shared_ptr<const core::Model> model;      // the model the snapshot was stepped with
     std::shared_ptr<const core::SceneDesc> scene;  // the scene that model was compiled from
-    std::uint64_t appliedEdit = 0;  // sequence number of the newest edit applied before this frame
+    std::uint64_t appliedMessage = 0;  // sequence number of the newest message applied before this frame
     bool running = false;
 
     // measured over the last second or so of running; 0 while paused or not yet measured
@@ -56,18 +53,6 @@ struct SimulationFrame {
     std::uint64_t localErrorStep = 0;  // the step whose state it was estimated at
     core::Energies initialEnergies;
     double estimateShare = 0.0;  // computing time of the estimates over that of the steps
-
-    // the latest accuracy plan asked for (null before the first) and the request it answers
-    std::shared_ptr<const core::AccuracyPlan> accuracyPlan;
-    std::uint64_t accuracyRequest = 0;
-
-    // the latest state captured on request (null before the first) and the request it answers
-    std::shared_ptr<const CapturedState> capturedState;
-    std::uint64_t captureRequest = 0;
-    // the session recording the latest stop request ended (null if none was running) and that
-    // request's number
-    std::shared_ptr<const SessionRecording> recording;
-    std::uint64_t recordingRequest = 0;
 
     // the explicit integrators' stability limit for the model (nullopt before the first scene)
     std::optional<core::StabilityLimit> stability;

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <random>
 #include <utility>
 
@@ -28,37 +27,13 @@ double symmetricUnit(std::mt19937_64 &random)
     return 2.0 * unit - 1.0;
 }
 
-// the visitor that dispatches each kind of edit
+// the visitor that dispatches each kind of message
 template <typename... Handlers>
 struct Overloaded : Handlers... {
     using Handlers::operator()...;
 };
 template <typename... Handlers>
 Overloaded(Handlers...) -> Overloaded<Handlers...>;
-
-// The mouse spring is a critically damped spring per unit mass, ω² (target - x) - 2ω v, so every
-// particle follows the cursor in the same time whatever its mass. ω is held to a tenth of the
-// sub-step's rate, well inside every explicit integrator's stability limit. Worked out before each
-// step from where the particle is, by the run and by the timeline's replays alike.
-void applyGrabForce(const core::Model &model, core::State &state, const HeldForces &held, double grabRate)
-{
-    if (held.grabParticle < 0 || held.grabParticle >= model.particleCount())
-        return;
-    const int i = held.grabParticle;
-    const auto col = static_cast<Eigen::Index>(i);
-    if (model.isPinned(i)) {
-        state.position.col(col) = held.grabTarget;
-        return;
-    }
-    const double h = model.timeStep / model.substeps;
-    const double omega = std::min(grabRate, 0.1 / h);
-    const Eigen::Vector3d x = state.position.col(col);
-    const Eigen::Vector3d v = state.velocity.col(col);
-    Eigen::Vector3d force = model.mass[col] * (omega * omega * (held.grabTarget - x) - 2.0 * omega * v);
-    if (i == held.steerParticle)
-        force += held.steerForce;
-    core::setAppliedForce(state, i, force);
-}
 
 // whether two scenes hold the same particles, springs and planes, so that a state of one is a
 // state of the other (they may differ in settings and per-spring values)
@@ -69,70 +44,85 @@ bool sameStructure(const core::SceneDesc &a, const core::SceneDesc &b)
                       [](const core::SpringDesc &x, const core::SpringDesc &y) { return x.a == y.a && x.b == y.b; });
 }
 
-}  // namespace
-
-bool SimulationRunner::changesTheRun(const Edit &edit) const
+// what changes the run: applied while a recorded step is shown, it goes on from that step
+bool changesTheRun(const Message &message)
 {
-    return std::holds_alternative<SetSceneEdit>(edit) || std::holds_alternative<PlayEdit>(edit) ||
-           std::holds_alternative<TiltEdit>(edit) || std::holds_alternative<SteerEdit>(edit) ||
-           std::holds_alternative<GrabEdit>(edit) || std::holds_alternative<StartRecordingEdit>(edit);
+    return std::holds_alternative<SetSceneEdit>(message) || std::holds_alternative<Play>(message) ||
+           std::holds_alternative<TiltEdit>(message) || std::holds_alternative<SteerEdit>(message) ||
+           std::holds_alternative<GrabEdit>(message) || std::holds_alternative<StartRecording>(message);
 }
 
-void SimulationRunner::apply(const Edit &edit)
+// what a session recording keeps: the edits and run control; requests for copies and plans, the
+// recording's own start and stop, and moves through the timeline are not
+bool isRecorded(const Message &message)
 {
-    // an edit that changes the run, made while a recorded step is shown, goes on from that step
-    if (m_scrub && changesTheRun(edit))
+    return !std::holds_alternative<Sync>(message) && !std::holds_alternative<PlanAccuracy>(message) &&
+           !std::holds_alternative<CaptureState>(message) && !std::holds_alternative<StartRecording>(message) &&
+           !std::holds_alternative<StopRecording>(message) && !std::holds_alternative<Scrub>(message) &&
+           !std::holds_alternative<StepBack>(message) && !std::holds_alternative<SetTimelineBudget>(message);
+}
+
+// an edit that starts a keyframe: replays after it use the new model and forces
+bool startsAKeyframe(const Message &message)
+{
+    return std::holds_alternative<SetSceneEdit>(message) || std::holds_alternative<Reset>(message) ||
+           std::holds_alternative<TiltEdit>(message) || std::holds_alternative<SteerEdit>(message) ||
+           std::holds_alternative<GrabEdit>(message);
+}
+
+}  // namespace
+
+void SimulationRunner::apply(const Message &message)
+{
+    if (m_scrubber.isScrubbing() && changesTheRun(message))
         resumeFromScrub();
 
-    // what changes the run goes into the recording; requests for copies and plans do not
-    if (m_recording && !std::holds_alternative<SyncEdit>(edit) && !std::holds_alternative<PlanAccuracyEdit>(edit) &&
-        !std::holds_alternative<CaptureStateEdit>(edit) && !std::holds_alternative<StartRecordingEdit>(edit) &&
-        !std::holds_alternative<StopRecordingEdit>(edit) && !std::holds_alternative<ScrubEdit>(edit) &&
-        !std::holds_alternative<StepBackEdit>(edit) && !std::holds_alternative<TimelineBudgetEdit>(edit))
-        m_recording->entries.push_back({m_stepsTaken - m_recordingFrom, edit});
+    if (m_recording && isRecorded(message))
+        m_recording->entries.push_back({m_stepsTaken - m_recordingFrom, message});
     std::visit(Overloaded{
                    [this](const SetSceneEdit &e) { setScene(e); },
-                   [this](const PlayEdit &) { m_running = hasScene(); },
-                   [this](const PauseEdit &) { m_running = false; },
-                   [this](const StepOnceEdit &) {
-                       m_running = false;
-                       // inside the recording: one step on through it; at its end, a new step
-                       if (m_scrub && scrubStep() && *scrubStep() < m_timeline.lastStep()) {
-                           scrubTo(*scrubStep() + 1);
-                           return;
-                       }
-                       if (m_scrub)
-                           resumeFromScrub();
-                       if (hasScene()) {
-                           m_lastGood = m_state;
-                           if (stepOnce())
-                               ++m_stepsTaken;
-                           m_estimateStale = true;
-                       }
-                   },
-                   [this](const ResetEdit &) { reset(); },
                    [this](const TiltEdit &e) { tilt(e); },
                    [this](const SteerEdit &e) { steer(e); },
-                   [](const SyncEdit &) {},
-                   [this](const PlanAccuracyEdit &e) { planAccuracy(e); },
-                   [this](const CaptureStateEdit &e) { captureState(e); },
                    [this](const GrabEdit &e) { grab(e); },
-                   [this](const StartRecordingEdit &) { startRecording(); },
-                   [this](const StopRecordingEdit &e) {
-                       m_finishedRecording = stopRecording();
-                       m_recordingRequest = e.request;
+                   [this](const Play &) { m_running = hasScene(); },
+                   [this](const Pause &) { m_running = false; },
+                   [this](const StepOnce &) { stepOnceMessage(); },
+                   [this](const Reset &) { reset(); },
+                   [](const Sync &) {},
+                   [this](const PlanAccuracy &e) {
+                       m_replies.push_back(AccuracyPlanReply{
+                           e.request, RunDiagnostics::planAccuracy(m_model, m_state, m_work.profile, e.tolerance)});
                    },
-                   [this](const ScrubEdit &e) { scrubTo(e.step); },
-                   [this](const StepBackEdit &) { stepBack(); },
-                   [this](const TimelineBudgetEdit &e) { m_timeline.setBudget(e.bytes); },
+                   [this](const CaptureState &e) { captureState(e); },
+                   [this](const StartRecording &) { startRecording(); },
+                   [this](const StopRecording &e) { m_replies.push_back(RecordingReply{e.request, stopRecording()}); },
+                   [this](const Scrub &e) { scrubTo(e.step); },
+                   [this](const StepBack &) { stepBack(); },
+                   [this](const SetTimelineBudget &e) { m_scrubber.timeline().setBudget(e.bytes); },
                },
-               edit);
+               message);
 
-    // the edited state starts a keyframe: replays after it use the new model and forces
-    if (hasScene() && (std::holds_alternative<SetSceneEdit>(edit) || std::holds_alternative<ResetEdit>(edit) ||
-                       std::holds_alternative<TiltEdit>(edit) || std::holds_alternative<SteerEdit>(edit) ||
-                       std::holds_alternative<GrabEdit>(edit)))
+    if (hasScene() && startsAKeyframe(message))
         keyframe();
+}
+
+void SimulationRunner::stepOnceMessage()
+{
+    m_running = false;
+    // inside the recording: one step on through it; at its end, a new step
+    const std::optional<std::uint64_t> shown = m_scrubber.scrubStep();
+    if (shown && *shown < m_scrubber.timeline().lastStep()) {
+        scrubTo(*shown + 1);
+        return;
+    }
+    if (m_scrubber.isScrubbing())
+        resumeFromScrub();
+    if (hasScene()) {
+        m_lastGood = m_state;
+        if (stepOnce())
+            ++m_stepsTaken;
+        m_diagnostics.stateChanged();
+    }
 }
 
 HeldForces SimulationRunner::heldForces() const
@@ -142,52 +132,21 @@ HeldForces SimulationRunner::heldForces() const
 
 void SimulationRunner::keyframe()
 {
-    m_timeline.afterEdit(m_model, m_scene, m_state, heldForces());
+    m_scrubber.timeline().afterEdit(m_model, m_scene, m_state, heldForces());
 }
 
-std::optional<std::uint64_t> SimulationRunner::scrubStep() const
-{
-    if (!m_scrub)
-        return std::nullopt;
-    return m_scrub->state.step;
-}
-
-// the recorded state of a step: the keyframe before it, then the steps after it taken again with
-// the keyframe's model and held forces, exactly as the run took them
 bool SimulationRunner::scrubTo(std::uint64_t step)
 {
-    if (!hasScene() || m_recording || !m_timeline.covers(step))
-        return false;
-    const TimelineKey *key = m_timeline.keyAtOrBefore(step);
-    if (!key)
+    if (!hasScene() || m_recording || !m_scrubber.canShow(step))
         return false;
     m_running = false;
     m_owed = 0.0;
-    if (!m_scrub)
-        m_scrub.emplace();
-    Scrub &scrub = *m_scrub;
-    // on from the step shown when it lies between the keyframe and the target (stepping forward)
-    const bool onward = scrub.model == key->model && scrub.state.step >= key->state.step && scrub.state.step <= step &&
-                        scrub.state.particleCount() == key->state.particleCount();
-    if (!onward)
-        restoreKey(*key, scrub.state);
-    scrub.model = key->model;
-    scrub.scene = key->scene;
-    while (scrub.state.step < step) {
-        applyGrabForce(*scrub.model, scrub.state, key->held, kGrabRate);
-        // the run's workspace: only one of the two steps at a time
-        if (!core::step(*scrub.model, scrub.state, m_work)) {
-            m_work.blowup.reset();
-            m_scrub.reset();  // a recorded step cannot fail; if it does, show the run instead
-            return false;
-        }
-    }
-    return true;
+    return m_scrubber.show(step, m_work);
 }
 
 void SimulationRunner::stepBack()
 {
-    const std::uint64_t shown = m_scrub ? m_scrub->state.step : m_state.step;
+    const std::uint64_t shown = m_scrubber.scrubStep().value_or(m_state.step);
     if (shown > 0)
         scrubTo(shown - 1);
 }
@@ -196,11 +155,7 @@ void SimulationRunner::stepBack()
 // now in the editor takes over (as an edit would), and what was recorded after it is gone
 void SimulationRunner::resumeFromScrub()
 {
-    Scrub scrub = std::move(*m_scrub);
-    m_scrub.reset();
-    m_timeline.truncateAfter(scrub.state.step);
-    ++m_resumes;
-    m_resumedAt = scrub.state.step;
+    ScrubbedStep scrub = m_scrubber.resume();
     const std::shared_ptr<const core::SceneDesc> current = m_scene;
     m_state = std::move(scrub.state);
     // the held forces are the editor's own now, not the recorded ones
@@ -214,8 +169,8 @@ void SimulationRunner::resumeFromScrub()
                                                                          : SceneChange::Structure});
     } else {
         applySteering();
-        m_estimateStale = true;
-        checkPairSpeed();
+        m_diagnostics.stateChanged();
+        m_diagnostics.checkPairSpeed(*m_model, m_state);
     }
     keyframe();
 }
@@ -253,27 +208,18 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
     }
     // another scene, or the same one from its start: the recording belongs to the old run
     if (edit.change == SceneChange::Replace || m_state.step == 0)
-        m_timeline.clear();
+        m_scrubber.timeline().clear();
     if (edit.change == SceneChange::Replace) {
         // another scene: nothing of the old one's steering survives, and its costs start afresh
         m_running = false;
         m_steerParticle = -1;
         m_steerForce.setZero();
         m_grabParticle = -1;
-        m_stepSeconds = 0.0;
-        m_estimateSeconds = 0.0;
-        m_lastEstimateSeconds = 0.0;
+        m_diagnostics.resetCosts();
     }
     applySteering();
-    m_estimateStale = true;
-    m_stabilityStale = true;
-    checkPairSpeed();
-}
-
-void SimulationRunner::checkPairSpeed()
-{
-    const std::optional<core::PairSpeedExcess> excess = core::pairSpeedExcess(*m_model, m_state);
-    m_pairSpeedWarning = excess ? core::explainPairSpeed(*excess) : std::string();
+    m_diagnostics.modelChanged();
+    m_diagnostics.checkPairSpeed(*m_model, m_state);
 }
 
 // A structural edit while a run is under way keeps the run: a particle the edit left as it was
@@ -371,19 +317,18 @@ void SimulationRunner::restart()
 {
     m_state = core::makeState(*m_model, *m_scene);
     m_owed = 0.0;
-    m_initialEnergies = core::energies(*m_model, m_state);
+    m_diagnostics.restarted(*m_model, m_state);
 }
 
 void SimulationRunner::reset()
 {
     if (!hasScene())
         return;
-    m_scrub.reset();
-    m_timeline.clear();
+    m_scrubber.clear();
     restart();
     applySteering();
-    m_estimateStale = true;
-    checkPairSpeed();
+    m_diagnostics.stateChanged();
+    m_diagnostics.checkPairSpeed(*m_model, m_state);
 }
 
 void SimulationRunner::tilt(const TiltEdit &edit)
@@ -395,7 +340,7 @@ void SimulationRunner::tilt(const TiltEdit &edit)
     for (int i : m_model->freeParticles)
         for (int axis = 0; axis < 3; ++axis)
             m_state.velocity(axis, i) += edit.speed * symmetricUnit(random);
-    m_estimateStale = true;
+    m_diagnostics.stateChanged();
 }
 
 void SimulationRunner::steer(const SteerEdit &edit)
@@ -406,7 +351,7 @@ void SimulationRunner::steer(const SteerEdit &edit)
     m_steerParticle = edit.particle;
     m_steerForce = edit.force;
     applySteering();
-    m_estimateStale = true;
+    m_diagnostics.stateChanged();
 }
 
 void SimulationRunner::applySteering()
@@ -431,23 +376,23 @@ void SimulationRunner::grab(const GrabEdit &edit)
 void SimulationRunner::applyGrab()
 {
     if (hasScene())
-        applyGrabForce(*m_model, m_state, heldForces(), kGrabRate);
+        applyGrabForce(*m_model, m_state, heldForces());
 }
 
 bool SimulationRunner::stepOnce()
 {
     applyGrab();
     if (core::step(*m_model, m_state, m_work)) {
-        m_timeline.afterStep(m_model, m_scene, m_state, heldForces());
+        m_scrubber.timeline().afterStep(m_model, m_scene, m_state, heldForces());
         return true;
     }
     // blown up: stop, keep the report, and go back to the last good state
-    m_blowup = std::exchange(m_work.blowup, std::nullopt);
+    m_diagnostics.blewUp(std::exchange(m_work.blowup, std::nullopt));
     m_running = false;
     m_owed = 0.0;
     m_state = m_lastGood;
-    m_timeline.truncateAfter(m_state.step);
-    m_estimateStale = true;
+    m_scrubber.timeline().truncateAfter(m_state.step);
+    m_diagnostics.stateChanged();
     return false;
 }
 
@@ -458,7 +403,7 @@ SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double b
         return result;
 
     m_owed += wallSeconds;
-    m_wallSinceEstimate += wallSeconds;
+    m_diagnostics.addWallTime(wallSeconds);
     const double h = m_model->timeStep;
     if (m_owed < h)
         return result;
@@ -481,95 +426,52 @@ SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double b
             break;
         }
     }
-    const double seconds = secondsSince(start);
-    m_stepSeconds += seconds;
-    m_stepSecondsSinceEstimate += seconds;
-    checkPairSpeed();
-
-    // the periodic estimate, of the state these steps ended at: rare enough in wall time, and
-    // only once the steps have paid for it many times over
-    if (!blewUp && (m_estimateStale || (m_wallSinceEstimate >= kEstimateInterval &&
-                                        kEstimateShare * m_stepSecondsSinceEstimate >= m_lastEstimateSeconds)))
-        estimate(true);
+    m_diagnostics.afterSteps(secondsSince(start), blewUp, m_model, m_state);
     return result;
 }
 
-void SimulationRunner::updateEstimate()
-{
-    if (m_estimateStale)
-        estimate(false);
-}
-
-// counted: made between steps of the run, so part of what the run costs
-void SimulationRunner::estimate(bool counted)
-{
-    m_estimateStale = false;
-    if (!hasScene())
-        return;
-    const auto start = Clock::now();
-    m_localError = m_doubling.estimate(m_model, m_state);
-    m_localErrorStep = m_state.step;
-    const double seconds = secondsSince(start);
-    m_lastEstimateSeconds = seconds;
-    if (counted)
-        m_estimateSeconds += seconds;
-    m_wallSinceEstimate = 0.0;
-    m_stepSecondsSinceEstimate = 0.0;
-}
-
-void SimulationRunner::planAccuracy(const PlanAccuracyEdit &edit)
-{
-    // the cost of a force evaluation as measured in this run, else timed now
-    auto plan = std::make_shared<core::AccuracyPlan>();
-    if (hasScene()) {
-        double secondsPerEvaluation = core::profiledSecondsPerEvaluation(m_work.profile);
-        if (!(secondsPerEvaluation > 0.0))
-            secondsPerEvaluation = core::timedSecondsPerEvaluation(*m_model, m_state);
-        *plan = core::planAccuracy(*m_model, m_state, edit.tolerance, secondsPerEvaluation);
-    }
-    m_plan = std::move(plan);
-    m_planRequest = edit.request;
-}
-
-void SimulationRunner::captureState(const CaptureStateEdit &edit)
+void SimulationRunner::captureState(const CaptureState &request)
 {
     // a copy in doubles: the scene's initial conditions get exactly what the run has
     // (while scrubbing, the step shown)
     auto captured = std::make_shared<CapturedState>();
     if (hasScene()) {
         captured->state = shownState();
-        captured->scene = m_scrub ? m_scrub->scene : m_scene;
+        captured->scene = shownScene();
     }
-    m_captured = std::move(captured);
-    m_captureRequest = edit.request;
+    m_replies.push_back(CapturedStateReply{request.request, std::move(captured)});
+}
+
+const core::State &SimulationRunner::shownState() const
+{
+    const ScrubbedStep *shown = m_scrubber.shown();
+    return shown ? shown->state : m_state;
+}
+
+std::shared_ptr<const core::Model> SimulationRunner::shownModel() const
+{
+    const ScrubbedStep *shown = m_scrubber.shown();
+    return shown ? shown->model : m_model;
+}
+
+std::shared_ptr<const core::SceneDesc> SimulationRunner::shownScene() const
+{
+    const ScrubbedStep *shown = m_scrubber.shown();
+    return shown ? shown->scene : m_scene;
 }
 
 std::shared_ptr<const core::Snapshot> SimulationRunner::snapshot() const
 {
     if (!hasScene())
         return nullptr;
-    if (m_scrub)
-        return core::makeSnapshot(*m_scrub->model, m_scrub->state);
-    return core::makeSnapshot(*m_model, m_state);
+    return core::makeSnapshot(*shownModel(), shownState());
 }
 
 std::optional<std::string> SimulationRunner::takeBlowupMessage()
 {
-    if (!m_blowup || !hasScene())
+    if (!hasScene())
         return std::nullopt;
-    std::optional<core::Blowup> blowup;
-    blowup.swap(m_blowup);
-    // the state is the last good one again: the limit there is the one the steps ran into
-    return core::explainBlowup(*m_model, *blowup, core::stabilityLimit(*m_model, m_state));
-}
-
-bool SimulationRunner::updateStability()
-{
-    if (!m_stabilityStale || !hasScene())
-        return false;
-    m_stabilityStale = false;
-    m_stability = core::stabilityLimit(*m_model, m_state);
-    return true;
+    return m_diagnostics.takeBlowupMessage(*m_model, m_state);
 }
 
 void SimulationRunner::startRecording()
@@ -608,9 +510,8 @@ bool SimulationRunner::restoreRecordedStart(const SessionRecording &recording)
     m_state = start;
     core::fitSpringBreaks(*m_model, m_state);  // the capacity for every break
     m_stepsTaken = 0;
-    m_estimateStale = true;
-    m_scrub.reset();
-    m_timeline.clear();
+    m_diagnostics.stateChanged();
+    m_scrubber.clear();
     keyframe();
     return true;
 }

@@ -27,6 +27,30 @@ TimelineKey makeKey(const std::shared_ptr<const core::Model> &model, const std::
 
 }  // namespace
 
+// The mouse spring is a critically damped spring per unit mass, ω² (target - x) - 2ω v, so every
+// particle follows the cursor in the same time whatever its mass. ω is held to a tenth of the
+// sub-step's rate, well inside every explicit integrator's stability limit. Worked out before each
+// step from where the particle is, by the run and by the timeline's replays alike.
+void applyGrabForce(const core::Model &model, core::State &state, const HeldForces &held)
+{
+    if (held.grabParticle < 0 || held.grabParticle >= model.particleCount())
+        return;
+    const int i = held.grabParticle;
+    const auto col = static_cast<Eigen::Index>(i);
+    if (model.isPinned(i)) {
+        state.position.col(col) = held.grabTarget;
+        return;
+    }
+    const double h = model.timeStep / model.substeps;
+    const double omega = std::min(kGrabRate, 0.1 / h);
+    const Eigen::Vector3d x = state.position.col(col);
+    const Eigen::Vector3d v = state.velocity.col(col);
+    Eigen::Vector3d force = model.mass[col] * (omega * omega * (held.grabTarget - x) - 2.0 * omega * v);
+    if (i == held.steerParticle)
+        force += held.steerForce;
+    core::setAppliedForce(state, i, force);
+}
+
 void restoreKey(const TimelineKey &key, core::State &state)
 {
     state = key.state;

@@ -4,7 +4,8 @@
 // model and the mouse spring that held from it to the next one. The step is deterministic, so any
 // step between two keyframes is replayed exactly from the one before it; nothing else is stored.
 // The keyframes stay within a memory budget: when a new one would pass it, the oldest go, so the
-// timeline holds the most recent stretch of the run that fits. Qt-free; the worker owns it.
+// timeline holds the most recent stretch of the run that fits. Qt-free; the runner's Scrubber
+// (scrubber.h) owns it.
 
 #include "core/model.h"
 #include "core/scene.h"
@@ -30,6 +31,13 @@ struct HeldForces {
     bool operator==(const HeldForces &) const = default;
 };
 
+// rad/s: how fast the mouse spring pulls a particle to the cursor (a time constant of 50 ms)
+constexpr double kGrabRate = 20.0;
+
+// the mouse spring's force on the particle held, worked out from where it is, before each step of
+// the run and of the replays alike (a pinned particle is carried to the target instead)
+void applyGrabForce(const core::Model &model, core::State &state, const HeldForces &held);
+
 struct TimelineKey {
     std::shared_ptr<const core::Model> model;
     std::shared_ptr<const core::SceneDesc> scene;  // what the model was compiled from
@@ -52,7 +60,6 @@ public:
 
     void clear();
     bool empty() const { return m_keys.empty(); }
-    std::size_t keyCount() const { return m_keys.size(); }
 
     // records the state after a step: a keyframe when the last is kKeyInterval steps back (or
     // none), else nothing

@@ -49,7 +49,7 @@ bool waitFor(Done &&done, int timeoutMs)
 std::shared_ptr<const ui::SimulationFrame> settled(ui::SimulationController &controller)
 {
     const std::uint64_t sequence = controller.sync();
-    const auto applied = [&] { return controller.frame() && controller.frame()->appliedEdit >= sequence; };
+    const auto applied = [&] { return controller.frame() && controller.frame()->appliedMessage >= sequence; };
     return waitFor(applied, 600000) ? controller.frame() : nullptr;
 }
 

@@ -385,16 +385,18 @@ void TestSimCli::replayRunsARecordingToItsBits()
     // a session of the editor's runner: a tilt and a parameter change while it runs
     ui::SimulationRunner runner;
     runner.apply(ui::SetSceneEdit{std::make_shared<const core::SceneDesc>(testScene()), ui::SceneChange::Replace});
-    runner.apply(ui::StartRecordingEdit{});
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::StartRecording{});
+    runner.apply(ui::Play{});
     runner.advance(0.2, 1e9);
     runner.apply(ui::TiltEdit{7, 1.0});
     auto changed = std::make_shared<core::SceneDesc>(*runner.scene());
     changed->settings.viscosity = 0.3;
     runner.apply(ui::SetSceneEdit{changed, ui::SceneChange::Parameters});
     runner.advance(0.2, 1e9);
-    runner.apply(ui::StopRecordingEdit{1});
-    const auto recording = runner.finishedRecording();
+    runner.apply(ui::StopRecording{1});
+    const std::optional<ui::RecordingReply> stopped = ui::findReply<ui::RecordingReply>(runner.takeReplies());
+    QVERIFY(stopped);
+    const auto recording = stopped->recording;
     QVERIFY(recording && recording->steps > 0);
     const QString session = path(u"session.replay.json"_s);
     QCOMPARE(ui::saveRecording(session, *recording), QString());

@@ -31,15 +31,24 @@ std::shared_ptr<const core::SceneDesc> netScene()
     return std::make_shared<const core::SceneDesc>(scene);
 }
 
+// the recording a StopRecording handed back, and the request it answers
+std::shared_ptr<const ui::SessionRecording> stoppedRecording(ui::SimulationRunner &runner, std::uint64_t *request = nullptr)
+{
+    const std::optional<ui::RecordingReply> reply = ui::findReply<ui::RecordingReply>(runner.takeReplies());
+    if (request)
+        *request = reply ? reply->request : 0;
+    return reply ? reply->recording : nullptr;
+}
+
 // the runner's own session: every kind of edit, some mid-run, and a tick that blows up
-std::shared_ptr<const ui::SessionRecording> recordSession(ui::SimulationRunner &runner)
+std::shared_ptr<const ui::SessionRecording> recordSession(ui::SimulationRunner &runner, std::uint64_t *request = nullptr)
 {
     runner.apply(ui::SetSceneEdit{netScene(), ui::SceneChange::Replace});
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(0.1, kNoBudgetLimit);  // recording starts mid-run, with the steering on
     runner.apply(ui::SteerEdit{3, Eigen::Vector3d(0.5, 0.0, -0.25)});
     runner.advance(0.05, kNoBudgetLimit);
-    runner.apply(ui::StartRecordingEdit{});
+    runner.apply(ui::StartRecording{});
     runner.advance(0.07, kNoBudgetLimit);
     runner.apply(ui::TiltEdit{42, 1.5});
     runner.advance(0.031, kNoBudgetLimit);
@@ -48,14 +57,14 @@ std::shared_ptr<const ui::SessionRecording> recordSession(ui::SimulationRunner &
     runner.apply(ui::GrabEdit{7, Eigen::Vector3d(0.5, 1.0, 0.2)});
     runner.advance(0.02, kNoBudgetLimit);
     runner.apply(ui::GrabEdit{-1, Eigen::Vector3d::Zero()});
-    runner.apply(ui::SyncEdit{});  // changes nothing: not recorded
+    runner.apply(ui::Sync{});  // changes nothing: not recorded
     auto stiffer = std::make_shared<core::SceneDesc>(*runner.scene());
     for (core::SpringDesc &spring : stiffer->springs)
         spring.stiffness *= 1.5;
     runner.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
     runner.advance(0.05, kNoBudgetLimit);
-    runner.apply(ui::StepOnceEdit{});
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::StepOnce{});
+    runner.apply(ui::Play{});
     auto added = std::make_shared<core::SceneDesc>(*runner.scene());
     core::ParticleDesc extra;
     extra.position = {0.0, 2.0, 0.0};
@@ -74,13 +83,13 @@ std::shared_ptr<const ui::SessionRecording> recordSession(ui::SimulationRunner &
         qWarning("the wild tick did not blow up");
     runner.takeBlowupMessage();
     runner.apply(ui::SetSceneEdit{added, ui::SceneChange::Parameters});
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(0.04, kNoBudgetLimit);
-    runner.apply(ui::ResetEdit{});
+    runner.apply(ui::Reset{});
     runner.advance(0.03, kNoBudgetLimit);
-    runner.apply(ui::StopRecordingEdit{1});
+    runner.apply(ui::StopRecording{1});
     runner.advance(0.05, kNoBudgetLimit);  // after the end: not part of it
-    return runner.finishedRecording();
+    return stoppedRecording(runner, request);
 }
 
 }  // namespace
@@ -101,16 +110,17 @@ private slots:
 void TestSessionRecording::replayEndsWithTheRecordedBits()
 {
     ui::SimulationRunner runner;
-    const auto recording = recordSession(runner);
+    std::uint64_t request = 0;
+    const auto recording = recordSession(runner, &request);
     QVERIFY(recording);
-    QCOMPARE(runner.recordingRequest(), std::uint64_t(1));
+    QCOMPARE(request, std::uint64_t(1));
     QVERIFY(!runner.isRecording());
     // every kind of edit is in it, Sync is not; the steering held from before starts it
     QCOMPARE(recording->entries.size(), std::size_t(13));
-    QVERIFY(std::holds_alternative<ui::SteerEdit>(recording->entries.front().edit));
+    QVERIFY(std::holds_alternative<ui::SteerEdit>(recording->entries.front().message));
     QCOMPARE(recording->entries.front().steps, std::uint64_t(0));
     for (const auto &entry : recording->entries)
-        QVERIFY(!std::holds_alternative<ui::SyncEdit>(entry.edit));
+        QVERIFY(!std::holds_alternative<ui::Sync>(entry.message));
     QVERIFY(recording->steps > 50);
     QVERIFY(recording->start.time > 0.0);  // it started mid-run
 
@@ -146,7 +156,7 @@ void TestSessionRecording::aRecordingChangedByOneStepNoLongerMatches()
     ui::SimulationRunner runner;
     auto changed = std::make_shared<ui::SessionRecording>(*recordSession(runner));
     // the reset, the last edit, one step later
-    QVERIFY(std::holds_alternative<ui::ResetEdit>(changed->entries.back().edit));
+    QVERIFY(std::holds_alternative<ui::Reset>(changed->entries.back().message));
     changed->entries.back().steps += 1;
     const ui::ReplayResult replayed = ui::replay(*changed);
     QVERIFY2(replayed.error.empty(), replayed.error.c_str());
@@ -178,11 +188,12 @@ void TestSessionRecording::nothingIsRecordedWithoutAStart()
 {
     ui::SimulationRunner runner;
     runner.apply(ui::SetSceneEdit{netScene(), ui::SceneChange::Replace});
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(0.05, kNoBudgetLimit);
-    runner.apply(ui::StopRecordingEdit{5});
-    QCOMPARE(runner.recordingRequest(), std::uint64_t(5));
-    QVERIFY(!runner.finishedRecording());
+    runner.apply(ui::StopRecording{5});
+    std::uint64_t request = 0;
+    QVERIFY(!stoppedRecording(runner, &request));
+    QCOMPARE(request, std::uint64_t(5));
 }
 
 // the tearable cloth run past its first break, then 50 steps recorded
@@ -193,18 +204,18 @@ std::shared_ptr<const ui::SessionRecording> recordAfterABreak(ui::SimulationRunn
         return nullptr;
     auto scene = std::make_shared<const core::SceneDesc>(*loaded.scene);
     runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     const double h = scene->settings.timeStep;
     for (int tick = 0; tick < 2000 && runner.state().breaks.empty(); ++tick)
         runner.advance(h, kNoBudgetLimit);
     if (runner.state().breaks.empty())
         return nullptr;
-    runner.apply(ui::StartRecordingEdit{});
+    runner.apply(ui::StartRecording{});
     const std::uint64_t from = runner.stepsTaken();
     while (runner.stepsTaken() < from + 50)
         runner.advance(h, kNoBudgetLimit);
-    runner.apply(ui::StopRecordingEdit{1});
-    return runner.finishedRecording();
+    runner.apply(ui::StopRecording{1});
+    return stoppedRecording(runner);
 }
 
 // a recording that starts after springs have broken carries them: its replay, from memory and

@@ -90,7 +90,7 @@ void TestSimulationRunner::advancesInWholeStepsAndOwesTheRest()
 {
     // time step 0.25 s: 0.625 s of wall time is 2 steps and 0.125 s owed; 0.125 s more is a third
     ui::SimulationRunner runner = runnerWith(springScene());
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     QCOMPARE(runner.advance(0.625, kNoBudgetLimit).steps, 2);
     QCOMPARE(runner.state().time, 0.5);
     QCOMPARE(runner.advance(0.125, kNoBudgetLimit).steps, 1);
@@ -102,8 +102,8 @@ void TestSimulationRunner::pausedDoesNotAdvance()
 {
     ui::SimulationRunner runner = runnerWith(springScene());
     QCOMPARE(runner.advance(1.0, kNoBudgetLimit).steps, 0);
-    runner.apply(ui::PlayEdit{});
-    runner.apply(ui::PauseEdit{});
+    runner.apply(ui::Play{});
+    runner.apply(ui::Pause{});
     QCOMPARE(runner.advance(1.0, kNoBudgetLimit).steps, 0);
     QCOMPARE(runner.state().time, 0.0);
 }
@@ -112,7 +112,7 @@ void TestSimulationRunner::budgetDropsTheBacklog()
 {
     // no computing time at all: one step, and the rest is given up rather than owed
     ui::SimulationRunner runner = runnerWith(springScene());
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     const ui::SimulationRunner::Advance advance = runner.advance(1.0, 0.0);
     QCOMPARE(advance.steps, 1);
     QCOMPARE(advance.droppedSeconds, 0.75);
@@ -122,8 +122,8 @@ void TestSimulationRunner::budgetDropsTheBacklog()
 void TestSimulationRunner::stepOnceStepsAndPauses()
 {
     ui::SimulationRunner runner = runnerWith(springScene());
-    runner.apply(ui::PlayEdit{});
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::Play{});
+    runner.apply(ui::StepOnce{});
     QVERIFY(!runner.isRunning());
     QCOMPARE(runner.state().step, 1u);
     QCOMPARE(runner.snapshot()->step, 1u);
@@ -133,11 +133,11 @@ void TestSimulationRunner::resetRestoresTheInitialStateExactly()
 {
     const auto scene = springScene();
     ui::SimulationRunner runner = runnerWith(scene);
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     QVERIFY(runner.advance(2.0, kNoBudgetLimit).steps > 0);
     QVERIFY(runner.state().position(0, 1) != 1.0);
 
-    runner.apply(ui::ResetEdit{});
+    runner.apply(ui::Reset{});
     const core::State &state = runner.state();
     QCOMPARE(state.time, 0.0);
     QCOMPARE(state.step, 0u);
@@ -151,7 +151,7 @@ void TestSimulationRunner::resetRestoresTheInitialStateExactly()
 void TestSimulationRunner::parameterChangeKeepsTheState()
 {
     ui::SimulationRunner runner = runnerWith(springScene(100.0));
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     const core::State before = runner.state();
 
     runner.apply(ui::SetSceneEdit{springScene(400.0), ui::SceneChange::Parameters});
@@ -164,14 +164,14 @@ void TestSimulationRunner::parameterChangeKeepsTheState()
     core::State expected = before;
     core::Workspace work;
     core::step(*core::compileModel(*springScene(400.0)), expected, work);
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     QVERIFY(runner.state().position == expected.position);
 }
 
 void TestSimulationRunner::structureChangeKeepsTheMotionWhenTheCountMatches()
 {
     ui::SimulationRunner runner = runnerWith(springScene());
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     const core::State before = runner.state();
 
     // the same particles, one more spring: the motion carries over
@@ -201,7 +201,7 @@ void TestSimulationRunner::editedParticlesStartFromTheirNewDescription()
     scene->particles.push_back(scene->particles[1]);
     scene->particles[2].position = {2.0, 0.0, 0.0};
     ui::SimulationRunner runner = runnerWith(scene);
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     const core::State before = runner.state();
     QVERIFY(before.position.col(1) != Eigen::Vector3d(1.0, 0.0, 0.0));
 
@@ -230,7 +230,7 @@ void TestSimulationRunner::grabPullsTowardTheTargetAndLetsGo()
     scene->springs.clear();
     scene->particles[1].velocity.setZero();
     ui::SimulationRunner runner = runnerWith(scene);
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     const Eigen::Vector3d target(1.0, 2.0, 0.0);
     runner.apply(ui::GrabEdit{1, target});
     runner.advance(1.0, kNoBudgetLimit);
@@ -253,7 +253,7 @@ void TestSimulationRunner::grabPullsTowardTheTargetAndLetsGo()
 void TestSimulationRunner::replaceStartsAfresh()
 {
     ui::SimulationRunner runner = runnerWith(springScene());
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(1.0, kNoBudgetLimit);
     runner.apply(ui::SetSceneEdit{springScene(50.0), ui::SceneChange::Replace});
     QVERIFY(!runner.isRunning());
@@ -292,13 +292,13 @@ void TestSimulationRunner::steeringPushesTheParticle()
     ui::SimulationRunner runner = runnerWith(springScene(0.0));
     const Eigen::Vector3d force(2.0, 0.0, -1.0);
     runner.apply(ui::SteerEdit{1, force});
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     const Eigen::Vector3d expected = springScene()->particles[1].velocity + 0.25 * force;
     QVERIFY(runner.state().velocity.col(1) == expected);
 
     // a zero force stops pushing
     runner.apply(ui::SteerEdit{1, Eigen::Vector3d::Zero()});
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     QVERIFY(runner.state().velocity.col(1) == expected);
     QCOMPARE(runner.state().appliedCount, 0);
 }
@@ -307,7 +307,7 @@ void TestSimulationRunner::steeringSurvivesResetButNotReplace()
 {
     ui::SimulationRunner runner = runnerWith(springScene(0.0));
     runner.apply(ui::SteerEdit{1, Eigen::Vector3d(1.0, 0.0, 0.0)});
-    runner.apply(ui::ResetEdit{});
+    runner.apply(ui::Reset{});
     QCOMPARE(runner.state().appliedCount, 1);
     runner.apply(ui::SetSceneEdit{springScene(0.0), ui::SceneChange::Parameters});
     QCOMPARE(runner.state().appliedCount, 1);
@@ -319,7 +319,7 @@ void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
 {
     // far too stiff for the time step: the amplitude grows ~h²k/m = 10⁷ times a step
     ui::SimulationRunner runner = runnerWith(springScene(1e9, 0.1));
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(0.1, kNoBudgetLimit);
     const core::State good = runner.state();
     runner.advance(0.1, kNoBudgetLimit);
@@ -346,7 +346,7 @@ void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
 
     // it can go on from there once the scene is fixed
     runner.apply(ui::SetSceneEdit{springScene(100.0, 0.1), ui::SceneChange::Parameters});
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     QVERIFY(!runner.takeBlowupMessage().has_value());
 }
 
@@ -354,10 +354,10 @@ void TestSimulationRunner::stabilityLimitFollowsEdits()
 {
     // 1 kg on k = 100 N/m: ω = 10 rad/s, so symplectic Euler is stable below 2/ω = 0.2 s
     ui::SimulationRunner runner = runnerWith(springScene(100.0));
-    QVERIFY(!runner.stability().has_value());
+    QVERIFY(!runner.diagnostics().stability().has_value());
     QVERIFY(runner.updateStability());
-    QVERIFY(runner.stability().has_value());
-    QVERIFY(std::abs(runner.stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.2) < 1e-6);
+    QVERIFY(runner.diagnostics().stability().has_value());
+    QVERIFY(std::abs(runner.diagnostics().stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.2) < 1e-6);
     QVERIFY(!runner.updateStability());  // nothing changed: not analysed again
 
     // four times stiffer halves it; with auto substeps the model takes as many as the limit asks:
@@ -365,7 +365,7 @@ void TestSimulationRunner::stabilityLimitFollowsEdits()
     auto stiffer = std::make_shared<core::SceneDesc>(*springScene(400.0));
     runner.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
     QVERIFY(runner.updateStability());
-    QVERIFY(std::abs(runner.stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.1) < 1e-6);
+    QVERIFY(std::abs(runner.diagnostics().stability()->maxSubStep(core::Integrator::SymplecticEuler) - 0.1) < 1e-6);
     QCOMPARE(runner.model()->substeps, 1);
     auto automatic = std::make_shared<core::SceneDesc>(*stiffer);
     automatic->settings.autoSubsteps = true;
@@ -386,27 +386,27 @@ void TestSimulationRunner::pairSpeedWarningFollowsTheRun()
     still.position = {3.0, 0.0, 0.0};
     scene->particles = {thrown, still};
     ui::SimulationRunner runner = runnerWith(scene);
-    QVERIFY2(QString::fromStdString(runner.pairSpeedWarning()).startsWith("Particles move up to 0.3 m apart"),
-             runner.pairSpeedWarning().c_str());
+    QVERIFY2(QString::fromStdString(runner.diagnostics().pairSpeedWarning()).startsWith("Particles move up to 0.3 m apart"),
+             runner.diagnostics().pairSpeedWarning().c_str());
 
     // two substeps bring it under, as the warning says
     auto split = std::make_shared<core::SceneDesc>(*scene);
     split->settings.substeps = 2;
     runner.apply(ui::SetSceneEdit{split, ui::SceneChange::Parameters});
-    QVERIFY(runner.pairSpeedWarning().empty());
+    QVERIFY(runner.diagnostics().pairSpeedWarning().empty());
 
     // the run is checked too: a kick past the limit shows after the steps
     runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Parameters});
-    runner.apply(ui::ResetEdit{});
-    QVERIFY(!runner.pairSpeedWarning().empty());
+    runner.apply(ui::Reset{});
+    QVERIFY(!runner.diagnostics().pairSpeedWarning().empty());
     auto slow = std::make_shared<core::SceneDesc>(*scene);
     slow->particles[0].velocity = {1.0, 0.0, 0.0};
     runner.apply(ui::SetSceneEdit{slow, ui::SceneChange::Structure});
-    QVERIFY(runner.pairSpeedWarning().empty());
+    QVERIFY(runner.diagnostics().pairSpeedWarning().empty());
     runner.apply(ui::SteerEdit{0, Eigen::Vector3d(5000.0, 0.0, 0.0)});  // 1 kg: 5000 m/s² along x
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(0.05, kNoBudgetLimit);
-    QVERIFY(!runner.pairSpeedWarning().empty());
+    QVERIFY(!runner.diagnostics().pairSpeedWarning().empty());
 }
 
 void TestSimulationRunner::examplesStayInsideThePairSpeedLimit_data()
@@ -424,10 +424,10 @@ void TestSimulationRunner::examplesStayInsideThePairSpeedLimit()
                                           QStringLiteral(".json"));
     QVERIFY2(loaded.ok(), qPrintable(loaded.error));
     ui::SimulationRunner runner = runnerWith(std::make_shared<core::SceneDesc>(*loaded.scene));
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     for (int tick = 0; tick < 100; ++tick) {
         runner.advance(0.03, kNoBudgetLimit);
-        QVERIFY2(runner.pairSpeedWarning().empty(), runner.pairSpeedWarning().c_str());
+        QVERIFY2(runner.diagnostics().pairSpeedWarning().empty(), runner.diagnostics().pairSpeedWarning().c_str());
     }
 }
 
@@ -435,25 +435,25 @@ void TestSimulationRunner::errorEstimateFollowsEdits()
 {
     // loaded: an estimate of the initial state, the same as step doubling's own
     ui::SimulationRunner runner = runnerWith(springScene());
-    QVERIFY(!runner.localError().has_value());
+    QVERIFY(!runner.diagnostics().localError().has_value());
     runner.updateEstimate();
-    QVERIFY(runner.localError().has_value());
-    QCOMPARE(runner.localErrorStep(), 0u);
-    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
-    QVERIFY(*runner.localError() > 0.0);
+    QVERIFY(runner.diagnostics().localError().has_value());
+    QCOMPARE(runner.diagnostics().localErrorStep(), 0u);
+    QCOMPARE(*runner.diagnostics().localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    QVERIFY(*runner.diagnostics().localError() > 0.0);
 
     // a step, then another integrator: each time the estimate of the state and model now
-    runner.apply(ui::StepOnceEdit{});
+    runner.apply(ui::StepOnce{});
     runner.updateEstimate();
-    QCOMPARE(runner.localErrorStep(), 1u);
-    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
-    const double symplectic = *runner.localError();
+    QCOMPARE(runner.diagnostics().localErrorStep(), 1u);
+    QCOMPARE(*runner.diagnostics().localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    const double symplectic = *runner.diagnostics().localError();
     auto rk4 = std::make_shared<core::SceneDesc>(*springScene());
     rk4->settings.integrator = core::Integrator::Rk4;
     runner.apply(ui::SetSceneEdit{rk4, ui::SceneChange::Parameters});
     runner.updateEstimate();
-    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
-    QVERIFY(*runner.localError() < symplectic);  // fourth order against first, same step
+    QCOMPARE(*runner.diagnostics().localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    QVERIFY(*runner.diagnostics().localError() < symplectic);  // fourth order against first, same step
 }
 
 void TestSimulationRunner::errorEstimateRefreshesWhileRunning()
@@ -461,21 +461,21 @@ void TestSimulationRunner::errorEstimateRefreshesWhileRunning()
     // running: a new estimate comes within a bounded number of ticks, of the state they ended at
     ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
     runner.updateEstimate();
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     int ticks = 0;
-    while (runner.localErrorStep() == 0 && ticks < 100000) {
+    while (runner.diagnostics().localErrorStep() == 0 && ticks < 100000) {
         runner.advance(0.05, kNoBudgetLimit);
         ++ticks;
     }
-    QVERIFY2(runner.localErrorStep() > 0, "no estimate while running");
-    QCOMPARE(runner.localErrorStep(), runner.state().step);
-    QCOMPARE(*runner.localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+    QVERIFY2(runner.diagnostics().localErrorStep() > 0, "no estimate while running");
+    QCOMPARE(runner.diagnostics().localErrorStep(), runner.state().step);
+    QCOMPARE(*runner.diagnostics().localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
 
     // never more often than every kEstimateInterval of wall time: not after the next tick
-    const std::uint64_t at = runner.localErrorStep();
+    const std::uint64_t at = runner.diagnostics().localErrorStep();
     runner.advance(0.05, kNoBudgetLimit);
-    QCOMPARE(runner.localErrorStep(), at);
-    QVERIFY(runner.estimateSeconds() > 0.0);
+    QCOMPARE(runner.diagnostics().localErrorStep(), at);
+    QVERIFY(runner.diagnostics().estimateSeconds() > 0.0);
 }
 
 void TestSimulationRunner::driftIsMeasuredFromTheLastReset()
@@ -484,22 +484,22 @@ void TestSimulationRunner::driftIsMeasuredFromTheLastReset()
     const auto scene = springScene(100.0, 0.01);
     ui::SimulationRunner runner = runnerWith(scene);
     const core::Energies initial = core::energies(*runner.model(), runner.state());
-    QCOMPARE(runner.initialEnergies().total(), initial.total());
-    QCOMPARE(runner.snapshot()->energies.total(), runner.initialEnergies().total());
+    QCOMPARE(runner.diagnostics().initialEnergies().total(), initial.total());
+    QCOMPARE(runner.snapshot()->energies.total(), runner.diagnostics().initialEnergies().total());
 
     // symplectic Euler on a spring: the energy moves during the run
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     runner.advance(0.37, kNoBudgetLimit);
-    QVERIFY(runner.snapshot()->energies.total() != runner.initialEnergies().total());
+    QVERIFY(runner.snapshot()->energies.total() != runner.diagnostics().initialEnergies().total());
 
     // a parameter change keeps the reference; a reset measures again from the initial state
     auto softer = std::make_shared<core::SceneDesc>(*scene);
     softer->springs[0].stiffness = 50.0;
     runner.apply(ui::SetSceneEdit{softer, ui::SceneChange::Parameters});
-    QCOMPARE(runner.initialEnergies().total(), initial.total());
-    runner.apply(ui::ResetEdit{});
-    QCOMPARE(runner.snapshot()->energies.total(), runner.initialEnergies().total());
-    QVERIFY(runner.initialEnergies().total() != initial.total());  // the softer spring stores less
+    QCOMPARE(runner.diagnostics().initialEnergies().total(), initial.total());
+    runner.apply(ui::Reset{});
+    QCOMPARE(runner.snapshot()->energies.total(), runner.diagnostics().initialEnergies().total());
+    QVERIFY(runner.diagnostics().initialEnergies().total() != initial.total());  // the softer spring stores less
 }
 
 void TestSimulationRunner::errorEstimateIsCheapOnTheCloth()
@@ -508,37 +508,39 @@ void TestSimulationRunner::errorEstimateIsCheapOnTheCloth()
     io::LoadResult loaded = io::loadScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/cloth.json"));
     QVERIFY2(loaded.ok(), qPrintable(loaded.error));
     ui::SimulationRunner runner = runnerWith(std::make_shared<const core::SceneDesc>(std::move(*loaded.scene)));
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     std::uint64_t estimates = 0;
     std::uint64_t lastStep = 0;
     for (int tick = 0; tick < 180; ++tick) {
         runner.advance(1.0 / 60.0, kNoBudgetLimit);
-        if (runner.localErrorStep() != lastStep) {
-            lastStep = runner.localErrorStep();
+        if (runner.diagnostics().localErrorStep() != lastStep) {
+            lastStep = runner.diagnostics().localErrorStep();
             ++estimates;
         }
     }
 
     // estimates through the run (about four per second of wall time), at a small share of its cost
-    QVERIFY(runner.localError().has_value());
+    QVERIFY(runner.diagnostics().localError().has_value());
     QVERIFY2(estimates >= 6 && estimates <= 13, qPrintable(QString::number(estimates)));
     qInfo("cloth: %llu steps, %llu estimates, steps %.3f s, estimates %.5f s: %.2f %% of the steps' time",
           static_cast<unsigned long long>(runner.state().step), static_cast<unsigned long long>(estimates),
-          runner.stepSeconds(), runner.estimateSeconds(), 100.0 * runner.estimateShare());
-    QVERIFY2(runner.estimateShare() < ui::SimulationRunner::kEstimateShare,
-             qPrintable(QString::number(runner.estimateShare())));
+          runner.diagnostics().stepSeconds(), runner.diagnostics().estimateSeconds(), 100.0 * runner.diagnostics().estimateShare());
+    QVERIFY2(runner.diagnostics().estimateShare() < ui::RunDiagnostics::kEstimateShare,
+             qPrintable(QString::number(runner.diagnostics().estimateShare())));
 }
 
 void TestSimulationRunner::accuracyPlanIsMadeFromTheRunnersState()
 {
     ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
-    QVERIFY(runner.accuracyPlan() == nullptr);
-    runner.apply(ui::StepOnceEdit{});
-    runner.apply(ui::PlanAccuracyEdit{1e-6, 7});
+    QVERIFY(!ui::findReply<ui::AccuracyPlanReply>(runner.takeReplies()));
+    runner.apply(ui::StepOnce{});
+    runner.apply(ui::PlanAccuracy{1e-6, 7});
 
     // a row per fixed-step integrator, tagged with the request; the state was not stepped
-    QCOMPARE(runner.accuracyRequest(), 7u);
-    const auto plan = runner.accuracyPlan();
+    const std::optional<ui::AccuracyPlanReply> reply = ui::findReply<ui::AccuracyPlanReply>(runner.takeReplies());
+    QVERIFY(reply);
+    QCOMPARE(reply->request, 7u);
+    const auto plan = reply->plan;
     QVERIFY(plan != nullptr);
     QCOMPARE(plan->tolerance, 1e-6);
     QCOMPARE(plan->candidates.size(), std::size(core::kIntegrators) - 1);

@@ -36,7 +36,7 @@ using Hashes = std::map<std::uint64_t, std::uint64_t>;
 void stepAndRecord(ui::SimulationRunner &runner, int steps, Hashes &hashes)
 {
     for (int i = 0; i < steps; ++i) {
-        runner.apply(ui::StepOnceEdit{});
+        runner.apply(ui::StepOnce{});
         hashes[runner.state().step] = core::stateHash(runner.state());
     }
 }
@@ -87,8 +87,8 @@ void TestTimeline::scrubGivesTheRecordedBits()
     stepAndRecord(runner, 17, hashes);
     const std::uint64_t last = runner.state().step;
     QCOMPARE(last, std::uint64_t(86));
-    QCOMPARE(runner.timeline().firstStep(), std::uint64_t(0));
-    QCOMPARE(runner.timeline().lastStep(), last);
+    QCOMPARE(runner.scrubber().timeline().firstStep(), std::uint64_t(0));
+    QCOMPARE(runner.scrubber().timeline().lastStep(), last);
 
     // every recorded step, in a shuffled order, gives the bits the run had there
     std::vector<std::uint64_t> order;
@@ -96,9 +96,9 @@ void TestTimeline::scrubGivesTheRecordedBits()
         order.push_back(step);
     std::shuffle(order.begin(), order.end(), std::mt19937(5));
     for (std::uint64_t step : order) {
-        runner.apply(ui::ScrubEdit{step});
-        QVERIFY(runner.isScrubbing());
-        QCOMPARE(*runner.scrubStep(), step);
+        runner.apply(ui::Scrub{step});
+        QVERIFY(runner.scrubber().isScrubbing());
+        QCOMPARE(*runner.scrubber().scrubStep(), step);
         QCOMPARE(runner.shownState().step, step);
         QVERIFY2(core::stateHash(runner.shownState()) == hashes[step], qPrintable(QString("step %1").arg(step)));
         // the snapshot drawn is of the step shown
@@ -117,22 +117,22 @@ void TestTimeline::stepsBackAndForthInsideTheRecording()
     stepAndRecord(runner, 40, hashes);
 
     // back from the run's end, twice: steps 39 and 38
-    runner.apply(ui::StepBackEdit{});
-    runner.apply(ui::StepBackEdit{});
-    QCOMPARE(*runner.scrubStep(), std::uint64_t(38));
+    runner.apply(ui::StepBack{});
+    runner.apply(ui::StepBack{});
+    QCOMPARE(*runner.scrubber().scrubStep(), std::uint64_t(38));
     QCOMPARE(core::stateHash(runner.shownState()), hashes[38]);
     // forward through the recording: nothing is dropped on the way
     for (std::uint64_t step = 39; step <= 40; ++step) {
-        runner.apply(ui::StepOnceEdit{});
-        QCOMPARE(*runner.scrubStep(), step);
+        runner.apply(ui::StepOnce{});
+        QCOMPARE(*runner.scrubber().scrubStep(), step);
         QCOMPARE(core::stateHash(runner.shownState()), hashes[step]);
-        QCOMPARE(runner.timeline().lastStep(), std::uint64_t(40));
+        QCOMPARE(runner.scrubber().timeline().lastStep(), std::uint64_t(40));
     }
     // a step at the recording's end is a new step of the run
-    runner.apply(ui::StepOnceEdit{});
-    QVERIFY(!runner.isScrubbing());
+    runner.apply(ui::StepOnce{});
+    QVERIFY(!runner.scrubber().isScrubbing());
     QCOMPARE(runner.state().step, std::uint64_t(41));
-    QCOMPARE(runner.timeline().lastStep(), std::uint64_t(41));
+    QCOMPARE(runner.scrubber().timeline().lastStep(), std::uint64_t(41));
 }
 
 void TestTimeline::playGoesOnFromTheStepShown()
@@ -142,12 +142,12 @@ void TestTimeline::playGoesOnFromTheStepShown()
     Hashes hashes;
     stepAndRecord(runner, 60, hashes);
 
-    runner.apply(ui::ScrubEdit{23});
-    runner.apply(ui::PlayEdit{});
-    QVERIFY(!runner.isScrubbing());
+    runner.apply(ui::Scrub{23});
+    runner.apply(ui::Play{});
+    QVERIFY(!runner.scrubber().isScrubbing());
     QVERIFY(runner.isRunning());
     QCOMPARE(runner.state().step, std::uint64_t(23));
-    QCOMPARE(runner.timeline().lastStep(), std::uint64_t(23));  // the future is gone
+    QCOMPARE(runner.scrubber().timeline().lastStep(), std::uint64_t(23));  // the future is gone
     // nothing changed since: the run goes on exactly as it did the first time
     const ui::SimulationRunner::Advance advanced = runner.advance(5.5 * 0.01, 1e9);
     QCOMPARE(advanced.steps, 5);
@@ -163,22 +163,22 @@ void TestTimeline::editWhileScrubbedDropsTheFuture()
     Hashes hashes;
     stepAndRecord(runner, 50, hashes);
 
-    runner.apply(ui::ScrubEdit{17});
+    runner.apply(ui::Scrub{17});
     auto damped = std::make_shared<core::SceneDesc>(*scene);
     damped->settings.viscosity = 0.5;
     runner.apply(ui::SetSceneEdit{damped, ui::SceneChange::Parameters});
-    QVERIFY(!runner.isScrubbing());
+    QVERIFY(!runner.scrubber().isScrubbing());
     QCOMPARE(runner.state().step, std::uint64_t(17));
     QCOMPARE(core::stateHash(runner.state()), hashes[17]);
-    QCOMPARE(runner.timeline().lastStep(), std::uint64_t(17));
+    QCOMPARE(runner.scrubber().timeline().lastStep(), std::uint64_t(17));
     QCOMPARE(runner.model()->viscosity, 0.5);
 
     // recorded again from there, with the drag: different from the first time
     stepAndRecord(runner, 5, hashes);
-    runner.apply(ui::ScrubEdit{19});
+    runner.apply(ui::Scrub{19});
     QCOMPARE(core::stateHash(runner.shownState()), hashes[19]);
     // a step before the edit still shows the first run's bits
-    runner.apply(ui::ScrubEdit{12});
+    runner.apply(ui::Scrub{12});
     QCOMPARE(core::stateHash(runner.shownState()), hashes[12]);
 }
 
@@ -198,14 +198,14 @@ void TestTimeline::scrubbedStepShowsItsOwnScene()
     runner.apply(ui::SetSceneEdit{grown, ui::SceneChange::Structure});
     stepAndRecord(runner, 20, hashes);
 
-    runner.apply(ui::ScrubEdit{10});
-    QVERIFY(runner.isScrubbing());
+    runner.apply(ui::Scrub{10});
+    QVERIFY(runner.scrubber().isScrubbing());
     QVERIFY(runner.shownScene() == scene);
     QCOMPARE(runner.shownModel()->particleCount(), int(scene->particles.size()));
     QCOMPARE(runner.snapshot()->particleCount(), int(scene->particles.size()));
     QVERIFY(runner.scene() == grown);  // the editor's scene is still the newer one
 
-    runner.apply(ui::ScrubEdit{35});
+    runner.apply(ui::Scrub{35});
     QVERIFY(runner.shownScene() == grown);
     QCOMPARE(runner.snapshot()->particleCount(), int(grown->particles.size()));
 }
@@ -214,33 +214,33 @@ void TestTimeline::longRunStaysWithinTheBudget()
 {
     ui::SimulationRunner runner;
     constexpr std::size_t kBudget = 96 * 1024;  // bytes: a few dozen keyframes of this cloth
-    runner.apply(ui::TimelineBudgetEdit{kBudget});
+    runner.apply(ui::SetTimelineBudget{kBudget});
     runner.apply(ui::SetSceneEdit{clothScene(), ui::SceneChange::Replace});
     Hashes hashes;
     std::size_t most = 0;
     for (int i = 0; i < 3000; ++i) {
         stepAndRecord(runner, 1, hashes);
-        most = std::max(most, runner.timeline().usedBytes());
-        QVERIFY(runner.timeline().usedBytes() <= kBudget);
+        most = std::max(most, runner.scrubber().timeline().usedBytes());
+        QVERIFY(runner.scrubber().timeline().usedBytes() <= kBudget);
     }
     QVERIFY2(most > kBudget / 2, qPrintable(QString("used at most %1 bytes").arg(most)));
     // the newest part of the run is kept, the oldest dropped
-    const ui::Timeline &timeline = runner.timeline();
+    const ui::Timeline &timeline = runner.scrubber().timeline();
     QCOMPARE(timeline.lastStep(), std::uint64_t(3000));
     QVERIFY(timeline.firstStep() > 0);
     QVERIFY2(timeline.lastStep() - timeline.firstStep() >= 100,
              qPrintable(QString("only steps %1 to %2").arg(timeline.firstStep()).arg(timeline.lastStep())));
     // its first and a middle step are exact; a step before it cannot be shown
     for (std::uint64_t step : {timeline.firstStep(), (timeline.firstStep() + timeline.lastStep()) / 2 + 3}) {
-        runner.apply(ui::ScrubEdit{step});
+        runner.apply(ui::Scrub{step});
         QCOMPARE(core::stateHash(runner.shownState()), hashes[step]);
     }
-    const std::uint64_t shown = *runner.scrubStep();
-    runner.apply(ui::ScrubEdit{timeline.firstStep() - 1});
-    QCOMPARE(*runner.scrubStep(), shown);
+    const std::uint64_t shown = *runner.scrubber().scrubStep();
+    runner.apply(ui::Scrub{timeline.firstStep() - 1});
+    QCOMPARE(*runner.scrubber().scrubStep(), shown);
     // a smaller budget drops more at once
-    runner.apply(ui::TimelineBudgetEdit{kBudget / 4});
-    QVERIFY(runner.timeline().usedBytes() <= kBudget / 4);
+    runner.apply(ui::SetTimelineBudget{kBudget / 4});
+    QVERIFY(runner.scrubber().timeline().usedBytes() <= kBudget / 4);
 }
 
 void TestTimeline::breaksAreMarked()
@@ -256,16 +256,16 @@ void TestTimeline::breaksAreMarked()
     for (const core::SpringBreak &b : breaks)
         if (b.step <= 80 && (expected.empty() || expected.back() != b.step))
             expected.push_back(b.step);
-    QCOMPARE(runner.timeline().breakSteps(), expected);
+    QCOMPARE(runner.scrubber().timeline().breakSteps(), expected);
     // scrubbed back before the first break, the cloth is whole; at the run's end, torn
-    runner.apply(ui::ScrubEdit{expected.front() - 1});
+    runner.apply(ui::Scrub{expected.front() - 1});
     QCOMPARE(runner.snapshot()->breakCount, std::uint64_t(0));
-    runner.apply(ui::ScrubEdit{80});
+    runner.apply(ui::Scrub{80});
     QCOMPARE(runner.snapshot()->breakCount, std::uint64_t(breaks.size()));
     // after a scrub back and an edit, the later breaks are gone from the marks
-    runner.apply(ui::ScrubEdit{expected.front()});
+    runner.apply(ui::Scrub{expected.front()});
     runner.apply(ui::TiltEdit{1, 0.0});
-    QVERIFY(runner.timeline().breakSteps().back() <= expected.front());
+    QVERIFY(runner.scrubber().timeline().breakSteps().back() <= expected.front());
 }
 
 void TestTimeline::noScrubbingWhileASessionIsRecorded()
@@ -274,13 +274,13 @@ void TestTimeline::noScrubbingWhileASessionIsRecorded()
     runner.apply(ui::SetSceneEdit{clothScene(), ui::SceneChange::Replace});
     Hashes hashes;
     stepAndRecord(runner, 20, hashes);
-    runner.apply(ui::StartRecordingEdit{});
-    runner.apply(ui::ScrubEdit{5});
-    QVERIFY(!runner.isScrubbing());
+    runner.apply(ui::StartRecording{});
+    runner.apply(ui::Scrub{5});
+    QVERIFY(!runner.scrubber().isScrubbing());
     QCOMPARE(runner.state().step, std::uint64_t(20));
-    runner.apply(ui::StopRecordingEdit{1});
-    runner.apply(ui::ScrubEdit{5});
-    QVERIFY(runner.isScrubbing());
+    runner.apply(ui::StopRecording{1});
+    runner.apply(ui::Scrub{5});
+    QVERIFY(runner.scrubber().isScrubbing());
 }
 
 QTEST_APPLESS_MAIN(TestTimeline)

@@ -19,7 +19,7 @@ inline std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::Simulatio
     clock.start();
     while (clock.elapsed() < timeoutMs) {
         const auto frame = controller.frame();
-        if (frame && frame->appliedEdit >= sequence)
+        if (frame && frame->appliedMessage >= sequence)
             return frame;
         QTest::qWait(5);
     }

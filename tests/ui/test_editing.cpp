@@ -75,7 +75,7 @@ private:
     void settle()
     {
         const std::uint64_t sequence = controller().sync();
-        QTRY_VERIFY(controller().frame() && controller().frame()->appliedEdit >= sequence);
+        QTRY_VERIFY(controller().frame() && controller().frame()->appliedMessage >= sequence);
         QTRY_VERIFY(viewport()->snapshot() == controller().frame()->snapshot);
     }
     // opens a scene and looks at it from a fixed camera: down on the origin from 6 m

@@ -723,19 +723,23 @@ void TestFiles::useCurrentStateAsInitialThenResetAndUndo()
     press(Qt::Key_F4);
     const auto paused = settledFrame(controller());
     QVERIFY(!paused->running);
+    auto reply = std::make_shared<ui::CapturedStateReply>();
+    const QObject receiver;
+    connect(&controller(), &ui::SimulationController::stateCaptured, &receiver,
+            [reply](const ui::CapturedStateReply &r) { *reply = r; });
     action("actionUseCurrentState")->trigger();
     QTRY_COMPARE(document().undoStack()->count(), 1);
     QVERIFY(m_window->isWindowModified());
 
     // the scene's initial conditions are the paused state: positions as drawn, velocities the run's
     const core::SceneDesc &captured = document().scene();
-    const auto frame = settledFrame(controller());
-    QVERIFY(frame->capturedState);
-    QCOMPARE(frame->capturedState->state.step, paused->snapshot->step);
+    QVERIFY(settledFrame(controller()));
+    QVERIFY(reply->captured);
+    QCOMPARE(reply->captured->state.step, paused->snapshot->step);
     for (std::size_t i = 0; i < captured.particles.size(); ++i) {
         const auto column = Eigen::Index(i);
-        QVERIFY(captured.particles[i].position == frame->capturedState->state.position.col(column));
-        QVERIFY(captured.particles[i].velocity == frame->capturedState->state.velocity.col(column));
+        QVERIFY(captured.particles[i].position == reply->captured->state.position.col(column));
+        QVERIFY(captured.particles[i].velocity == reply->captured->state.velocity.col(column));
         for (Eigen::Index axis = 0; axis < 3; ++axis)
             QCOMPARE(float(captured.particles[i].position[axis]), paused->snapshot->positions[3 * i + std::size_t(axis)]);
     }

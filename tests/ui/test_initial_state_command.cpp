@@ -25,10 +25,10 @@ bool runPastABreak(ui::SimulationRunner &runner, std::shared_ptr<const core::Sce
         return false;
     scene = std::make_shared<const core::SceneDesc>(*loaded.scene);
     runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
-    runner.apply(ui::PlayEdit{});
+    runner.apply(ui::Play{});
     for (int tick = 0; tick < 2000 && runner.state().breaks.size() < 3; ++tick)
         runner.advance(scene->settings.timeStep, kNoBudgetLimit);
-    runner.apply(ui::PauseEdit{});
+    runner.apply(ui::Pause{});
     return runner.state().breaks.size() >= 3;
 }
 
@@ -36,7 +36,7 @@ bool runPastABreak(ui::SimulationRunner &runner, std::shared_ptr<const core::Sce
 std::uint64_t hashAfter(ui::SimulationRunner &runner, int steps)
 {
     for (int i = 0; i < steps; ++i)
-        runner.apply(ui::StepOnceEdit{});
+        runner.apply(ui::StepOnce{});
     return core::stateHash(runner.state());
 }
 
@@ -55,9 +55,10 @@ void TestInitialStateCommand::tornSpringsLeaveTheScene()
     ui::SimulationRunner runner;
     std::shared_ptr<const core::SceneDesc> scene;
     QVERIFY(runPastABreak(runner, scene));
-    runner.apply(ui::CaptureStateEdit{1});
-    QVERIFY(runner.capturedState());
-    const core::State captured = runner.capturedState()->state;
+    runner.apply(ui::CaptureState{1});
+    const std::optional<ui::CapturedStateReply> reply = ui::findReply<ui::CapturedStateReply>(runner.takeReplies());
+    QVERIFY(reply && reply->captured);
+    const core::State captured = reply->captured->state;
     QCOMPARE(captured.step, runner.state().step);
 
     ui::SceneDocument document;
@@ -104,13 +105,15 @@ void TestInitialStateCommand::theRunGoesOnThroughEditUndoAndRedo()
     QVERIFY(runPastABreak(runner, scene));
     QVERIFY(runPastABreak(control, scene));
     QCOMPARE(core::stateHash(runner.state()), core::stateHash(control.state()));
-    runner.apply(ui::CaptureStateEdit{1});
+    runner.apply(ui::CaptureState{1});
+    const std::optional<ui::CapturedStateReply> reply = ui::findReply<ui::CapturedStateReply>(runner.takeReplies());
+    QVERIFY(reply && reply->captured);
     ui::SceneDocument document;
     document.setScene(scene, ui::SceneChange::Replace);
     QObject::connect(&document, &ui::SceneDocument::sceneChanged, [&](ui::SceneChange change) {
         runner.apply(ui::SetSceneEdit{document.sharedScene(), change});
     });
-    document.undoStack()->push(new ui::InitialStateCommand(document, QStringLiteral("initial"), runner.capturedState()->state));
+    document.undoStack()->push(new ui::InitialStateCommand(document, QStringLiteral("initial"), reply->captured->state));
     QCOMPARE(runner.state().position, control.state().position);
     QCOMPARE(std::count(runner.state().springBroken.begin(), runner.state().springBroken.end(), 1), 0L);
     QCOMPARE(hashAfter(runner, 15), hashAfter(control, 15));

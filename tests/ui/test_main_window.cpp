@@ -476,15 +476,19 @@ void TestMainWindow::f7PlansAndAppliesTheCheapestIntegrator()
     QCOMPARE(undo->count(), 0);
 
     // 1e-7 m per step, typed and Return: the worker plans, the pick is applied as one edit
+    auto planned = std::make_shared<std::shared_ptr<const core::AccuracyPlan>>();
+    const QObject receiver;
+    connect(&controller(), &ui::SimulationController::accuracyPlanned, &receiver,
+            [planned](const ui::AccuracyPlanReply &reply) { *planned = reply.plan; });
     dialog->toleranceBox()->selectAll();
     QTest::keyClicks(dialog->toleranceBox(), QStringLiteral("1e-7"));
     QTest::keyClick(dialog->toleranceBox(), Qt::Key_Return);
     QTRY_COMPARE_WITH_TIMEOUT(undo->count(), 1, 20000);
     const auto frame = settledFrame(controller());
-    QVERIFY(frame->accuracyPlan != nullptr);
-    const core::PlanCandidate *pick = frame->accuracyPlan->pick();
+    QVERIFY(*planned != nullptr);
+    const core::PlanCandidate *pick = (*planned)->pick();
     QVERIFY(pick != nullptr);
-    QCOMPARE(frame->accuracyPlan->tolerance, 1e-7);
+    QCOMPARE((*planned)->tolerance, 1e-7);
     QVERIFY(pick->localError <= 1e-7);
     QCOMPARE(frame->model->integrator, pick->integrator);
     QCOMPARE(frame->model->substeps, pick->substeps);

@@ -39,7 +39,7 @@ std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::SimulationContro
     clock.start();
     while (clock.elapsed() < 10000) {
         const auto frame = controller.frame();
-        if (frame && frame->appliedEdit >= sequence)
+        if (frame && frame->appliedMessage >= sequence)
             return frame;
         QTest::qWait(5);
     }

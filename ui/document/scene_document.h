@@ -5,7 +5,7 @@
 // through the undo stack's commands (scene_commands.h), and the stack's clean state is the
 // document's saved state.
 
-#include "session/edit_queue.h"
+#include "session/messages.h"
 
 #include "core/scene.h"
 

@@ -119,7 +119,7 @@ void PlotsWidget::addFrame(const SimulationFrame &frame)
         return;
     // a scene is being replaced: pass over the old one's frames, then start over
     if (m_startOverAfter != 0) {
-        if (frame.appliedEdit < m_startOverAfter)
+        if (frame.appliedMessage < m_startOverAfter)
             return;
         m_startOverAfter = 0;
         for (PlotSeries &series : m_series)

@@ -4,6 +4,8 @@
 #include "thread_handover.h"
 
 #include <QThread>
+#include <type_traits>
+#include <variant>
 
 namespace ui {
 
@@ -21,16 +23,18 @@ std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t count)
 }  // namespace
 
 SimulationController::SimulationController(QObject *parent)
-    : QObject(parent), m_thread(new QThread(this)), m_worker(new SimulationWorker(m_edits, m_mailbox))
+    : QObject(parent), m_thread(new QThread(this)), m_worker(new SimulationWorker(m_messages, m_replies, m_mailbox))
 {
     // the worker lives on its own thread and is deleted there when the thread finishes
     m_thread->setObjectName(QStringLiteral("simulation"));
     m_worker->moveToThread(m_thread);
     connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
 
-    // frames and blow-ups come back queued, onto this (the UI) thread
+    // frames, replies and blow-ups come back queued, onto this (the UI) thread
     m_frameConnection = connect(m_worker, &SimulationWorker::frameReady, this, &SimulationController::takeFrame,
                                 Qt::QueuedConnection);
+    m_repliesConnection = connect(m_worker, &SimulationWorker::repliesReady, this,
+                                  &SimulationController::takeReplies, Qt::QueuedConnection);
     m_blowUpConnection = connect(m_worker, &SimulationWorker::blewUp, this, [this](const QString &message) {
         setRunning(false);
         emit blewUp(message);
@@ -54,6 +58,7 @@ void SimulationController::shutDown()
     // (By their handles: a disconnect by sender would read the worker's QObject from this thread.)
     disconnect(m_frameConnection);
     disconnect(m_blowUpConnection);
+    disconnect(m_repliesConnection);
     // the worker's event loop ends, its timer stops with it, and the worker is deleted on its thread
     handOverRelease(m_worker);
     m_thread->quit();
@@ -63,10 +68,10 @@ void SimulationController::shutDown()
     setRunning(false);
 }
 
-std::uint64_t SimulationController::post(Edit edit)
+std::uint64_t SimulationController::post(Message message)
 {
-    const std::uint64_t sequence = m_edits.push(std::move(edit));
-    // one wake for a burst of edits; the worker applies them all at once
+    const std::uint64_t sequence = m_messages.push(std::move(message));
+    // one wake for a burst of messages; the worker applies them all at once
     if (m_worker && !m_worker->wakePending().exchange(true))
         SimulationWorker::postWake(m_worker);
     return sequence;
@@ -82,30 +87,30 @@ std::uint64_t SimulationController::setScene(std::shared_ptr<const core::SceneDe
 std::uint64_t SimulationController::play()
 {
     setRunning(true);
-    return post(PlayEdit{});
+    return post(Play{});
 }
 
 std::uint64_t SimulationController::pause()
 {
     setRunning(false);
-    return post(PauseEdit{});
+    return post(Pause{});
 }
 
 std::uint64_t SimulationController::scrub(std::uint64_t step)
 {
     setRunning(false);
-    return post(ScrubEdit{step});
+    return post(Scrub{step});
 }
 
 std::uint64_t SimulationController::stepBack()
 {
     setRunning(false);
-    return post(StepBackEdit{});
+    return post(StepBack{});
 }
 
 std::uint64_t SimulationController::setTimelineBudget(std::size_t bytes)
 {
-    return post(TimelineBudgetEdit{bytes});
+    return post(SetTimelineBudget{bytes});
 }
 
 std::uint64_t SimulationController::togglePlay()
@@ -116,12 +121,12 @@ std::uint64_t SimulationController::togglePlay()
 std::uint64_t SimulationController::stepOnce()
 {
     setRunning(false);
-    return post(StepOnceEdit{});
+    return post(StepOnce{});
 }
 
 std::uint64_t SimulationController::reset()
 {
-    return post(ResetEdit{});
+    return post(Reset{});
 }
 
 std::uint64_t SimulationController::tilt()
@@ -141,32 +146,32 @@ std::uint64_t SimulationController::grab(int particle, const Eigen::Vector3d &ta
 
 std::uint64_t SimulationController::sync()
 {
-    return post(SyncEdit{});
+    return post(Sync{});
 }
 
 std::uint64_t SimulationController::planAccuracy(double tolerance)
 {
     const std::uint64_t request = ++m_accuracyRequests;
-    post(PlanAccuracyEdit{tolerance, request});
+    post(PlanAccuracy{tolerance, request});
     return request;
 }
 
 std::uint64_t SimulationController::startRecording()
 {
-    return post(StartRecordingEdit{});
+    return post(StartRecording{});
 }
 
 std::uint64_t SimulationController::stopRecording()
 {
     const std::uint64_t request = ++m_recordingRequests;
-    post(StopRecordingEdit{request});
+    post(StopRecording{request});
     return request;
 }
 
 std::uint64_t SimulationController::captureState()
 {
     const std::uint64_t request = ++m_captureRequests;
-    post(CaptureStateEdit{request});
+    post(CaptureState{request});
     return request;
 }
 
@@ -191,6 +196,22 @@ void SimulationController::takeFrame()
         return;
     m_frame = std::move(frame);
     emit frameChanged();
+}
+
+void SimulationController::takeReplies()
+{
+    for (const Reply &reply : m_replies.drain())
+        std::visit(
+            [this](const auto &r) {
+                using R = std::decay_t<decltype(r)>;
+                if constexpr (std::is_same_v<R, AccuracyPlanReply>)
+                    emit accuracyPlanned(r);
+                else if constexpr (std::is_same_v<R, CapturedStateReply>)
+                    emit stateCaptured(r);
+                else
+                    emit recordingStopped(r);
+            },
+            reply);
 }
 
 }  // namespace ui

@@ -1,11 +1,14 @@
 #pragma once
 // SimulationController: the UI thread's handle on the simulation. It owns the worker thread, the
-// edit queue and the frame mailbox. Every request (scene, play, pause, step, reset, tilt, steer)
-// becomes an edit that the worker applies between two steps, so none of them ever blocks the UI;
-// frames come back through the latest-wins mailbox and a queued signal.
+// message queue and the frame mailbox. Every request (scene, play, pause, step, reset, tilt, steer)
+// becomes a message that the worker applies between two steps, so none of them ever blocks the UI;
+// frames come back through the latest-wins mailbox and a queued signal, and the answers to one-off
+// requests (a plan, a captured state, a recording) through the reply queue, each announced once
+// by its own signal.
 
-#include "session/edit_queue.h"
+#include "session/messages.h"
 #include "session/latest_mailbox.h"
+#include "session/replies.h"
 #include "session/simulation_frame.h"
 
 #include <QObject>
@@ -29,7 +32,7 @@ public:
     explicit SimulationController(QObject *parent = nullptr);
     ~SimulationController() override;
 
-    // each returns the edit's sequence number; frame()->appliedEdit reaches it once applied
+    // each returns the message's sequence number; frame()->appliedMessage reaches it once applied
     std::uint64_t setScene(std::shared_ptr<const core::SceneDesc> scene, SceneChange change);
     std::uint64_t play();
     std::uint64_t pause();
@@ -40,16 +43,16 @@ public:
     std::uint64_t steer(int particle, const Eigen::Vector3d &force);
     // the Drag tool's mouse spring pulls particle toward target; particle -1 lets go
     std::uint64_t grab(int particle, const Eigen::Vector3d &target);
-    // changes nothing, but the worker publishes a frame once it has applied every earlier edit
+    // changes nothing, but the worker publishes a frame once it has applied every earlier message
     std::uint64_t sync();
     // asks the worker to plan the integrator and substeps for a tolerance (m per sub-step) from its
-    // state; returns the request's number, which frame()->accuracyRequest reaches with the plan
+    // state; returns the request's number, which accuracyPlanned() carries with the plan
     std::uint64_t planAccuracy(double tolerance);
     // asks the worker for a copy of its positions and velocities; returns the request's number,
-    // which frame()->captureRequest reaches with the captured state
+    // which stateCaptured() carries with the captured state
     std::uint64_t captureState();
     // starts recording the session; stopRecording() ends it and returns the request's number,
-    // which frame()->recordingRequest reaches with the recording
+    // which recordingStopped() carries with the recording
     std::uint64_t startRecording();
     std::uint64_t stopRecording();
 
@@ -79,20 +82,27 @@ signals:
     void runningChanged(bool running);
     // the run blew up and paused; the message names the particle, the quantity, the step and time
     void blewUp(const QString &message);
+    // the replies to planAccuracy(), captureState() and stopRecording(), each once
+    void accuracyPlanned(const ui::AccuracyPlanReply &reply);
+    void stateCaptured(const ui::CapturedStateReply &reply);
+    void recordingStopped(const ui::RecordingReply &reply);
 
 private:
-    std::uint64_t post(Edit edit);
+    std::uint64_t post(Message message);
     void setRunning(bool running);
     void takeFrame();
+    void takeReplies();
 
-    EditQueue m_edits;
+    MessageQueue m_messages;
     LatestMailbox<SimulationFrame> m_mailbox;
+    ReplyQueue m_replies;
     std::uint64_t m_recordingRequests = 0;
     QThread *m_thread = nullptr;
     SimulationWorker *m_worker = nullptr;
     // the worker's signals to this side, cut on this thread at shutDown()
     QMetaObject::Connection m_frameConnection;
     QMetaObject::Connection m_blowUpConnection;
+    QMetaObject::Connection m_repliesConnection;
     std::shared_ptr<const SimulationFrame> m_frame;
     bool m_running = false;
     bool m_shutDown = false;

@@ -18,8 +18,8 @@ const QEvent::Type kWakeEvent = static_cast<QEvent::Type>(QEvent::registerEventT
 
 }  // namespace
 
-SimulationWorker::SimulationWorker(EditQueue &edits, LatestMailbox<SimulationFrame> &mailbox)
-    : m_edits(edits), m_mailbox(mailbox), m_timer(new QTimer(this))
+SimulationWorker::SimulationWorker(MessageQueue &messages, ReplyQueue &replies, LatestMailbox<SimulationFrame> &mailbox)
+    : m_messages(messages), m_replies(replies), m_mailbox(mailbox), m_timer(new QTimer(this))
 {
     // the timer is a child, so it moves to the worker thread with this object
     m_timer->setTimerType(Qt::PreciseTimer);
@@ -63,12 +63,20 @@ void SimulationWorker::tick()
 {
     const bool wasRunning = m_runner.isRunning();
 
-    // edits first: they land between two steps
-    EditQueue::Batch batch = m_edits.drain();
-    for (const Edit &edit : batch.edits)
-        m_runner.apply(edit);
-    bool changed = !batch.edits.empty();
-    m_appliedEdit = batch.lastSequence;
+    // messages first: they land between two steps
+    MessageQueue::Batch batch = m_messages.drain();
+    for (const Message &message : batch.messages)
+        m_runner.apply(message);
+    bool changed = !batch.messages.empty();
+
+    // the answers to one-off requests, each once, ahead of the frame that follows them
+    bool told = false;
+    for (Reply &reply : m_runner.takeReplies())
+        if (m_replies.push(std::move(reply)) && !told) {
+            told = true;
+            emit repliesReady();
+        }
+    m_appliedMessage = batch.lastSequence;
 
     // then the steps that the wall time elapsed since the last tick asks for
     if (m_runner.isRunning()) {
@@ -103,7 +111,7 @@ void SimulationWorker::tick()
         m_stepsPerSecond = 0.0;
     }
 
-    // an edit or a blow-up changed what the error estimate is of: estimate again
+    // a message or a blow-up changed what the error estimate is of: estimate again
     m_runner.updateEstimate();
 
     // an edit changed the model: its stability limit, for the parameters panel
@@ -132,36 +140,32 @@ void SimulationWorker::publish()
     // the snapshot's own model and scene, the recorded ones while a past step is shown
     frame->model = m_runner.shownModel();
     frame->scene = m_runner.shownScene();
-    frame->appliedEdit = m_appliedEdit;
+    frame->appliedMessage = m_appliedMessage;
     frame->running = m_runner.isRunning();
     frame->realTimeFactor = m_realTimeFactor;
     frame->stepsPerSecond = m_stepsPerSecond;
-    frame->localError = m_runner.localError();
-    frame->localErrorStep = m_runner.localErrorStep();
-    frame->initialEnergies = m_runner.initialEnergies();
-    frame->estimateShare = m_runner.estimateShare();
-    frame->accuracyPlan = m_runner.accuracyPlan();
-    frame->accuracyRequest = m_runner.accuracyRequest();
-    frame->capturedState = m_runner.capturedState();
-    frame->captureRequest = m_runner.captureRequest();
-    frame->recording = m_runner.finishedRecording();
-    frame->recordingRequest = m_runner.recordingRequest();
-    frame->stability = m_runner.stability();
-    frame->pairSpeedWarning = m_runner.pairSpeedWarning();
-    const Timeline &timeline = m_runner.timeline();
+    const RunDiagnostics &diagnostics = m_runner.diagnostics();
+    frame->localError = diagnostics.localError();
+    frame->localErrorStep = diagnostics.localErrorStep();
+    frame->initialEnergies = diagnostics.initialEnergies();
+    frame->estimateShare = diagnostics.estimateShare();
+    frame->stability = diagnostics.stability();
+    frame->pairSpeedWarning = diagnostics.pairSpeedWarning();
+    const Scrubber &scrubber = m_runner.scrubber();
+    const Timeline &timeline = scrubber.timeline();
     TimelineInfo &info = frame->timeline;
     info.empty = timeline.empty();
     info.firstStep = timeline.firstStep();
     info.lastStep = timeline.lastStep();
     info.firstTime = timeline.firstTime();
     info.lastTime = timeline.lastTime();
-    info.scrubStep = m_runner.scrubStep();
+    info.scrubStep = scrubber.scrubStep();
     info.usedBytes = timeline.usedBytes();
     info.budgetBytes = timeline.budget();
     info.breakSteps = timeline.breakSteps();
     info.locked = m_runner.isRecording();
-    info.resumes = m_runner.resumes();
-    info.resumedAt = m_runner.resumedAt();
+    info.resumes = scrubber.resumes();
+    info.resumedAt = scrubber.resumedAt();
     if (m_mailbox.publish(std::move(frame)))
         emit frameReady();
 }

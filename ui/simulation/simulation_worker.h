@@ -1,10 +1,11 @@
 #pragma once
 // SimulationWorker: lives on the controller's worker thread. A QTimer ticks it while running; each
-// tick drains the edit queue, advances the simulation by the wall time elapsed (capped) and
-// publishes a frame to the mailbox. Only this object, on its thread, touches the core::State.
+// tick drains the message queue, advances the simulation by the wall time elapsed (capped),
+// hands the replies to one-off requests to the reply queue and publishes a frame to the mailbox. Only this object, on its thread, touches the core::State.
 
-#include "session/edit_queue.h"
+#include "session/messages.h"
 #include "session/latest_mailbox.h"
+#include "session/replies.h"
 #include "session/simulation_frame.h"
 #include "session/simulation_runner.h"
 
@@ -27,13 +28,13 @@ public:
     // ms between ticks while running
     static constexpr int kTickIntervalMs = 16;
 
-    SimulationWorker(EditQueue &edits, LatestMailbox<SimulationFrame> &mailbox);
+    SimulationWorker(MessageQueue &messages, ReplyQueue &replies, LatestMailbox<SimulationFrame> &mailbox);
 
-    // Posts the event that makes the worker apply pending edits now, running or not.
+    // Posts the event that makes the worker apply pending messages now, running or not.
     static void postWake(SimulationWorker *worker);
     ~SimulationWorker() override;
 
-    // the UI side sets this before queueing wake(), so that a burst of edits queues one wake
+    // the UI side sets this before queueing wake(), so that a burst of messages queues one wake
     std::atomic<bool> &wakePending() { return m_wakePending; }
 
 protected:
@@ -42,6 +43,8 @@ protected:
 signals:
     // a frame waits in the mailbox, and the mailbox was empty before it
     void frameReady();
+    // replies wait in the reply queue, and the queue was empty before them
+    void repliesReady();
     // the run stopped because a value stopped being finite or bounded
     void blewUp(const QString &message);
 
@@ -50,13 +53,14 @@ private:
     void tick();
     void publish();
 
-    EditQueue &m_edits;
+    MessageQueue &m_messages;
+    ReplyQueue &m_replies;
     LatestMailbox<SimulationFrame> &m_mailbox;
     SimulationRunner m_runner;
     QTimer *m_timer = nullptr;
     QElapsedTimer m_clock;  // wall time since the previous tick while running
     std::atomic<bool> m_wakePending = false;
-    std::uint64_t m_appliedEdit = 0;
+    std::uint64_t m_appliedMessage = 0;
 
     // rates over the current measuring window
     QElapsedTimer m_window;

@@ -98,6 +98,9 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateFileActions);
     connect(m_controller, &SimulationController::frameChanged, this, &MainWindow::frameChanged);
+    connect(m_controller, &SimulationController::accuracyPlanned, this, &MainWindow::accuracyPlanned);
+    connect(m_controller, &SimulationController::stateCaptured, this, &MainWindow::stateCaptured);
+    connect(m_controller, &SimulationController::recordingStopped, this, &MainWindow::recordingStopped);
     connect(m_controller, &SimulationController::runningChanged, this, &MainWindow::runningChanged);
     connect(m_controller, &SimulationController::blewUp, this, [this](const QString &message) {
         showWarning(tr("%1 Paused at the last good state.").arg(message));
@@ -495,27 +498,40 @@ void MainWindow::sceneChanged(SceneChange change)
     updateTitle();
 }
 
+// the accuracy plan asked for has come back: apply it
+void MainWindow::accuracyPlanned(const AccuracyPlanReply &reply)
+{
+    if (reply.request != m_accuracyRequest || !reply.plan)
+        return;
+    m_accuracyRequest = 0;
+    applyPlan(*reply.plan);
+}
+
+// so has the state asked for by Use Current State as Initial
+void MainWindow::stateCaptured(const CapturedStateReply &reply)
+{
+    if (reply.request != m_captureRequest || !reply.captured)
+        return;
+    m_captureRequest = 0;
+    applyCapturedState(*reply.captured);
+}
+
+// and the recording that Ctrl+R stopped (none if the run had none)
+void MainWindow::recordingStopped(const RecordingReply &reply)
+{
+    if (reply.request != m_recordingRequest)
+        return;
+    m_recordingRequest = 0;
+    if (reply.recording)
+        saveSessionRecording(*reply.recording);
+}
+
 void MainWindow::frameChanged()
 {
     const std::shared_ptr<const SimulationFrame> frame = m_controller->frame();
     if (!frame)
         return;
 
-    // the accuracy plan asked for has come back: apply it
-    if (m_accuracyRequest != 0 && frame->accuracyRequest >= m_accuracyRequest && frame->accuracyPlan) {
-        m_accuracyRequest = 0;
-        applyPlan(*frame->accuracyPlan);
-    }
-    // so has the state asked for by Use Current State as Initial
-    if (m_recordingRequest != 0 && frame->recordingRequest >= m_recordingRequest) {
-        m_recordingRequest = 0;
-        if (frame->recording)
-            saveSessionRecording(*frame->recording);
-    }
-    if (m_captureRequest != 0 && frame->captureRequest >= m_captureRequest && frame->capturedState) {
-        m_captureRequest = 0;
-        applyCapturedState(*frame->capturedState);
-    }
     if (frame->stability && frame->model)
         m_parameters->showStability(*frame->stability, *frame->model);
     // particles too fast for the pair contacts: said once as it starts, not over every later warning
@@ -528,7 +544,7 @@ void MainWindow::frameChanged()
     m_viewport->setSnapshot(frame->snapshot);
     showTimeline(*frame);
     m_plots->addFrame(*frame);
-    if (m_frameAllAfter != 0 && frame->appliedEdit >= m_frameAllAfter) {
+    if (m_frameAllAfter != 0 && frame->appliedMessage >= m_frameAllAfter) {
         m_frameAllAfter = 0;
         m_viewport->frameAll();
     }
@@ -625,7 +641,7 @@ void MainWindow::showAccuracy()
 
 void MainWindow::planAccuracy(double tolerance)
 {
-    // the worker plans from its own state; the answer comes back in a frame
+    // the worker plans from its own state; the answer comes back as a reply
     m_accuracyRequest = m_controller->planAccuracy(tolerance);
     if (m_accuracy)
         m_accuracy->setPlanning(true);
@@ -662,7 +678,7 @@ void MainWindow::setRecording(bool on)
         m_controller->startRecording();
         statusBar()->showMessage(tr("Recording the session; Ctrl+R again to stop and save it"));
     } else {
-        // the worker hands the recording over in a frame
+        // the worker hands the recording over as a reply
         m_recordingRequest = m_controller->stopRecording();
     }
 }
@@ -686,7 +702,7 @@ void MainWindow::saveSessionRecording(const SessionRecording &recording)
 
 void MainWindow::useCurrentStateAsInitial()
 {
-    // the worker copies its state out; the answer comes back in a frame
+    // the worker copies its state out; the answer comes back as a reply
     m_captureRequest = m_controller->captureState();
 }
 

@@ -44,7 +44,10 @@ class Autosave;
 class ParametersPanel;
 class PlotsWidget;
 class RecentFiles;
+struct AccuracyPlanReply;
 struct CapturedState;
+struct CapturedStateReply;
+struct RecordingReply;
 struct SessionRecording;
 class SceneDocument;
 class SimulationController;
@@ -174,6 +177,11 @@ private:
 
     void sceneChanged(SceneChange change);
     void frameChanged();
+    // the replies to this window's requests; a reply to an older request than the one awaited,
+    // or to one dropped since, is ignored
+    void accuracyPlanned(const AccuracyPlanReply &reply);
+    void stateCaptured(const CapturedStateReply &reply);
+    void recordingStopped(const RecordingReply &reply);
     void runningChanged(bool running);
     void showWarning(const QString &message);
     void updateTitle();
@@ -213,8 +221,8 @@ private:
     RecentFiles *m_recentFiles = nullptr;
     Autosave *m_autosave = nullptr;
     Prompts m_prompts{this};
-    std::uint64_t m_captureRequest = 0;
-    std::uint64_t m_recordingRequest = 0;  // the recording awaited from the worker; 0: none  // the captured state awaited from the worker; 0: none
+    std::uint64_t m_captureRequest = 0;    // the captured state awaited from the worker; 0: none
+    std::uint64_t m_recordingRequest = 0;  // the recording awaited from the worker; 0: none
     bool m_pairSpeedWarned = false;      // the latest frame's particles were past the pair speed limit
     Viewport *m_viewport = nullptr;
     EditTools *m_tools = nullptr;

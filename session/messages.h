@@ -1,8 +1,11 @@
 #pragma once
-// Edits: every change the UI makes to the running simulation, as a message that the worker
-// applies between two steps. The UI thread pushes, the worker drains at the start of each tick,
-// so the worker's State is never read or written from the UI thread (MuJoCo's `simulate` applies
-// its pending actions the same way). Qt-free, so the unit tests can drive it directly.
+// Messages: everything the UI asks of the running simulation, applied by the worker between two
+// steps. Edits change the scene or the run (SetSceneEdit, TiltEdit, SteerEdit, GrabEdit; their
+// names say so); the rest control the run (play, pause, step, reset), move through the timeline
+// (scrub, step back) or ask for a one-off answer, which comes back once as a reply (replies.h).
+// The UI thread pushes, the worker drains at the start of each tick, so the worker's State is
+// never read or written from the UI thread (MuJoCo's `simulate` applies its pending actions the
+// same way). Qt-free, so the unit tests can drive it directly.
 
 #include "core/scene.h"
 
@@ -26,19 +29,15 @@ enum class SceneChange {
     InitialConditions,
 };
 
+// the edits: they change the scene or the run
 struct SetSceneEdit {
     std::shared_ptr<const core::SceneDesc> scene;
     SceneChange change = SceneChange::Replace;
 };
-struct PlayEdit {};
-struct PauseEdit {};
-struct StepOnceEdit {};   // one step, then paused
-struct ResetEdit {};      // back to the scene's initial conditions
 struct TiltEdit {
     std::uint64_t seed = 0;  // the same seed gives the same kick
     double speed = 0.0;      // m/s, the largest change of one velocity component
 };
-struct SyncEdit {};       // changes nothing; its frame shows that every earlier edit was applied
 struct SteerEdit {
     int particle = -1;                                // -1: none
     Eigen::Vector3d force = Eigen::Vector3d::Zero();  // N, constant until the next SteerEdit
@@ -49,56 +48,66 @@ struct GrabEdit {
     int particle = -1;
     Eigen::Vector3d target = Eigen::Vector3d::Zero();  // m
 };
+
+// run control
+struct Play {};
+struct Pause {};
+struct StepOnce {};  // one step, then paused
+struct Reset {};     // back to the scene's initial conditions
+struct Sync {};      // changes nothing; its frame shows that every earlier message was applied
+
 // plan the integrator and substeps for a tolerance from the current state (core/accuracy_planner.h);
-// the plan comes back in the frames, tagged with the request's number
-struct PlanAccuracyEdit {
+// the plan comes back as an AccuracyPlanReply, tagged with the request's number
+struct PlanAccuracy {
     double tolerance = 1e-6;    // m, local position error per sub-step
     std::uint64_t request = 0;  // the controller's number for this request
 };
 // copy the current positions and velocities out (captured_state.h) for "Use current state as
-// initial"; they come back in the frames, tagged with the request's number
-struct CaptureStateEdit {
+// initial"; they come back as a CapturedStateReply, tagged with the request's number
+struct CaptureState {
     std::uint64_t request = 0;  // the controller's number for this request
 };
 
-// session recording (session_recording.h): start, and stop handing the recording back in the
-// frames, tagged with the request's number
-struct StartRecordingEdit {};
-struct StopRecordingEdit {
+// session recording (session_recording.h): start, and stop handing the recording back as a
+// RecordingReply, tagged with the request's number
+struct StartRecording {};
+struct StopRecording {
     std::uint64_t request = 0;
 };
+
 // the timeline (timeline.h): show the recorded state of a step (pausing the run), one step back,
 // and the memory the recording may use
-struct ScrubEdit {
+struct Scrub {
     std::uint64_t step = 0;
 };
-struct StepBackEdit {};
-struct TimelineBudgetEdit {
+struct StepBack {};
+struct SetTimelineBudget {
     std::size_t bytes = 0;
 };
-using Edit = std::variant<SetSceneEdit, PlayEdit, PauseEdit, StepOnceEdit, ResetEdit, TiltEdit, SteerEdit, SyncEdit,
-                          PlanAccuracyEdit, GrabEdit, CaptureStateEdit, StartRecordingEdit, StopRecordingEdit,
-                          ScrubEdit, StepBackEdit, TimelineBudgetEdit>;
 
-// a thread-safe first-in first-out queue of edits, numbered in the order they were pushed
-class EditQueue {
+using Message = std::variant<SetSceneEdit, TiltEdit, SteerEdit, GrabEdit, Play, Pause, StepOnce, Reset, Sync,
+                             PlanAccuracy, CaptureState, StartRecording, StopRecording, Scrub, StepBack,
+                             SetTimelineBudget>;
+
+// a thread-safe first-in first-out queue of messages, numbered in the order they were pushed
+class MessageQueue {
 public:
     struct Batch {
-        std::vector<Edit> edits;        // oldest first
-        std::uint64_t lastSequence = 0;  // the number of the newest edit ever drained
+        std::vector<Message> messages;   // oldest first
+        std::uint64_t lastSequence = 0;  // the number of the newest message ever drained
     };
 
-    // returns the edit's sequence number: 1 for the first, then 2, 3, ...
-    std::uint64_t push(Edit edit);
+    // returns the message's sequence number: 1 for the first, then 2, 3, ...
+    std::uint64_t push(Message message);
 
-    // takes every pending edit
+    // takes every pending message
     Batch drain();
 
     bool empty() const;
 
 private:
     mutable std::mutex m_mutex;
-    std::vector<Edit> m_pending;
+    std::vector<Message> m_pending;
     std::uint64_t m_pushed = 0;
 };
 

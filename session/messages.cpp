@@ -1,24 +1,24 @@
-#include "edit_queue.h"
+#include "messages.h"
 
 namespace ui {
 
-std::uint64_t EditQueue::push(Edit edit)
+std::uint64_t MessageQueue::push(Message message)
 {
     std::lock_guard lock(m_mutex);
-    m_pending.push_back(std::move(edit));
+    m_pending.push_back(std::move(message));
     return ++m_pushed;
 }
 
-EditQueue::Batch EditQueue::drain()
+MessageQueue::Batch MessageQueue::drain()
 {
     Batch batch;
     std::lock_guard lock(m_mutex);
-    batch.edits.swap(m_pending);
+    batch.messages.swap(m_pending);
     batch.lastSequence = m_pushed;
     return batch;
 }
 
-bool EditQueue::empty() const
+bool MessageQueue::empty() const
 {
     std::lock_guard lock(m_mutex);
     return m_pending.empty();

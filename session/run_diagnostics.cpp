@@ -1,0 +1,113 @@
+#include "run_diagnostics.h"
+
+#include <chrono>
+#include <utility>
+
+namespace ui {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start)
+{
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+void RunDiagnostics::modelChanged()
+{
+    m_estimateStale = true;
+    m_stabilityStale = true;
+}
+
+void RunDiagnostics::resetCosts()
+{
+    m_stepSeconds = 0.0;
+    m_estimateSeconds = 0.0;
+    m_lastEstimateSeconds = 0.0;
+}
+
+void RunDiagnostics::restarted(const core::Model &model, const core::State &state)
+{
+    m_initialEnergies = core::energies(model, state);
+}
+
+void RunDiagnostics::afterSteps(double seconds, bool blewUp, const std::shared_ptr<const core::Model> &model,
+                                const core::State &state)
+{
+    m_stepSeconds += seconds;
+    m_stepSecondsSinceEstimate += seconds;
+    checkPairSpeed(*model, state);
+
+    // the periodic estimate, of the state these steps ended at: rare enough in wall time, and
+    // only once the steps have paid for it many times over
+    if (!blewUp && (m_estimateStale || (m_wallSinceEstimate >= kEstimateInterval &&
+                                        kEstimateShare * m_stepSecondsSinceEstimate >= m_lastEstimateSeconds)))
+        estimate(true, model, state);
+}
+
+void RunDiagnostics::checkPairSpeed(const core::Model &model, const core::State &state)
+{
+    const std::optional<core::PairSpeedExcess> excess = core::pairSpeedExcess(model, state);
+    m_pairSpeedWarning = excess ? core::explainPairSpeed(*excess) : std::string();
+}
+
+void RunDiagnostics::updateEstimate(const std::shared_ptr<const core::Model> &model, const core::State &state)
+{
+    if (m_estimateStale)
+        estimate(false, model, state);
+}
+
+// counted: made between steps of the run, so part of what the run costs
+void RunDiagnostics::estimate(bool counted, const std::shared_ptr<const core::Model> &model, const core::State &state)
+{
+    m_estimateStale = false;
+    if (!model)
+        return;
+    const auto start = Clock::now();
+    m_localError = m_doubling.estimate(model, state);
+    m_localErrorStep = state.step;
+    const double seconds = secondsSince(start);
+    m_lastEstimateSeconds = seconds;
+    if (counted)
+        m_estimateSeconds += seconds;
+    m_wallSinceEstimate = 0.0;
+    m_stepSecondsSinceEstimate = 0.0;
+}
+
+bool RunDiagnostics::updateStability(const std::shared_ptr<const core::Model> &model, const core::State &state)
+{
+    if (!m_stabilityStale || !model)
+        return false;
+    m_stabilityStale = false;
+    m_stability = core::stabilityLimit(*model, state);
+    return true;
+}
+
+std::optional<std::string> RunDiagnostics::takeBlowupMessage(const core::Model &model, const core::State &state)
+{
+    if (!m_blowup)
+        return std::nullopt;
+    std::optional<core::Blowup> blowup;
+    blowup.swap(m_blowup);
+    // the state is the last good one again: the limit there is the one the steps ran into
+    return core::explainBlowup(model, *blowup, core::stabilityLimit(model, state));
+}
+
+std::shared_ptr<const core::AccuracyPlan> RunDiagnostics::planAccuracy(const std::shared_ptr<const core::Model> &model,
+                                                                       const core::State &state,
+                                                                       const core::Profile &profile, double tolerance)
+{
+    auto plan = std::make_shared<core::AccuracyPlan>();
+    if (model) {
+        double secondsPerEvaluation = core::profiledSecondsPerEvaluation(profile);
+        if (!(secondsPerEvaluation > 0.0))
+            secondsPerEvaluation = core::timedSecondsPerEvaluation(*model, state);
+        *plan = core::planAccuracy(*model, state, tolerance, secondsPerEvaluation);
+    }
+    return plan;
+}
+
+}  // namespace ui

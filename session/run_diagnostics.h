@@ -1,0 +1,102 @@
+#pragma once
+// RunDiagnostics: how well the run goes, worked out beside it on the runner's own model and state,
+// which the runner passes in. The live error estimate: a step-doubling estimate of the local
+// error, refreshed after a change and, while running, at most every kEstimateInterval of wall time
+// and only once the steps since the last estimate took 1 / kEstimateShare times as long as it did,
+// so that the estimates never cost more than that share of the run. The energies at the last
+// reset, from which the drift is measured. The explicit integrators' stability limit for the model
+// as edited, the pair speed warning, the explanation of a blow-up at the last good state, and the
+// accuracy plan asked for. Qt-free.
+
+#include "core/accuracy_planner.h"
+#include "core/diagnostics.h"
+#include "core/error_estimate.h"
+#include "core/model.h"
+#include "core/stability.h"
+#include "core/state.h"
+#include "core/workspace.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace ui {
+
+class RunDiagnostics {
+public:
+    // the live error estimate: at most this often (s of wall time), and at most this share of the
+    // computing time of the steps
+    static constexpr double kEstimateInterval = 0.25;
+    static constexpr double kEstimateShare = 0.05;
+
+    // what changed in the run: the state (estimate again), or the model too (and analyse the
+    // stability limit again)
+    void stateChanged() { m_estimateStale = true; }
+    void modelChanged();
+    // another scene: its costs start afresh
+    void resetCosts();
+    // the run starts again from the scene's initial conditions: the energies the drift is measured from
+    void restarted(const core::Model &model, const core::State &state);
+    // wall time the run was given, while running (s)
+    void addWallTime(double seconds) { m_wallSinceEstimate += seconds; }
+    // a tick's steps took seconds of computing and ended at state (the last good one if they blew
+    // up): the pair speed, then the periodic estimate if they did not blow up
+    void afterSteps(double seconds, bool blewUp, const std::shared_ptr<const core::Model> &model,
+                    const core::State &state);
+    // particles faster than the pair speed limit allows, at state
+    void checkPairSpeed(const core::Model &model, const core::State &state);
+    // estimates the local error now if the model or the state changed since the last estimate
+    void updateEstimate(const std::shared_ptr<const core::Model> &model, const core::State &state);
+    // analyses the stability limit again if the model changed since; true if it did
+    bool updateStability(const std::shared_ptr<const core::Model> &model, const core::State &state);
+    // a blow-up, kept until takeBlowupMessage() explains it at state, the last good one
+    void blewUp(std::optional<core::Blowup> blowup) { m_blowup = std::move(blowup); }
+    std::optional<std::string> takeBlowupMessage(const core::Model &model, const core::State &state);
+    // the integrator and substeps for a tolerance (m per sub-step) at state, with the cost of a
+    // force evaluation as measured in the run (profile), else timed now; an empty plan without a model
+    static std::shared_ptr<const core::AccuracyPlan> planAccuracy(const std::shared_ptr<const core::Model> &model,
+                                                                  const core::State &state,
+                                                                  const core::Profile &profile, double tolerance);
+
+    // the limit of the model as it is now (nullopt before the first scene)
+    const std::optional<core::StabilityLimit> &stability() const { return m_stability; }
+    // particles faster than the pair speed limit allows, as of the latest steps, edit or reset
+    // (empty when within it): core::explainPairSpeed
+    const std::string &pairSpeedWarning() const { return m_pairSpeedWarning; }
+    // the local position error of one sub-step (m) at the state of step localErrorStep(); nullopt
+    // before the first estimate or when a trial blew up
+    std::optional<double> localError() const { return m_localError; }
+    std::uint64_t localErrorStep() const { return m_localErrorStep; }
+    // the energies at the last reset or scene load
+    const core::Energies &initialEnergies() const { return m_initialEnergies; }
+    // computing time (s) since the scene was loaded: of the steps while running, and of the
+    // estimates made between them
+    double stepSeconds() const { return m_stepSeconds; }
+    double estimateSeconds() const { return m_estimateSeconds; }
+    // estimateSeconds() / stepSeconds(), 0 before any step
+    double estimateShare() const { return m_stepSeconds > 0.0 ? m_estimateSeconds / m_stepSeconds : 0.0; }
+
+private:
+    void estimate(bool counted, const std::shared_ptr<const core::Model> &model, const core::State &state);
+
+    std::optional<core::Blowup> m_blowup;
+    std::optional<core::StabilityLimit> m_stability;
+    bool m_stabilityStale = true;  // the model changed since the limit was analysed
+    std::string m_pairSpeedWarning;
+
+    // the live error estimate and what it has cost
+    core::StepDoubling m_doubling;
+    std::optional<double> m_localError;
+    std::uint64_t m_localErrorStep = 0;
+    bool m_estimateStale = true;              // the model or the state changed since
+    double m_wallSinceEstimate = 0.0;         // s of wall time run since the last estimate
+    double m_stepSecondsSinceEstimate = 0.0;  // s of computing spent on steps since then
+    double m_lastEstimateSeconds = 0.0;       // s the last estimate took
+    double m_stepSeconds = 0.0;
+    double m_estimateSeconds = 0.0;
+    core::Energies m_initialEnergies;
+};
+
+}  // namespace ui
