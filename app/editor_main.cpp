@@ -2,6 +2,7 @@
 // one; a file that cannot be opened is reported and the editor opens on the example instead. A
 // session that crashed with unsaved changes is offered back first.
 
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/viewport/viewport.h"
 
@@ -42,7 +43,7 @@ int main(int argc, char *argv[])
     // work a crash left behind is offered first; a scene that cannot be opened is reported (here
     // and in a message), and the example stays open
     QString error;
-    if (!window.start(arguments.isEmpty() ? QString() : arguments.front(), &error))
+    if (!window.files()->start(arguments.isEmpty() ? QString() : arguments.front(), &error))
         std::fprintf(stderr, "springlab: %s\n", qPrintable(error));
     return app.exec();
 }

@@ -13,6 +13,7 @@
 #include "ui/viewport/edit_tools.h"
 #include "ui/dialogs/generate_dialog.h"
 #include "ui/dialogs/generate_preview.h"
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/panels/plots_widget.h"
 #include "ui/document/scene_document.h"
@@ -82,8 +83,8 @@ int windowPicture(ui::MainWindow &window, const QString &scene, int steps, qlong
     window.resize(1400, 860);
     window.show();
     QString error;
-    const bool opened = scene.endsWith(QStringLiteral(".json")) ? window.openScene(scene, &error)
-                                                                  : window.openExample(scene, &error);
+    const bool opened = scene.endsWith(QStringLiteral(".json")) ? window.files()->openScene(scene, &error)
+                                                                : window.files()->openExample(scene, &error);
     if (!opened)
         return fail(error);
     ui::SimulationController &controller = *window.controller();
@@ -131,7 +132,7 @@ int plotsPictures(ui::MainWindow &window, const QString &folder)
     window.resize(1000, 760);
     window.show();
     QString error;
-    if (!window.openExample(QStringLiteral("springs"), &error))
+    if (!window.files()->openExample(QStringLiteral("springs"), &error))
         return fail(error);
     ui::SimulationController &controller = *window.controller();
     if (!settled(controller))

@@ -6,6 +6,7 @@
 //   autosaving_editor SETTINGS_DIR SCENE.json EXPECTED.json
 
 #include "ui/document/autosave.h"
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
@@ -55,7 +56,7 @@ int main(int argc, char *argv[])
     ui::MainWindow window;
     window.show();
     QString error;
-    if (!window.start(QString::fromLocal8Bit(argv[2]), &error)) {
+    if (!window.files()->start(QString::fromLocal8Bit(argv[2]), &error)) {
         std::fprintf(stderr, "autosaving_editor: %s\n", qPrintable(error));
         return 1;
     }
@@ -68,7 +69,7 @@ int main(int argc, char *argv[])
         document.undoStack()->push(
             new ui::SettingsCommand(document, QStringLiteral("viscosity"), QString(), settings));
     }
-    const QString recovery = window.autosave()->recoveryPath();
+    const QString recovery = window.files()->autosave()->recoveryPath();
     if (!waitFor([&] { return QFileInfo::exists(recovery); }, 30000)) {
         std::fprintf(stderr, "autosaving_editor: no recovery file after 30 s\n");
         return 1;

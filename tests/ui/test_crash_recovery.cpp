@@ -5,6 +5,7 @@
 // the killed editor had, after which the old files are gone.
 
 #include "ui/document/autosave.h"
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/document/scene_document.h"
 #include "ui/viewport/viewport.h"
@@ -82,7 +83,7 @@ void TestCrashRecovery::killedEditorIsRecoveredOnTheNextStart()
         });
     };
     QVERIFY2(openEditor({.setup = answerHere, .show = false}), qPrintable(editorFailure()));
-    QVERIFY(m_window->start());
+    QVERIFY(m_window->files()->start());
     QCOMPARE(asked, 1);
     QVERIFY(recoveryThereWhenAsked);
     QVERIFY(QFileInfo::exists(recovery));
@@ -91,14 +92,14 @@ void TestCrashRecovery::killedEditorIsRecoveredOnTheNextStart()
     // Yes: the killed editor's scene, as its file with unsaved changes; the old files go
     answer = QMessageBox::Yes;
     QVERIFY2(openEditor({.setup = answerHere, .show = false}), qPrintable(editorFailure()));
-    QVERIFY(m_window->start());
+    QVERIFY(m_window->files()->start());
     QCOMPARE(asked, 2);
     QVERIFY(recoveryThereWhenAsked);
     QVERIFY(m_window->document()->scene() == *expected.scene);
     QCOMPARE(m_window->document()->filePath(), QFileInfo(scenePath).absoluteFilePath());
     QVERIFY(m_window->document()->isModified());
     QVERIFY(!QFileInfo::exists(recovery));
-    QCOMPARE(ui::Autosave::findRecoveries(m_window->autosave()->directory()).size(), 0);
+    QCOMPARE(ui::Autosave::findRecoveries(m_window->files()->autosave()->directory()).size(), 0);
 }
 
 QTEST_MAIN(TestCrashRecovery)

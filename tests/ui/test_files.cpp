@@ -9,6 +9,7 @@
 
 #include "ui/document/autosave.h"
 #include "ui/dialogs/help_dialog.h"
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/document/recent_files.h"
 #include "ui/document/scene_commands.h"
@@ -252,7 +253,7 @@ void TestFiles::newGivesAnEmptySceneAndClearsTheUndoHistory()
     QCOMPARE(scene.planes.size(), std::size_t(1));
     QVERIFY(scene.planes.front().normal == Eigen::Vector3d(0.0, 1.0, 0.0));
     QCOMPARE(scene.planes.front().offset, 0.0);
-    QVERIFY(scene == ui::MainWindow::newScene());
+    QVERIFY(scene == ui::DocumentFiles::newScene());
     QCOMPARE(document().undoStack()->count(), 0);
     QVERIFY(!m_window->isWindowModified());
     QVERIFY(document().filePath().isEmpty());
@@ -268,7 +269,7 @@ void TestFiles::newGivesAnEmptySceneAndClearsTheUndoHistory()
 void TestFiles::saveAsThenOpenGivesTheSameScene()
 {
     QString error;
-    QVERIFY2(m_window->openExample(QStringLiteral("particles"), &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("particles"), &error), qPrintable(error));
     edit();
     const core::SceneDesc edited = document().scene();
 
@@ -303,7 +304,7 @@ void TestFiles::saveAsThenOpenGivesTheSameScene()
 
 void TestFiles::recentFilesKeepOrderStopAtTenAndForgetMissingOnes()
 {
-    ui::RecentFiles *recent = m_window->recentFiles();
+    ui::RecentFiles *recent = m_window->files()->recentFiles();
     QVERIFY(recent->paths().isEmpty());
     QVERIFY(!m_window->findChild<QMenu *>(QStringLiteral("recentMenu"))->isEnabled());
 
@@ -312,7 +313,7 @@ void TestFiles::recentFilesKeepOrderStopAtTenAndForgetMissingOnes()
     for (int i = 0; i < 12; ++i) {
         paths << QFileInfo(m_files.filePath(QStringLiteral("recent-%1.json").arg(i))).absoluteFilePath();
         QString error;
-        QVERIFY2(m_window->saveTo(paths.back(), &error), qPrintable(error));
+        QVERIFY2(m_window->files()->saveTo(paths.back(), &error), qPrintable(error));
     }
     QStringList expected;
     for (int i = 11; i >= 2; --i)
@@ -348,12 +349,12 @@ void TestFiles::recentFilesKeepOrderStopAtTenAndForgetMissingOnes()
 
     // the list outlives the window, through the settings
     restart();
-    QCOMPARE(m_window->recentFiles()->paths().size(), 9);
-    QCOMPARE(m_window->recentFiles()->paths().front(), paths[8]);
+    QCOMPARE(m_window->files()->recentFiles()->paths().size(), 9);
+    QCOMPARE(m_window->files()->recentFiles()->paths().front(), paths[8]);
 
     // Clear empties it
     action("actionClearRecent")->trigger();
-    QVERIFY(m_window->recentFiles()->paths().isEmpty());
+    QVERIFY(m_window->files()->recentFiles()->paths().isEmpty());
     QVERIFY(!m_window->findChild<QMenu *>(QStringLiteral("recentMenu"))->isEnabled());
 }
 
@@ -361,11 +362,11 @@ void TestFiles::revertReloadsTheSavedFile()
 {
     // an example has no file: nothing to revert to
     QVERIFY(!action("actionRevert")->isEnabled());
-    QVERIFY(!m_window->revert());
+    QVERIFY(!m_window->files()->revert());
 
     const QString path = m_files.filePath(QStringLiteral("revert.json"));
     QString error;
-    QVERIFY2(m_window->saveTo(path, &error), qPrintable(error));
+    QVERIFY2(m_window->files()->saveTo(path, &error), qPrintable(error));
     QVERIFY(action("actionRevert")->isEnabled());
     const core::SceneDesc saved = document().scene();
     edit();
@@ -410,7 +411,7 @@ void TestFiles::corruptFileShowsTheErrorAndKeepsTheDocument()
     QVERIFY(m_window->isWindowModified());
     QCOMPARE(document().undoStack()->count(), 1);
     QVERIFY(document().filePath().isEmpty());
-    QVERIFY(!m_window->recentFiles()->paths().contains(QFileInfo(path).absoluteFilePath()));
+    QVERIFY(!m_window->files()->recentFiles()->paths().contains(QFileInfo(path).absoluteFilePath()));
 }
 
 void TestFiles::saveIntoAReadOnlyFolderFailsAndKeepsTheChanges()
@@ -420,7 +421,7 @@ void TestFiles::saveIntoAReadOnlyFolderFailsAndKeepsTheChanges()
     QVERIFY(QDir().mkpath(folder));
     const QString path = QDir(folder).filePath(QStringLiteral("scene.json"));
     QString error;
-    QVERIFY2(m_window->saveTo(path, &error), qPrintable(error));
+    QVERIFY2(m_window->files()->saveTo(path, &error), qPrintable(error));
     const QByteArray before = readAll(path);
     edit();
     QVERIFY(QFile::setPermissions(folder, QFileDevice::ReadOwner | QFileDevice::ExeOwner));
@@ -457,9 +458,9 @@ void TestFiles::saveOntoAFullDiskFailsAndKeepsTheOldFile()
 {
     // a large scene saved, then changed; the disk then fills: no file may grow past 4 KiB
     QString error;
-    QVERIFY2(m_window->openExample(QStringLiteral("cloth"), &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("cloth"), &error), qPrintable(error));
     const QString path = m_files.filePath(QStringLiteral("full.json"));
-    QVERIFY2(m_window->saveTo(path, &error), qPrintable(error));
+    QVERIFY2(m_window->files()->saveTo(path, &error), qPrintable(error));
     const QByteArray before = readAll(path);
     QVERIFY(before.size() > 4096);
     edit();
@@ -483,7 +484,7 @@ void TestFiles::saveOntoAFullDiskFailsAndKeepsTheOldFile()
 void TestFiles::unsavedChangesAreAskedAbout()
 {
     // a clean document is never asked about
-    QVERIFY(m_window->newDocument());
+    QVERIFY(m_window->files()->newDocument());
     QVERIFY(m_questions.isEmpty());
     edit();
     QVERIFY(m_window->isWindowModified());
@@ -499,7 +500,7 @@ void TestFiles::unsavedChangesAreAskedAbout()
     // New: Save on an untitled scene asks where; cancelling that cancels the New
     m_answer = QMessageBox::Save;
     m_chosenPath.clear();
-    QVERIFY(!m_window->newDocument());
+    QVERIFY(!m_window->files()->newDocument());
     QCOMPARE(m_dialogs.size(), 1);
     QVERIFY(m_window->isWindowModified());
     QCOMPARE(document().undoStack()->count(), 1);
@@ -507,7 +508,7 @@ void TestFiles::unsavedChangesAreAskedAbout()
     // Save with a place to save to: written, then the new scene
     const core::SceneDesc edited = document().scene();
     m_chosenPath = m_files.filePath(QStringLiteral("asked.json"));
-    QVERIFY(m_window->newDocument());
+    QVERIFY(m_window->files()->newDocument());
     const io::LoadResult written = io::loadScene(m_chosenPath);
     QVERIFY2(written.ok(), qPrintable(written.error));
     QVERIFY(*written.scene == edited);
@@ -522,7 +523,7 @@ void TestFiles::unsavedChangesAreAskedAbout()
 
 void TestFiles::autosaveWritesARecoveryFileAndRemovesIt()
 {
-    ui::Autosave *autosave = m_window->autosave();
+    ui::Autosave *autosave = m_window->files()->autosave();
     QCOMPARE(autosave->directory(), m_recoveryDirectory);
     autosave->setIntervalSeconds(1);
     const QString recovery = autosave->recoveryPath();
@@ -531,7 +532,7 @@ void TestFiles::autosaveWritesARecoveryFileAndRemovesIt()
     // a clean document is not autosaved
     const QString path = m_files.filePath(QStringLiteral("autosaved.json"));
     QString error;
-    QVERIFY2(m_window->saveTo(path, &error), qPrintable(error));
+    QVERIFY2(m_window->files()->saveTo(path, &error), qPrintable(error));
     QVERIFY(!QFileInfo::exists(recovery));
 
     // a change is, within the interval, to the recovery file and not the user's
@@ -550,7 +551,7 @@ void TestFiles::autosaveWritesARecoveryFileAndRemovesIt()
     QCOMPARE(ui::Autosave::findRecoveries(m_recoveryDirectory).size(), 0);  // this session is alive
 
     // saving removes it
-    QVERIFY2(m_window->saveTo(path, &error), qPrintable(error));
+    QVERIFY2(m_window->files()->saveTo(path, &error), qPrintable(error));
     QVERIFY(!QFileInfo::exists(recovery));
 
     // so does undoing back to the saved state, and a clean end
@@ -573,21 +574,21 @@ void TestFiles::autosaveIsConfigured()
     closeEditor();
     QSettings().setValue(QStringLiteral("autosave/intervalSeconds"), 45);
     restart();
-    QCOMPARE(m_window->autosave()->intervalSeconds(), 45);
+    QCOMPARE(m_window->files()->autosave()->intervalSeconds(), 45);
     auto *custom = m_window->findChild<QMenu *>(QStringLiteral("autosaveMenu"))->actions().back();
     QVERIFY(custom->isChecked());
     QCOMPARE(custom->data().toInt(), 45);
 
     // and from File › Autosave, which remembers the choice; Off writes nothing
     action("actionAutosave120")->trigger();
-    QCOMPARE(m_window->autosave()->intervalSeconds(), 120);
+    QCOMPARE(m_window->files()->autosave()->intervalSeconds(), 120);
     QCOMPARE(QSettings().value(QStringLiteral("autosave/intervalSeconds")).toInt(), 120);
     action("actionAutosave0")->trigger();
-    QCOMPARE(m_window->autosave()->intervalSeconds(), 0);
+    QCOMPARE(m_window->files()->autosave()->intervalSeconds(), 0);
     QCOMPARE(QSettings().value(QStringLiteral("autosave/intervalSeconds")).toInt(), 0);
     QString error;
-    QVERIFY(m_window->autosave()->saveNow(&error));  // clean: nothing to write
-    QVERIFY(!QFileInfo::exists(m_window->autosave()->recoveryPath()));
+    QVERIFY(m_window->files()->autosave()->saveNow(&error));  // clean: nothing to write
+    QVERIFY(!QFileInfo::exists(m_window->files()->autosave()->recoveryPath()));
 }
 
 void TestFiles::nextStartRecoversACrashedSession()
@@ -595,12 +596,12 @@ void TestFiles::nextStartRecoversACrashedSession()
     // a session edits its file and autosaves
     const QString path = m_files.filePath(QStringLiteral("crashed.json"));
     QString error;
-    QVERIFY2(m_window->saveTo(path, &error), qPrintable(error));
+    QVERIFY2(m_window->files()->saveTo(path, &error), qPrintable(error));
     edit();
     edit();
     const core::SceneDesc unsaved = document().scene();
-    QVERIFY2(m_window->autosave()->saveNow(&error), qPrintable(error));
-    const QString recovery = m_window->autosave()->recoveryPath();
+    QVERIFY2(m_window->files()->autosave()->saveNow(&error), qPrintable(error));
+    const QString recovery = m_window->files()->autosave()->recoveryPath();
     QVERIFY(QFileInfo::exists(recovery));
 
     // its files as a crash leaves them: no live process holds their lock
@@ -617,7 +618,7 @@ void TestFiles::nextStartRecoversACrashedSession()
     // Cancel: kept for another start
     restart();
     m_answer = QMessageBox::Cancel;
-    QVERIFY(m_window->start());
+    QVERIFY(m_window->files()->start());
     QCOMPARE(m_questions.size(), 1);
     QCOMPARE(m_questions.front().icon, QMessageBox::Question);
     QVERIFY2(m_questions.front().text.contains(QStringLiteral("crashed.json")), qPrintable(m_questions.front().text));
@@ -627,20 +628,21 @@ void TestFiles::nextStartRecoversACrashedSession()
     // Yes: the autosaved scene, as the user's file with unsaved changes; the old files go
     restart();
     m_answer = QMessageBox::Yes;
-    QVERIFY(m_window->start(path));
+    QVERIFY(m_window->files()->start(path));
     QVERIFY(document().scene() == unsaved);
     QCOMPARE(document().filePath(), QFileInfo(path).absoluteFilePath());
     QVERIFY(document().isModified());
     QVERIFY(!folder.exists(QStringLiteral("crashed.recovery.json")));
-    QVERIFY(QFileInfo::exists(m_window->autosave()->recoveryPath()));
+    QVERIFY(QFileInfo::exists(m_window->files()->autosave()->recoveryPath()));
     QVERIFY(settledFrame(controller())->scene == document().sharedScene());
 
     // No: thrown away
-    m_window->autosave()->saveNow();
-    QVERIFY(QFile::copy(m_window->autosave()->recoveryPath(), folder.filePath(QStringLiteral("again.recovery.json"))));
+    m_window->files()->autosave()->saveNow();
+    QVERIFY(QFile::copy(m_window->files()->autosave()->recoveryPath(),
+                        folder.filePath(QStringLiteral("again.recovery.json"))));
     restart();
     m_answer = QMessageBox::No;
-    QVERIFY(m_window->start());
+    QVERIFY(m_window->files()->start());
     QCOMPARE(document().displayName(), QStringLiteral("springs"));
     QVERIFY(!document().isModified());
     QVERIFY(ui::Autosave::findRecoveries(m_recoveryDirectory).isEmpty());
@@ -649,9 +651,9 @@ void TestFiles::nextStartRecoversACrashedSession()
 void TestFiles::droppedSceneFileOpens()
 {
     QString error;
-    QVERIFY2(m_window->openExample(QStringLiteral("particles"), &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("particles"), &error), qPrintable(error));
     const core::SceneDesc particles = document().scene();
-    QVERIFY2(m_window->openExample(QStringLiteral("collisions"), &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("collisions"), &error), qPrintable(error));
     const QString path = savedFile(QStringLiteral("dropped.json"), particles);
 
     auto drop = [this](const QString &file) {
@@ -685,17 +687,17 @@ void TestFiles::droppedSceneFileOpens()
     QTRY_COMPARE(document().filePath(), QFileInfo(path).absoluteFilePath());
     QVERIFY(document().scene() == particles);
     QVERIFY(!m_window->isWindowModified());
-    QCOMPARE(m_window->recentFiles()->paths().front(), QFileInfo(path).canonicalFilePath());
+    QCOMPARE(m_window->files()->recentFiles()->paths().front(), QFileInfo(path).canonicalFilePath());
 }
 
 void TestFiles::commandLineFileOpens()
 {
     // a good file opens
     QString error;
-    QVERIFY2(m_window->openExample(QStringLiteral("particles"), &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("particles"), &error), qPrintable(error));
     const QString path = savedFile(QStringLiteral("command-line.json"), document().scene());
     restart();
-    QVERIFY(m_window->start(path, &error));
+    QVERIFY(m_window->files()->start(path, &error));
     QCOMPARE(document().filePath(), QFileInfo(path).absoluteFilePath());
     QCOMPARE(document().displayName(), QStringLiteral("particles"));
     QVERIFY(m_questions.isEmpty());
@@ -704,11 +706,11 @@ void TestFiles::commandLineFileOpens()
     const QString bad = m_files.filePath(QStringLiteral("bad-argument.json"));
     QVERIFY(writeFile(bad, "{\"format\": \"springlab-scene\", \"version\": 1, \"particles\": 3}"));
     restart();
-    QVERIFY(!m_window->start(bad, &error));
+    QVERIFY(!m_window->files()->start(bad, &error));
     QVERIFY2(error.contains(QStringLiteral("bad-argument.json")), qPrintable(error));
     QCOMPARE(m_questions.size(), 1);
     QVERIFY(m_questions.front().text.contains(error));
-    QCOMPARE(document().displayName(), QString::fromLatin1(ui::MainWindow::kDefaultExample));
+    QCOMPARE(document().displayName(), QString::fromLatin1(ui::DocumentFiles::kDefaultExample));
     QVERIFY(document().filePath().isEmpty());
 }
 
@@ -716,7 +718,7 @@ void TestFiles::useCurrentStateAsInitialThenResetAndUndo()
 {
     // two free particles in flight, no contacts: run, pause, capture
     QString error;
-    QVERIFY2(m_window->openExample(QStringLiteral("particles"), &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("particles"), &error), qPrintable(error));
     const core::SceneDesc original = document().scene();
     press(Qt::Key_F4);
     QTRY_VERIFY(controller().frame()->snapshot->time > 0.05);
@@ -818,7 +820,7 @@ void TestFiles::recordedSessionReplaysToTheSameBits()
 {
     // Ctrl+R records while the scene runs and is edited: a tilt, a slider's worth of viscosity
     QString error;
-    QVERIFY2(m_window->openExample(QStringLiteral("cloth"), &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("cloth"), &error), qPrintable(error));
     QVERIFY(settledFrame(controller()));
     if (!controller().isRunning())
         press(Qt::Key_F4);

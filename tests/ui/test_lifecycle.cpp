@@ -5,6 +5,7 @@
 // this is the test for crashes and leaks on the way in and out; SPRINGLAB_LIFECYCLE_CYCLES sets
 // the count (CI's plain build runs 20).
 
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/document/scene_document.h"
 #include "ui/simulation/simulation_controller.h"
@@ -40,7 +41,7 @@ void TestLifecycle::startRunLoadAndCloseWhileRunning()
     const int cycles = qEnvironmentVariableIsSet("SPRINGLAB_LIFECYCLE_CYCLES")
                            ? qEnvironmentVariableIntValue("SPRINGLAB_LIFECYCLE_CYCLES")
                            : 20;
-    const QStringList examples = ui::MainWindow::exampleNames();
+    const QStringList examples = ui::DocumentFiles::exampleNames();
     QVERIFY(examples.size() >= 2);
     for (int cycle = 0; cycle < cycles; ++cycle) {
         const QString first = examples[cycle % examples.size()];
@@ -49,7 +50,7 @@ void TestLifecycle::startRunLoadAndCloseWhileRunning()
         QVERIFY2(openEditor({.size = QSize(640, 480), .activate = false, .settle = false}), qPrintable(editorFailure()));
         ui::MainWindow *window = m_window;
         QString error;
-        QVERIFY2(window->openExample(first, &error), qPrintable(error));
+        QVERIFY2(window->files()->openExample(first, &error), qPrintable(error));
         ui::SimulationController &controller = *window->controller();
         controller.play();
 
@@ -60,7 +61,7 @@ void TestLifecycle::startRunLoadAndCloseWhileRunning()
         QVERIFY(controller.isRunning());
 
         // another scene while it runs, then close while that one runs
-        QVERIFY2(window->openExample(second, &error), qPrintable(error));
+        QVERIFY2(window->files()->openExample(second, &error), qPrintable(error));
         controller.play();
         frame = test::settledFrame(controller, kFrameWaitMs);
         QVERIFY2(frame && frame->scene == window->document()->sharedScene(), qPrintable(second));

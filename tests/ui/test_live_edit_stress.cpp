@@ -8,6 +8,7 @@
 // pass mark, since it depends on the machine.
 
 #include "ui/viewport/edit_tools.h"
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/document/scene_document.h"
 #include "ui/simulation/simulation_controller.h"
@@ -78,7 +79,7 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
     ui::SimulationController &controller = *window.controller();
     ui::Viewport *viewport = window.viewport();
     ui::EditTools *tools = window.editTools();
-    const QStringList examples = ui::MainWindow::exampleNames();
+    const QStringList examples = ui::DocumentFiles::exampleNames();
 
     int frames = 0;
     int torn = 0;
@@ -118,7 +119,7 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
         };
 
         // load, and run
-        timed("load", [&] { QVERIFY2(window.openExample(example, &error), qPrintable(error)); });
+        timed("load", [&] { QVERIFY2(window.files()->openExample(example, &error), qPrintable(error)); });
         controller.play();
         QVERIFY(test::settledFrame(controller));
         for (int i = 0; i < 6; ++i) {
@@ -158,7 +159,7 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
                     timed("undo", [&] { QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier); });
             }
         }
-        timed("save", [&] { QVERIFY2(window.saveTo(m_files.filePath(QStringLiteral("stress.json")), &error), qPrintable(error)); });
+        timed("save", [&] { QVERIFY2(window.files()->saveTo(m_files.filePath(QStringLiteral("stress.json")), &error), qPrintable(error)); });
         ++round;
     }
 

@@ -8,6 +8,7 @@
 
 #include "ui/dialogs/accuracy_dialog.h"
 #include "ui/dialogs/help_dialog.h"
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/panels/parameter_row.h"
 #include "ui/panels/parameters_panel.h"
@@ -276,7 +277,7 @@ void TestMainWindow::blowupPausesAndShowsInTheStatusBar()
 void TestMainWindow::arrowKeysSteerThePoolBall()
 {
     QString error;
-    QVERIFY2(m_window->openExample(QStringLiteral("pool"), &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("pool"), &error), qPrintable(error));
     const core::SceneDesc &scene = m_window->document()->scene();
     QVERIFY2(scene.steerable >= 0, "the pool example names no steerable particle");
     const auto ball = std::size_t(scene.steerable);
@@ -521,13 +522,13 @@ void TestMainWindow::saveWritesTheEditedScene()
     QVERIFY(m_window->isWindowModified());
     const QString path = m_files.filePath(QStringLiteral("saved.json"));
     QString error;
-    QVERIFY2(m_window->saveTo(path, &error), qPrintable(error));
+    QVERIFY2(m_window->files()->saveTo(path, &error), qPrintable(error));
     QVERIFY(!m_window->isWindowModified());
     QCOMPARE(m_window->document()->filePath(), QFileInfo(path).absoluteFilePath());
 
     // opening it again gives the same scene, bit for bit
     const core::SceneDesc saved = m_window->document()->scene();
-    QVERIFY(m_window->openScene(path, &error));
+    QVERIFY(m_window->files()->openScene(path, &error));
     QVERIFY(m_window->document()->scene() == saved);
     QVERIFY(m_window->document()->scene().settings.viscosity > 0.0);
 }
@@ -541,21 +542,21 @@ void TestMainWindow::badFileLeavesTheSceneOpen()
     file.write("{ \"format\": \"springlab-scene\", ");
     file.close();
     QString error;
-    QVERIFY(!m_window->openScene(path, &error));
+    QVERIFY(!m_window->files()->openScene(path, &error));
     QVERIFY2(error.contains(QStringLiteral("broken.json")), qPrintable(error));
     QCOMPARE(m_window->document()->displayName(), QStringLiteral("springs"));
 
-    QVERIFY(!m_window->openScene(m_files.filePath(QStringLiteral("missing.json")), &error));
+    QVERIFY(!m_window->files()->openScene(m_files.filePath(QStringLiteral("missing.json")), &error));
     QVERIFY2(error.contains(QStringLiteral("missing.json")), qPrintable(error));
 }
 
 void TestMainWindow::examplesAreAllListed()
 {
-    const QStringList names = ui::MainWindow::exampleNames();
+    const QStringList names = ui::DocumentFiles::exampleNames();
     QCOMPARE(names.mid(0, 5), (QStringList{"particles", "springs", "collisions", "pool", "cloth"}));
     for (const QString &name : names) {
         QString error;
-        QVERIFY2(m_window->openExample(name, &error), qPrintable(error));
+        QVERIFY2(m_window->files()->openExample(name, &error), qPrintable(error));
         QVERIFY(m_window->windowTitle().startsWith(m_window->document()->displayName()));
         QCOMPARE(settledFrame(controller())->snapshot->particleCount(),
                  int(m_window->document()->scene().particles.size()));

@@ -10,6 +10,7 @@
 // worker caught up, two runs of one seed end in the same scene (reproducibleFromTheSeed); when
 // they do not, the failure names the first event after which they differed.
 
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/document/scene_document.h"
 #include "ui/viewport/viewport.h"
@@ -118,7 +119,7 @@ void TestMonkey::initTestCase()
 {
     QVERIFY(foldersReady());
     // copies of the examples to open: a Save after Open must never write into the source tree
-    for (const QString &example : ui::MainWindow::exampleNames())
+    for (const QString &example : ui::DocumentFiles::exampleNames())
         QVERIFY(QFile::copy(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/%1.json").arg(example),
                             m_files.filePath(example + QStringLiteral(".json"))));
     setAutosave(m_files.filePath(QStringLiteral("recovery")), 0);
@@ -130,7 +131,7 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
     std::mt19937 random(seed);
     const auto below = [&random](int n) { return static_cast<int>(random() % static_cast<std::uint32_t>(n)); };
 
-    const QStringList examples = ui::MainWindow::exampleNames();
+    const QStringList examples = ui::DocumentFiles::exampleNames();
     // questions: any of the offered buttons; file dialogs: an example, a file of our own, or Cancel
     const auto answerAtRandom = [&](ui::MainWindow &window) {
         window.setMessageBoxFunction([&](QMessageBox::Icon, const QString &, const QString &,
@@ -159,7 +160,7 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
     const auto closeAtEnd = qScopeGuard([this] { closeEditor(); });
     ui::MainWindow *window = m_window;
     QString error;
-    if (!window->openExample(example, &error))
+    if (!window->files()->openExample(example, &error))
         return failed(error);
     int edits = 0;
     QObject::connect(window->document(), &ui::SceneDocument::sceneChanged, window, [&edits] { ++edits; });
@@ -298,7 +299,7 @@ void TestMonkey::survivesRandomInput_data()
     QTest::addColumn<QString>("example");
     QTest::addColumn<std::uint32_t>("seed");
     const QByteArray only = qgetenv("SPRINGLAB_MONKEY_SEED");
-    const QStringList examples = ui::MainWindow::exampleNames();
+    const QStringList examples = ui::DocumentFiles::exampleNames();
     for (int i = 0; i < examples.size(); ++i) {
         const std::uint32_t seed = only.isEmpty() ? 1000u + static_cast<std::uint32_t>(i) : only.toUInt();
         QTest::newRow(qPrintable(examples[i])) << examples[i] << seed;

@@ -8,6 +8,7 @@
 // tools/editor_screenshot.)
 
 #include "ui/viewport/edit_tools.h"
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/panels/plot_canvas.h"
 #include "ui/panels/plots_widget.h"
@@ -368,7 +369,7 @@ void TestPlotsWidget::eachPlotOfALongRunGrabsAtItsSize()
 {
     // the springs example, 2.5 s of its energies and of the middle particle's motion
     QString error;
-    QVERIFY2(m_window->openExample(QStringLiteral("springs"), &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("springs"), &error), qPrintable(error));
     QVERIFY(settledFrame(controller()));
     press(Qt::Key_F8);
     QTRY_VERIFY(dock()->isVisible());

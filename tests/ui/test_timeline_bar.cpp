@@ -3,6 +3,7 @@
 // Shift+F6 step back, F6 steps forward through the recording, and play goes on from the step
 // shown; the budget box reaches the worker and the memory figure; the steps springs broke in are
 // drawn as red ticks. Waits are on frames, never fixed sleeps.
+#include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
 #include "ui/panels/plot_series.h"
 #include "ui/panels/plots_widget.h"
@@ -206,7 +207,7 @@ void TestTimelineBar::breaksAreRedTicks()
     const QString path = files.filePath(QStringLiteral("brittle.json"));
     QVERIFY(io::saveScene(path, scene).ok());
     QString error;
-    QVERIFY2(m_window->openScene(path, &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openScene(path, &error), qPrintable(error));
     QVERIFY(settledFrame(controller()));
     const QImage whole = bar().slider()->grab().toImage();
 

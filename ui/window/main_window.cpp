@@ -6,11 +6,11 @@
 #include "ui/viewport/edit_tools.h"
 #include "ui/panels/inspector_panel.h"
 #include "ui/document/autosave.h"
+#include "ui/document/document_files.h"
 #include "ui/dialogs/help_dialog.h"
 #include "ui/document/initial_state_command.h"
 #include "ui/panels/parameters_panel.h"
 #include "ui/panels/plots_widget.h"
-#include "ui/document/recent_files.h"
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
 #include "session/session_file.h"
@@ -19,7 +19,6 @@
 #include "ui/viewport/viewport.h"
 
 #include "core/accuracy_planner.h"
-#include "core/io/scene_file.h"
 
 #include <QAction>
 #include <QApplication>
@@ -48,9 +47,6 @@ namespace ui {
 
 namespace {
 
-// the examples in the handout's order; any others found in the resources follow
-constexpr const char *kExampleOrder[] = {"particles", "springs", "collisions", "pool", "cloth", "tearable-cloth"};
-
 // how long the status bar shows what the accuracy planner picked, ms
 constexpr int kPlanMessageMs = 20000;
 
@@ -67,7 +63,7 @@ QString defaultScreenshotDirectory()
 
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent), m_document(new SceneDocument(this)), m_controller(new SimulationController(this)),
-      m_recentFiles(new RecentFiles(this)), m_viewport(new Viewport(this)),
+      m_viewport(new Viewport(this)),
       m_screenshotDirectory(defaultScreenshotDirectory())
 {
     // the 3D view in the middle; it takes the keyboard focus when clicked
@@ -81,6 +77,11 @@ MainWindow::MainWindow(QWidget *parent)
                               [this] { return m_screenshotDirectory; }, this);
     connect(m_exporter, &Exporter::statusMessage, statusBar(), &QStatusBar::showMessage);
 
+    // File's actions on the document's files, with the same prompts
+    m_files = new DocumentFiles(*m_document, m_prompts, this);
+    connect(m_files, &DocumentFiles::statusMessage, statusBar(), &QStatusBar::showMessage);
+    connect(m_files, &DocumentFiles::warning, this, &MainWindow::showWarning);
+
     createActions();
     createTimeline();  // the view with the timeline under it, in the middle
     createMenus();
@@ -88,7 +89,6 @@ MainWindow::MainWindow(QWidget *parent)
     createEditing();
     createPlotsDock();
     createStatusBar();
-    createAutosave();
     // a scene file dropped anywhere on the window opens
     setAcceptDrops(true);
 
@@ -109,7 +109,7 @@ MainWindow::MainWindow(QWidget *parent)
 
     readSettings();
     QString error;
-    if (!openExample(QString::fromLatin1(kDefaultExample), &error))
+    if (!m_files->openExample(QString::fromLatin1(DocumentFiles::kDefaultExample), &error))
         showWarning(error);
 }
 
@@ -388,18 +388,6 @@ void MainWindow::writeSettings() const
     writeTimelineSettings(settings);
 }
 
-QStringList MainWindow::exampleNames()
-{
-    QStringList found = QDir(QStringLiteral(":/scenes")).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
-    for (QString &name : found)
-        name.chop(5);  // ".json"
-    QStringList ordered;
-    for (const char *name : kExampleOrder)
-        if (found.removeOne(QString::fromLatin1(name)))
-            ordered << QString::fromLatin1(name);
-    return ordered + found;
-}
-
 QString MainWindow::saveScreenshot(QString *error)
 {
     auto fail = [error](const QString &reason) {
@@ -458,15 +446,25 @@ QString MainWindow::statusDrift() const
     return m_driftLabel->text();
 }
 
+void MainWindow::setMessageBoxFunction(MessageBoxFunction function)
+{
+    m_prompts.setMessageBoxFunction(std::move(function));
+}
+
+void MainWindow::setFileDialogFunction(FileDialogFunction function)
+{
+    m_prompts.setFileDialogFunction(std::move(function));
+}
+
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    if (!maybeSave()) {
+    if (!m_files->maybeSave()) {
         event->ignore();
         return;
     }
     writeSettings();
     // a clean end: no recovery file is left for the next start
-    m_autosave->discard();
+    m_files->autosave()->discard();
     // stop the worker before the window goes: nothing may step once the views are gone
     m_controller->shutDown();
     event->accept();
@@ -686,11 +684,11 @@ void MainWindow::setRecording(bool on)
 void MainWindow::saveSessionRecording(const SessionRecording &recording)
 {
     const QString suggested = QDir::home().filePath(m_document->displayName() + QStringLiteral(".replay.json"));
-    const QString path = chooseFile(FileDialogMode::Save, tr("Save session recording"), suggested);
+    const QString path = m_prompts.chooseFile(FileDialogMode::Save, tr("Save session recording"), suggested);
     if (path.isEmpty())
         return;
     if (const QString error = saveRecording(path, recording); !error.isEmpty()) {
-        ask(QMessageBox::Warning, tr("Save session recording"), error);
+        m_prompts.ask(QMessageBox::Warning, tr("Save session recording"), error);
         return;
     }
     statusBar()->showMessage(tr("Saved the recording of %1 steps and %2 edits to %3; springlab-sim --replay runs it")

@@ -1,29 +1,22 @@
 #pragma once
 // MainWindow: the editor. It ties the scene document (the UI thread's SceneDesc and its undo
 // stack) to the simulation controller (the worker thread) and to the views: the 3D viewport, the
-// parameters dock, the plots dock and the status bar. A document change becomes a scene edit for
-// the worker; a frame from the worker goes to the viewport, the plots and the status bar. What
-// touches files (New, Open, Save, Revert, recent files, drops, autosave and recovery) is in
-// main_window_files.cpp, and File › Export (an image of any size, an image sequence and MP4 of the
-// run, a trace) in main_window_export.cpp.
+// parameters dock, the plots dock and the status bar. The document feeds the worker, and a frame
+// from the worker goes to the viewport, the plots and the status bar. The window holds the menus
+// and the wiring; what touches the document's files (New, Open, Save, Revert, recent files,
+// autosave and recovery) is DocumentFiles's, and File › Export is the Exporter's.
 
 #include "ui/dialogs/prompts.h"
 #include "ui/simulation/steering.h"
 
 #include <QMainWindow>
-#include <QMessageBox>
 #include <QString>
-#include <QStringList>
 #include <cstdint>
-#include <functional>
-#include <optional>
 
 class QAction;
-class QActionGroup;
 class QLabel;
 class QMenu;
 class QDockWidget;
-class QMimeData;
 class QToolBar;
 class QSettings;
 class QUndoView;
@@ -36,14 +29,13 @@ struct SceneDesc;
 namespace ui {
 
 class AccuracyDialog;
+class DocumentFiles;
 class EditTools;
 class GenerateDialog;
 class Exporter;
 class InspectorPanel;
-class Autosave;
 class ParametersPanel;
 class PlotsWidget;
-class RecentFiles;
 struct AccuracyPlanReply;
 struct CapturedState;
 struct CapturedStateReply;
@@ -61,9 +53,6 @@ class MainWindow : public QMainWindow {
     Q_OBJECT
 
 public:
-    // the example opened when no scene is given
-    static constexpr const char *kDefaultExample = "springs";
-
     // opens on the default example
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
@@ -76,33 +65,8 @@ public:
     void setMessageBoxFunction(MessageBoxFunction function);
     void setFileDialogFunction(FileDialogFunction function);
 
-    // File › New: an empty scene (newScene()) once unsaved changes are dealt with; false if cancelled
-    bool newDocument();
-    // what File › New opens: no particles, the default settings, a ground plane y = 0
-    static core::SceneDesc newScene();
-
-    // opens a scene file; on failure the current scene stays and error says why
-    bool openScene(const QString &path, QString *error = nullptr);
-    // opens a scene file as File › Open, a recent file or a drop does: asks about unsaved changes
-    // first and shows a failure in a message; false if cancelled or failed
-    bool openFile(const QString &path);
-    // File › Revert: reloads the document's file, after a confirmation if there are changes
-    bool revert();
-    // the start of the editor: offers to recover a crashed session's work, then opens path (the
-    // command line's scene) unless work was recovered; a file that fails is reported in a message
-    // (and error), and the default example stays open
-    bool start(const QString &path = QString(), QString *error = nullptr);
-    // offers the newest recovery file of a crashed session; true if one was recovered
-    bool offerRecovery();
-    // opens a built-in example by name ("springs"), read from ":/scenes/<name>.json"
-    bool openExample(const QString &name, QString *error = nullptr);
-    // the examples built in, in the handout's order
-    static QStringList exampleNames();
-
-    // saves to the document's file, or asks for one; false if not saved
-    bool save();
-    bool saveAs();
-    bool saveTo(const QString &path, QString *error = nullptr);
+    // File's actions on the document's files, the recent files and autosave
+    DocumentFiles *files() const { return m_files; }
 
     // F2: writes the viewport's image as a PNG into the screenshot folder; returns its path, or
     // an empty string and the reason
@@ -113,8 +77,6 @@ public:
     // File › Export (ui/export/exporter.h)
     Exporter *exporter() const { return m_exporter; }
 
-    RecentFiles *recentFiles() const { return m_recentFiles; }
-    Autosave *autosave() const { return m_autosave; }
     QUndoView *undoView() const { return m_undoView; }
 
     // Simulation › Use Current State as Initial: asks the worker for its positions and
@@ -166,7 +128,6 @@ private:
     QAction *addHiddenDock(QDockWidget *dock, Qt::DockWidgetArea area, const char *actionName,
                            const QString &statusTip);
     void createPlotsDock();
-    void createAutosave();
     void createStatusBar();
     // the timeline (main_window_timeline.cpp)
     void createTimeline();
@@ -187,20 +148,9 @@ private:
     void updateTitle();
     void updateSteerActions();
 
-    // files (main_window_files.cpp)
-    bool maybeSave();
-    void openFromDialog();
-    QMessageBox::StandardButton ask(QMessageBox::Icon icon, const QString &title, const QString &text,
-                                    QMessageBox::StandardButtons buttons = QMessageBox::Ok,
-                                    QMessageBox::StandardButton defaultButton = QMessageBox::NoButton);
-    // filter: the file dialog's, by default the scene files
-    QString chooseFile(FileDialogMode mode, const QString &title, const QString &suggestedPath,
-                       const QString &filter = QString());
-    void openRecent(const QString &path);
-    void updateRecentMenu();
+    // the File menu and drops (main_window_files.cpp)
     void updateFileActions();
-    void setAutosaveInterval(int seconds);
-    static QString droppedScenePath(const QMimeData *mime);
+
     void applyCapturedState(const CapturedState &captured);
     void saveSessionRecording(const SessionRecording &recording);
     void exportPlot(PlotExport format);
@@ -218,9 +168,8 @@ private:
 
     SceneDocument *m_document = nullptr;
     SimulationController *m_controller = nullptr;
-    RecentFiles *m_recentFiles = nullptr;
-    Autosave *m_autosave = nullptr;
     Prompts m_prompts{this};
+    DocumentFiles *m_files = nullptr;
     std::uint64_t m_captureRequest = 0;    // the captured state awaited from the worker; 0: none
     std::uint64_t m_recordingRequest = 0;  // the recording awaited from the worker; 0: none
     bool m_pairSpeedWarned = false;      // the latest frame's particles were past the pair speed limit
@@ -255,10 +204,6 @@ private:
     QAction *m_recordAction = nullptr;
     QList<QAction *> m_steerActions;
     QAction *m_revertAction = nullptr;
-    QMenu *m_recentMenu = nullptr;
-    QList<QAction *> m_recentActions;  // File › Open Recent's entries, most recent first
-    QAction *m_clearRecentAction = nullptr;
-    QActionGroup *m_autosaveGroup = nullptr;
     QMenu *m_fileMenu = nullptr;
     QMenu *m_editMenu = nullptr;
     QMenu *m_simulationMenu = nullptr;

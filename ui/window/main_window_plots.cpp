@@ -43,13 +43,13 @@ void MainWindow::exportPlot(PlotExport format)
     const QString suggested = QDir::home().filePath(QStringLiteral("%1-%2.%3")
                                                         .arg(m_document->displayName(), m_plots->suggestedName(),
                                                              png ? QStringLiteral("png") : QStringLiteral("csv")));
-    const QString path = chooseFile(FileDialogMode::Save, title, suggested,
+    const QString path = m_prompts.chooseFile(FileDialogMode::Save, title, suggested,
                                     png ? tr("PNG images (*.png)") : tr("CSV files (*.csv)"));
     if (path.isEmpty())
         return;
     QString error;
     if (!(png ? m_plots->savePng(path, &error) : m_plots->saveCsv(path, &error))) {
-        ask(QMessageBox::Warning, title, error);
+        m_prompts.ask(QMessageBox::Warning, title, error);
         return;
     }
     statusBar()->showMessage(tr("Plot saved to %1").arg(QDir::toNativeSeparators(path)), 5000);
