@@ -1,9 +1,11 @@
 // SimulationController with its real worker thread: play advances time, pause stops it, reset
-// restores the initial state bit for bit, edits reach the worker between steps, a blow-up pauses
-// and is reported, and shutting down while running ends the thread. Waits are on frames (QTRY_*),
-// never fixed sleeps.
+// restores the initial state bit for bit, edits reach the worker between steps, a followed
+// document's scene reaches it as it changes, a blow-up pauses and is reported, and shutting down
+// while running ends the thread. Waits are on frames (QTRY_*), never fixed sleeps.
 
 #include "ui/simulation/simulation_controller.h"
+
+#include "ui/document/scene_document.h"
 
 #include "core/generators.h"
 
@@ -58,6 +60,7 @@ private slots:
     void resetRestoresTheInitialPositionsBitForBit();
     void parameterEditReachesTheWorker();
     void tiltWithTheSameSeedGivesTheSameKick();
+    void followedDocumentReachesTheWorker();
     void blowupPausesAndIsReported();
     void shutDownWhileRunningEndsTheThread();
 };
@@ -159,6 +162,35 @@ void TestSimulationController::tiltWithTheSameSeedGivesTheSameKick()
     QVERIFY(kicked(7) == kicked(7));
     QVERIFY(kicked(7) != kicked(8));
     QVERIFY(kicked(7) != unkicked());
+}
+
+void TestSimulationController::followedDocumentReachesTheWorker()
+{
+    ui::SceneDocument document;
+    ui::SimulationController controller;
+    controller.follow(document);
+    QSignalSpy replaced(&controller, &ui::SimulationController::sceneReplaced);
+
+    // a whole new scene: announced with its message's number, and the frame after it shows it
+    document.replace(*netScene(4e3), QString());
+    QCOMPARE(replaced.count(), 1);
+    const auto sequence = replaced.takeFirst().front().value<std::uint64_t>();
+    const auto opened = frameAfter(controller, sequence);
+    QVERIFY(opened);
+    QVERIFY(opened->scene == document.sharedScene());
+
+    // an edit reaches the worker too, and is no new scene
+    document.modify(
+        [](core::SceneDesc &scene) {
+            for (core::SpringDesc &spring : scene.springs)
+                spring.stiffness = 250.0;
+        },
+        ui::SceneChange::Parameters);
+    QCOMPARE(replaced.count(), 0);
+    const auto edited = frameAfter(controller, controller.sync());
+    QVERIFY(edited);
+    QVERIFY(edited->scene == document.sharedScene());
+    QCOMPARE(edited->model->stiffness[0], 250.0);
 }
 
 void TestSimulationController::blowupPausesAndIsReported()

@@ -3,6 +3,8 @@
 #include "simulation_worker.h"
 #include "thread_handover.h"
 
+#include "ui/document/scene_document.h"
+
 #include <QThread>
 #include <type_traits>
 #include <variant>
@@ -77,11 +79,21 @@ std::uint64_t SimulationController::post(Message message)
     return sequence;
 }
 
+void SimulationController::follow(const SceneDocument &document)
+{
+    // the document's scene is an immutable shared value: sending it costs a pointer
+    connect(&document, &SceneDocument::sceneChanged, this,
+            [this, &document](SceneChange change) { setScene(document.sharedScene(), change); });
+}
+
 std::uint64_t SimulationController::setScene(std::shared_ptr<const core::SceneDesc> scene, SceneChange change)
 {
-    if (change == SceneChange::Replace)
-        setRunning(false);
-    return post(SetSceneEdit{std::move(scene), change});
+    if (change != SceneChange::Replace)
+        return post(SetSceneEdit{std::move(scene), change});
+    setRunning(false);
+    const std::uint64_t sequence = post(SetSceneEdit{std::move(scene), change});
+    emit sceneReplaced(sequence);
+    return sequence;
 }
 
 std::uint64_t SimulationController::play()

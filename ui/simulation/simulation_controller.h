@@ -2,6 +2,7 @@
 // SimulationController: the UI thread's handle on the simulation. It owns the worker thread, the
 // message queue and the frame mailbox. Every request (scene, play, pause, step, reset, tilt, steer)
 // becomes a message that the worker applies between two steps, so none of them ever blocks the UI;
+// the editor's scene comes straight from the document it follows, each change as it is made;
 // frames come back through the latest-wins mailbox and a queued signal, and the answers to one-off
 // requests (a plan, a captured state, a recording) through the reply queue, each announced once
 // by its own signal.
@@ -20,6 +21,7 @@ class QThread;
 
 namespace ui {
 
+class SceneDocument;
 class SimulationWorker;
 
 class SimulationController : public QObject {
@@ -32,7 +34,12 @@ public:
     explicit SimulationController(QObject *parent = nullptr);
     ~SimulationController() override;
 
-    // each returns the message's sequence number; frame()->appliedMessage reaches it once applied
+    // from now on every change of the document's scene is sent to the worker as it is made
+    // (setScene)
+    void follow(const SceneDocument &document);
+
+    // each returns the message's sequence number; frame()->appliedMessage reaches it once applied.
+    // A whole new scene (SceneChange::Replace) is also announced by sceneReplaced().
     std::uint64_t setScene(std::shared_ptr<const core::SceneDesc> scene, SceneChange change);
     std::uint64_t play();
     std::uint64_t pause();
@@ -77,6 +84,9 @@ public:
     QThread *workerThread() const { return m_thread; }
 
 signals:
+    // a whole new scene went to the worker as message `sequence`: the frames before it show the
+    // old scene, those with appliedMessage >= sequence the new one
+    void sceneReplaced(std::uint64_t sequence);
     // a new frame() arrived
     void frameChanged();
     void runningChanged(bool running);

@@ -92,7 +92,12 @@ MainWindow::MainWindow(QWidget *parent)
     // a scene file dropped anywhere on the window opens
     setAcceptDrops(true);
 
-    // the document feeds the worker and the title; the worker feeds the views
+    // the document feeds the worker and the title; the worker feeds the views, and the view is
+    // framed on a new scene once the worker shows it
+    m_controller->follow(*m_document);
+    connect(m_controller, &SimulationController::sceneReplaced, m_plots, &PlotsWidget::startOverAfter);
+    connect(m_controller, &SimulationController::sceneReplaced, this,
+            [this](std::uint64_t sequence) { m_frameAllAfter = sequence; });
     connect(m_document, &SceneDocument::sceneChanged, this, &MainWindow::sceneChanged);
     connect(m_document, &SceneDocument::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
@@ -472,16 +477,14 @@ void MainWindow::closeEvent(QCloseEvent *event)
 
 void MainWindow::sceneChanged(SceneChange change)
 {
+    // the worker has it already (SimulationController::follow)
     const core::SceneDesc &scene = m_document->scene();
-    const std::uint64_t sequence = m_controller->setScene(m_document->sharedScene(), change);
     if (change != SceneChange::Parameters && change != SceneChange::InitialConditions)
         m_viewport->setPlanes(scene.planes);
     if (change == SceneChange::Replace) {
-        // a new scene: fresh steering, no old warning, and a view of all of it once it arrives
+        // a new scene: fresh steering and no old warning
         m_steering = Steering{};
         m_warningLabel->clear();
-        m_frameAllAfter = sequence;
-        m_plots->startOverAfter(sequence);
         // a plan still awaited was made for the old scene: drop it
         if (m_accuracyRequest != 0 && m_accuracy)
             m_accuracy->showPlan(core::AccuracyPlan{}, tr("Another scene was opened; plan again"));
