@@ -1,10 +1,11 @@
 #include "simulation_runner.h"
 
+#include "carry_across_edit.h"
+
 #include "core/state_hash.h"
 
 #include "core/step.h"
 
-#include <algorithm>
 #include <chrono>
 #include <random>
 #include <utility>
@@ -34,15 +35,6 @@ struct Overloaded : Handlers... {
 };
 template <typename... Handlers>
 Overloaded(Handlers...) -> Overloaded<Handlers...>;
-
-// whether two scenes hold the same particles, springs and planes, so that a state of one is a
-// state of the other (they may differ in settings and per-spring values)
-bool sameStructure(const core::SceneDesc &a, const core::SceneDesc &b)
-{
-    return a.particles == b.particles && a.planes == b.planes &&
-           std::equal(a.springs.begin(), a.springs.end(), b.springs.begin(), b.springs.end(),
-                      [](const core::SpringDesc &x, const core::SpringDesc &y) { return x.a == y.a && x.b == y.b; });
-}
 
 // what changes the run: applied while a recorded step is shown, it goes on from that step
 bool changesTheRun(const Message &message)
@@ -178,34 +170,11 @@ void SimulationRunner::resumeFromScrub()
 void SimulationRunner::setScene(const SetSceneEdit &edit)
 {
     const std::shared_ptr<const core::SceneDesc> previous = m_scene;
-    const bool sameCount = previous && edit.scene->particles.size() == previous->particles.size();
     m_scene = edit.scene;
     m_model = core::compileModel(*m_scene);
-    switch (edit.change) {
-    case SceneChange::InitialConditions:
-        // the run goes on as it is; its broken springs follow the spring list
-        if (sameCount) {
-            carryBrokenSprings(*previous);
-            break;
-        }
-        [[fallthrough]];
-    case SceneChange::Parameters:
-        // same particles: the state stays valid as it is, broken springs included
-        if (sameCount) {
-            core::fitSpringBreaks(*m_model, m_state);
-            break;
-        }
-        [[fallthrough]];
-    case SceneChange::Structure:
-        if (previous && m_state.position.cols() == static_cast<Eigen::Index>(previous->particles.size())) {
-            carryMotion(*previous);
-            break;
-        }
-        [[fallthrough]];
-    case SceneChange::Replace:
+    // the run goes on through the edit as far as it can (carry_across_edit.h), else starts afresh
+    if (!carryAcrossEdit(previous.get(), *m_scene, *m_model, edit.change, m_state))
         restart();
-        break;
-    }
     // another scene, or the same one from its start: the recording belongs to the old run
     if (edit.change == SceneChange::Replace || m_state.step == 0)
         m_scrubber.timeline().clear();
@@ -220,96 +189,6 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
     applySteering();
     m_diagnostics.modelChanged();
     m_diagnostics.checkPairSpeed(*m_model, m_state);
-}
-
-// A structural edit while a run is under way keeps the run: a particle the edit left as it was
-// keeps its current motion, one it added or changed (moved, pinned, given a new mass) starts from
-// its description. Edits keep the particles' order, so the old particle each new one continues is
-// found by walking both lists in step: same index when the count is the same, else the next old
-// particle with the same description (a deletion skips old ones, an addition matches none).
-void SimulationRunner::carryMotion(const core::SceneDesc &previous)
-{
-    const auto &before = previous.particles;
-    const auto &after = m_scene->particles;
-    core::State rebuilt = core::makeState(*m_model, *m_scene);
-    std::size_t next = 0;
-    for (std::size_t i = 0; i < after.size(); ++i) {
-        std::size_t from = before.size();
-        if (before.size() == after.size()) {
-            from = before[i] == after[i] ? i : before.size();
-        } else {
-            std::size_t k = next;
-            while (k < before.size() && !(before[k] == after[i]))
-                ++k;
-            if (k < before.size()) {
-                from = k;
-                next = k + 1;
-            }
-        }
-        if (from >= before.size() || after[i].pinned)
-            continue;
-        const auto col = static_cast<Eigen::Index>(i);
-        const auto old = static_cast<Eigen::Index>(from);
-        rebuilt.position.col(col) = m_state.position.col(old);
-        rebuilt.velocity.col(col) = m_state.velocity.col(old);
-    }
-    // springs broken in the run stay broken while the spring list is the same
-    const bool sameSprings =
-        !m_state.springBroken.empty() && rebuilt.springBroken.size() == m_state.springBroken.size() &&
-        std::equal(previous.springs.begin(), previous.springs.end(), m_scene->springs.begin(),
-                   [](const core::SpringDesc &x, const core::SpringDesc &y) { return x.a == y.a && x.b == y.b; });
-    if (sameSprings) {
-        rebuilt.springBroken = m_state.springBroken;
-        rebuilt.breaks = m_state.breaks;
-        core::fitSpringBreaks(*m_model, rebuilt);  // the capacity for every break again
-    }
-    rebuilt.time = m_state.time;
-    rebuilt.step = m_state.step;
-    m_state = std::move(rebuilt);
-}
-
-// The initial conditions became a state of the run with the springs it broke left out of the list
-// (core::storeState), or went back to what they were, with those springs in it again. The list
-// before and after differ by those springs alone, in the same order, so walking both in step
-// pairs each spring with itself: a spring of the shorter list keeps its flag, one the new list
-// left out had broken (its break leaves the log), and one it has again broke in this run.
-void SimulationRunner::carryBrokenSprings(const core::SceneDesc &previous)
-{
-    const auto &before = previous.springs;
-    const auto &after = m_scene->springs;
-    if (before.size() == after.size()) {
-        core::fitSpringBreaks(*m_model, m_state);
-        return;
-    }
-    const bool fewer = after.size() < before.size();
-    const auto &shorter = fewer ? after : before;
-    const auto &longer = fewer ? before : after;
-    std::vector<std::size_t> partner(shorter.size());  // each spring of the shorter list in the longer
-    std::size_t k = 0;
-    for (std::size_t j = 0; j < shorter.size(); ++j) {
-        while (k < longer.size() && !(longer[k] == shorter[j]))
-            ++k;
-        partner[j] = std::min(k, longer.size() - 1);
-        ++k;
-    }
-    std::vector<std::uint8_t> broken(after.size(), fewer ? 0 : 1);
-    std::vector<int> newIndex(before.size(), -1);  // each old spring's index in the new list
-    for (std::size_t j = 0; j < shorter.size(); ++j) {
-        const std::size_t oldIndex = fewer ? partner[j] : j;
-        const std::size_t index = fewer ? j : partner[j];
-        broken[index] = m_state.isBroken(static_cast<int>(oldIndex)) ? 1 : 0;
-        newIndex[oldIndex] = static_cast<int>(index);
-    }
-    std::vector<core::SpringBreak> breaks;
-    for (core::SpringBreak b : m_state.breaks)
-        if (newIndex[static_cast<std::size_t>(b.spring)] >= 0) {
-            b.spring = newIndex[static_cast<std::size_t>(b.spring)];
-            breaks.push_back(b);
-        }
-    const bool any = std::find(broken.begin(), broken.end(), std::uint8_t(1)) != broken.end();
-    m_state.springBroken = any || m_model->plan.springBreaks ? std::move(broken) : std::vector<std::uint8_t>{};
-    m_state.breaks = std::move(breaks);
-    core::fitSpringBreaks(*m_model, m_state);  // the capacity for every break
 }
 
 // the scene's initial conditions, and the energy the drift is measured from

@@ -3,8 +3,9 @@
 // and the State, applies messages between steps (messages.h), and turns wall time into whole steps
 // of the model's time step; a tick that blows up goes back to its last good state. It holds the
 // steering force and the mouse spring, records sessions (session_recording.h) and answers one-off
-// requests with replies (replies.h). It has no thread and no timer of its own: SimulationWorker
-// calls it from its tick, and the unit tests call it directly, one message or one advance at a time.
+// requests with replies (replies.h). An edit of the scene keeps the run going as far as it can
+// (carry_across_edit.h). It has no thread and no timer of its own: SimulationWorker calls it from
+// its tick, and the unit tests call it directly, one message or one advance at a time.
 //
 // Two helpers do the rest, on the runner's model, state and workspace. The Scrubber (scrubber.h)
 // keeps the timeline the run is recorded on as it goes, and shows a recorded step, pausing the run
@@ -98,8 +99,6 @@ public:
 private:
     void setScene(const SetSceneEdit &edit);
     void restart();
-    void carryMotion(const core::SceneDesc &previous);
-    void carryBrokenSprings(const core::SceneDesc &previous);
     void reset();
     void stepOnceMessage();
     void tilt(const TiltEdit &edit);
