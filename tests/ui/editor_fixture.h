@@ -37,20 +37,18 @@ struct EditorOptions {
 // widths through the X server after a window is shown; false if it still changes after 10 s
 inline bool sizeHeld(const QWidget &widget, int holdMs = 200)
 {
-    QElapsedTimer clock, held;
-    clock.start();
+    QElapsedTimer held;
     held.start();
     QSize size = widget.size();
-    while (clock.elapsed() < 10000) {
-        QTest::qWait(20);
-        if (widget.size() != size) {
-            size = widget.size();
-            held.restart();
-        } else if (held.elapsed() >= holdMs) {
-            return true;
-        }
-    }
-    return false;
+    return QTest::qWaitFor(
+        [&] {
+            if (widget.size() != size) {
+                size = widget.size();
+                held.restart();
+            }
+            return held.elapsed() >= holdMs;
+        },
+        10000);
 }
 
 class EditorTest : public QObject {

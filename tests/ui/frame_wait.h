@@ -1,11 +1,11 @@
 #pragma once
 // What the editor's UI tests share: waiting for the worker's frame that includes every edit made
-// so far, and for a window to become active. The waits poll with a deadline, never a fixed sleep.
+// so far, and for a window to become active. The waits are for an outcome, with a deadline (Qt's
+// QTest::qWaitFor), never a fixed sleep.
 
 #include "ui/simulation/simulation_controller.h"
 #include "session/simulation_frame.h"
 
-#include <QElapsedTimer>
 #include <QtTest>
 #include <memory>
 
@@ -15,15 +15,14 @@ namespace test {
 inline std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::SimulationController &controller,
                                                              std::uint64_t sequence, int timeoutMs = 10000)
 {
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < timeoutMs) {
-        const auto frame = controller.frame();
-        if (frame && frame->appliedMessage >= sequence)
-            return frame;
-        QTest::qWait(5);
-    }
-    return nullptr;
+    std::shared_ptr<const ui::SimulationFrame> frame;
+    const bool arrived = QTest::qWaitFor(
+        [&] {
+            frame = controller.frame();
+            return frame && frame->appliedMessage >= sequence;
+        },
+        timeoutMs);
+    return arrived ? frame : nullptr;
 }
 
 // the newest frame once the worker has applied every edit made so far, or null after timeoutMs

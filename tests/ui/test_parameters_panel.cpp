@@ -11,7 +11,6 @@
 #include "core/generators.h"
 
 #include <QAbstractItemView>
-#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QLabel>
@@ -268,15 +267,18 @@ void TestParametersPanel::choosingAnIntegratorIsOneUndoStep()
     QTest::mouseClick(box, Qt::LeftButton);
     QAbstractItemView *list = box->view();
     QTRY_VERIFY(list->isVisible());
-    // The item is hovered, then clicked. On a loaded machine the popup can still drop the first
-    // click (a release in its first moments is taken for the end of the click that opened it, or
-    // the hover has not arrived yet), so the click is repeated until the popup closes.
-    const QPoint item = list->visualRect(list->model()->index(3, 0)).center();
+    // The item is hovered, then clicked once the hover has made it the current one: a move that
+    // far from the click that opened the popup also ends the popup's guard against taking that
+    // click's release for a choice. On a loaded machine the popup can still drop a click, so it
+    // is repeated until the popup closes.
+    const QModelIndex rk4 = list->model()->index(3, 0);
+    const QPoint item = list->visualRect(rk4).center();
     for (int attempt = 0; attempt < 10; ++attempt) {
-        QTest::qWait(QApplication::doubleClickInterval());  // Qt's own window for a dropped release
         QTest::mouseMove(list->viewport(), item);
+        if (!QTest::qWaitFor([list, rk4] { return list->currentIndex() == rk4; }, 1000))
+            continue;
         QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, item);
-        if (QTest::qWaitFor([list] { return !list->isVisible(); }, 200))
+        if (QTest::qWaitFor([list] { return !list->isVisible(); }, 1000))
             break;
     }
     QTRY_VERIFY(!list->isVisible());

@@ -13,7 +13,11 @@
 #include <QThread>
 #include <QtTest>
 
+#include "frame_wait.h"
+
 namespace {
+
+using test::frameAfter;
 
 // the handout's springs net, small enough to step fast
 std::shared_ptr<const core::SceneDesc> netScene(double stiffness = 4e3)
@@ -31,21 +35,6 @@ std::shared_ptr<const core::SceneDesc> explodingScene()
     auto scene = std::make_shared<core::SceneDesc>(*netScene(1e9));
     scene->settings.timeStep = 0.1;
     return scene;
-}
-
-// the newest frame once the worker has applied edit `sequence`
-std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::SimulationController &controller,
-                                                      std::uint64_t sequence)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 10000) {
-        const auto frame = controller.frame();
-        if (frame && frame->appliedMessage >= sequence)
-            return frame;
-        QTest::qWait(5);
-    }
-    return nullptr;
 }
 
 }  // namespace
