@@ -1,7 +1,7 @@
 // springlab-sim: runs a scene with no window (issue 2, docs/scene-format.md).
 //   springlab-sim SCENE.json [--duration SECONDS | --steps N] [--time-step H] [--substeps S]
-//                 [--integrator NAME] [--tolerance TOL] [--output FINAL.json] [--trace TRACE.csv [--every K]]
-//                 [--render DIR [--fps F] [--size WxH]] [--quiet]
+//                 [--integrator NAME] [--tolerance TOL] [--contact-solver NAME] [--output FINAL.json]
+//                 [--trace TRACE.csv [--every K]] [--render DIR [--fps F] [--size WxH]] [--quiet]
 //        springlab-sim --replay SESSION.json [--output FINAL.json] [--quiet]
 // Exit code 0 done, 2 bad file or argument (or --render with no display), 3 the simulation blew up,
 // 4 a replay did not end with the recorded state.
@@ -13,6 +13,7 @@
 #include "core/io/scene_file.h"
 #include "core/io/trace_writer.h"
 #include "core/model.h"
+#include "core/solver_names.h"
 #include "core/state.h"
 #include "core/stability.h"
 #include "core/step.h"
@@ -196,7 +197,9 @@ int main(int argc, char *argv[])
             << ", " << counted(scene.planes.size(), "plane") << '\n';
         out << QString::asprintf("  settings   time step %.9g s, ", scene.settings.timeStep)
             << counted(static_cast<std::size_t>(scene.settings.substeps), "substep") << ", "
-            << QString::fromStdString(std::string(core::integratorName(scene.settings.integrator))) << '\n';
+            << QString::fromStdString(std::string(core::integratorName(scene.settings.integrator))) << ", "
+            << QString::fromStdString(std::string(core::contactSolverName(scene.settings.contactSolver)))
+            << " contacts\n";
         out << QString::asprintf("  ran        %llu of %llu steps%s, %.9g s simulated, in %.3g s wall time",
                                  static_cast<unsigned long long>(state.step), static_cast<unsigned long long>(*steps),
                                  blewUp ? " (stopped: blew up)" : "", state.time, seconds);

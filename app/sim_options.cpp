@@ -1,6 +1,7 @@
 #include "sim_options.h"
 
 #include "core/parameters.h"
+#include "core/solver_names.h"
 #include "core/validate.h"
 
 #include <QCommandLineParser>
@@ -27,6 +28,15 @@ QString knownIntegrators()
     for (core::Integrator integrator : core::kIntegrators)
         names += QString::fromUtf8(core::integratorName(integrator).data(),
                                    static_cast<qsizetype>(core::integratorName(integrator).size()));
+    return names.join(u", "_s);
+}
+
+QString knownContactSolvers()
+{
+    QStringList names;
+    for (core::ContactSolver solver : core::kContactSolvers)
+        names += QString::fromUtf8(core::contactSolverName(solver).data(),
+                                   static_cast<qsizetype>(core::contactSolverName(solver).size()));
     return names.join(u", "_s);
 }
 
@@ -129,7 +139,7 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
     options.replay = parser.isSet(u"replay"_s);
     if (options.replay) {
         for (const QString &name : {u"duration"_s, u"steps"_s, u"time-step"_s, u"substeps"_s, u"integrator"_s,
-                                   u"tolerance"_s, u"trace"_s, u"every"_s, u"render"_s})
+                                   u"tolerance"_s, u"contact-solver"_s, u"trace"_s, u"every"_s, u"render"_s})
             if (parser.isSet(name)) {
                 error = u"--replay runs the recording as it was recorded: --%1 cannot change it"_s.arg(name);
                 return false;
@@ -188,6 +198,15 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
             return false;
         }
     }
+    if (parser.isSet(u"contact-solver"_s)) {
+        const QString name = parser.value(u"contact-solver"_s);
+        options.contactSolver = core::contactSolverFromName(name.toStdString());
+        if (!options.contactSolver) {
+            error = optionError(u"contact-solver"_s, u"unknown contact solver \""_s + name + u"\" (known: "_s +
+                                                         knownContactSolvers() + u")"_s);
+            return false;
+        }
+    }
 
     // what to write
     options.outputPath = parser.value(u"output"_s);
@@ -237,6 +256,7 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
         {u"substeps"_s, u"Sub-steps per step, instead of the file's."_s, u"S"_s},
         {u"integrator"_s, u"Integrator, instead of the file's: "_s + knownIntegrators() + u'.', u"NAME"_s},
         {u"tolerance"_s, u"Local error per step (m, m/s) for adaptive-rk45, instead of the file's."_s, u"TOL"_s},
+        {u"contact-solver"_s, u"Contact solver, instead of the file's: "_s + knownContactSolvers() + u'.', u"NAME"_s},
         {u"output"_s, u"Write the final state as a scene file, to run on from."_s, u"FINAL.json"_s},
         {u"trace"_s, u"Write positions and velocities as CSV: step,time,particle,x,y,z,vx,vy,vz."_s, u"TRACE.csv"_s},
         {u"every"_s, u"With --trace: one set of rows every K steps (default 1), step 0 included."_s, u"K"_s},
@@ -280,6 +300,8 @@ QString applyOverrides(const SimOptions &options, core::SceneDesc &scene)
         settings.integrator = *options.integrator;
     if (options.tolerance)
         settings.tolerance = *options.tolerance;
+    if (options.contactSolver)
+        settings.contactSolver = *options.contactSolver;
 
     // the options were checked one by one; the scene as a whole is checked once more
     if (const auto problem = core::findProblem(scene))

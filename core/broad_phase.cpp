@@ -37,12 +37,12 @@ inline bool overlapping(double xi, double yi, double zi, double ri, double xj, d
     return dx * dx + dy * dy + dz * dz < contact * contact;  // false for NaN
 }
 
-bool overlapping(const Model &model, const Eigen::Matrix3Xd &position, int i, int j)
+bool overlapping(const Model &model, const Eigen::Matrix3Xd &position, const Eigen::VectorXd &radius, int i, int j)
 {
     if (model.invMass[i] == 0.0 && model.invMass[j] == 0.0)
         return false;  // two pinned particles: nothing to resolve
-    return overlapping(position(0, i), position(1, i), position(2, i), model.radius[i], position(0, j),
-                       position(1, j), position(2, j), model.radius[j]);
+    return overlapping(position(0, i), position(1, i), position(2, i), radius[i], position(0, j),
+                       position(1, j), position(2, j), radius[j]);
 }
 
 std::uint64_t packCell(std::uint64_t x, std::uint64_t y, std::uint64_t z)
@@ -92,13 +92,13 @@ std::uint64_t bucketOf(const Layout &layout, std::uint64_t cell)
 }
 
 // radii above this stay out of the grid: twice the 90th percentile of a sample of the radii
-double bigRadius(const Model &model, ContactGrid &grid)
+double bigRadius(const Model &model, const Eigen::VectorXd &radius, ContactGrid &grid)
 {
     const int n = model.particleCount();
     const int stride = std::max(1, n / kSamples);
     grid.radiusSample.clear();
     for (int i = 0; i < n; i += stride)
-        grid.radiusSample.push_back(model.radius[i]);
+        grid.radiusSample.push_back(radius[i]);
     const auto percentile = grid.radiusSample.begin() + std::ptrdiff_t(grid.radiusSample.size() * 9 / 10);
     std::nth_element(grid.radiusSample.begin(), percentile, grid.radiusSample.end());
     return 2.0 * *percentile;
@@ -106,7 +106,8 @@ double bigRadius(const Model &model, ContactGrid &grid)
 
 // sorts the particles into the grid: which are in it, which are big, the layout; false when the
 // grid holds no particle
-bool sortIntoGrid(const Model &model, const Eigen::Matrix3Xd &position, ContactGrid &grid, Layout &layout)
+bool sortIntoGrid(const Model &model, const Eigen::Matrix3Xd &position, const Eigen::VectorXd &radius, ContactGrid &grid,
+                  Layout &layout)
 {
     const int n = model.particleCount();
     grid.slotOf.resize(std::size_t(n));
@@ -114,7 +115,7 @@ bool sortIntoGrid(const Model &model, const Eigen::Matrix3Xd &position, ContactG
     grid.big.clear();
 
     // classify: not finite (in no pair), big (against all), or in the grid; the grid's extent
-    const double big = bigRadius(model, grid);
+    const double big = bigRadius(model, radius, grid);
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
     Eigen::Vector3d hi = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
     double largest = 0.0;
@@ -123,14 +124,14 @@ bool sortIntoGrid(const Model &model, const Eigen::Matrix3Xd &position, ContactG
         const auto x = position.col(i);
         if (!x.allFinite()) {
             grid.slotOf[std::size_t(i)] = kNotFinite;
-        } else if (model.radius[i] > big) {
+        } else if (radius[i] > big) {
             grid.slotOf[std::size_t(i)] = kBig;
             grid.big.push_back(i);
         } else {
             grid.slotOf[std::size_t(i)] = 0;
             lo = lo.cwiseMin(x);
             hi = hi.cwiseMax(x);
-            largest = std::max(largest, model.radius[i]);
+            largest = std::max(largest, radius[i]);
             count += 1;
         }
     }
@@ -209,7 +210,7 @@ bool sortIntoGrid(const Model &model, const Eigen::Matrix3Xd &position, ContactG
         s.x = position(0, i);
         s.y = position(1, i);
         s.z = position(2, i);
-        s.radius = model.radius[i];
+        s.radius = radius[i];
         s.cell = cell;
         s.particle = i;
         s.pinned = model.invMass[i] == 0.0;
@@ -268,7 +269,7 @@ void pairsInGrid(const Layout &layout, ContactGrid &grid)
 }
 
 // the pairs of each big particle with every other particle (with another big one only once)
-void pairsOfBig(const Model &model, const Eigen::Matrix3Xd &position, ContactGrid &grid)
+void pairsOfBig(const Model &model, const Eigen::Matrix3Xd &position, const Eigen::VectorXd &radius, ContactGrid &grid)
 {
     const int n = model.particleCount();
     for (int b : grid.big)
@@ -278,7 +279,7 @@ void pairsOfBig(const Model &model, const Eigen::Matrix3Xd &position, ContactGri
                 continue;
             const int i = std::min(b, j);
             const int k = std::max(b, j);
-            if (overlapping(model, position, i, k))
+            if (overlapping(model, position, radius, i, k))
                 grid.found.push_back({i, k});
         }
 }
@@ -309,15 +310,26 @@ void sortPairs(int n, ContactGrid &grid)
 
 void findContactsBruteForce(const Model &model, const Eigen::Matrix3Xd &position, std::vector<ContactPair> &pairs)
 {
+    findContactsBruteForce(model, position, model.radius, pairs);
+}
+
+void findContactsBruteForce(const Model &model, const Eigen::Matrix3Xd &position, const Eigen::VectorXd &radius,
+                            std::vector<ContactPair> &pairs)
+{
     pairs.clear();
     const int n = model.particleCount();
     for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j)
-            if (overlapping(model, position, i, j))
+            if (overlapping(model, position, radius, i, j))
                 pairs.push_back({i, j});
 }
 
 void findContacts(const Model &model, const Eigen::Matrix3Xd &position, ContactGrid &grid)
+{
+    findContacts(model, position, model.radius, grid);
+}
+
+void findContacts(const Model &model, const Eigen::Matrix3Xd &position, const Eigen::VectorXd &radius, ContactGrid &grid)
 {
     grid.pairs.clear();
     grid.found.clear();
@@ -331,9 +343,9 @@ void findContacts(const Model &model, const Eigen::Matrix3Xd &position, ContactG
     }
 
     Layout layout;
-    if (sortIntoGrid(model, position, grid, layout))
+    if (sortIntoGrid(model, position, radius, grid, layout))
         pairsInGrid(layout, grid);
-    pairsOfBig(model, position, grid);
+    pairsOfBig(model, position, radius, grid);
     sortPairs(n, grid);
 }
 

@@ -13,8 +13,13 @@ namespace core {
 
 // a uniform grid hashed into buckets, O(n) for particles of similar sizes; fills grid.pairs
 void findContacts(const Model &model, const Eigen::Matrix3Xd &position, ContactGrid &grid);
+// the same with other radii than the model's (the contact solver's swept spheres: each particle's
+// path through the sub-step inside a sphere about its midpoint)
+void findContacts(const Model &model, const Eigen::Matrix3Xd &position, const Eigen::VectorXd &radius, ContactGrid &grid);
 
 // every pair tested, O(n²): the reference the grid must match exactly
 void findContactsBruteForce(const Model &model, const Eigen::Matrix3Xd &position, std::vector<ContactPair> &pairs);
+void findContactsBruteForce(const Model &model, const Eigen::Matrix3Xd &position, const Eigen::VectorXd &radius,
+                            std::vector<ContactPair> &pairs);
 
 }  // namespace core

@@ -23,6 +23,9 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
     model->gravity = s.gravity;
     model->viscosity = s.viscosity;
     model->restitution = s.restitution;
+    model->contactSolver = s.contactSolver;
+    model->friction = s.friction;
+    model->staticFriction = s.staticFriction.value_or(s.friction);
 
     // particles, structure of arrays
     const auto n = static_cast<Eigen::Index>(scene.particles.size());
@@ -88,6 +91,7 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
         const PlaneDesc &plane = scene.planes[static_cast<std::size_t>(k)];
         model->planeNormal.col(k) = unitNormal(plane.normal);
         model->planeOffset[k] = plane.offset;
+        model->colliders.push_back(makeCollider(plane, s));
     }
 
     // the step plan: a pass this scene cannot need is never run
@@ -99,6 +103,7 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
     plan.springBreaks = springs > 0 && model->breakStrain.maxCoeff() > 0.0;
     plan.planeCollisions = anythingFree && s.planeCollisions && planes > 0;
     plan.particleCollisions = anythingFree && s.particleCollisions && n >= 2;
+    plan.contactSolver = s.contactSolver == ContactSolver::Iterative && (plan.planeCollisions || plan.particleCollisions);
 
     // the list as the kernels walk it, and the pass it takes
     model->springLayout = makeSpringLayout(SpringList{model->springA, model->springB, model->restLength,

@@ -3,6 +3,7 @@
 // between threads as std::shared_ptr<const Model>. The step plan says which passes this scene
 // needs; a pass the plan leaves out is never run.
 
+#include "colliders.h"
 #include "scene.h"
 #include "spring_layout.h"
 
@@ -27,6 +28,9 @@ struct StepPlan {
     bool planeCollisions = false;     // switched on, a plane, and something free
     bool particleCollisions = false;  // switched on, two particles, one of them free
     bool springBreaks = false;        // a spring with a breaking strain
+    // the contacts go through the iterative solver (contacts.cpp) rather than the handout's passes:
+    // its choice, and a contact pass planned
+    bool contactSolver = false;
     SubStepPath subStep = SubStepPath::Stages;
 
     bool operator==(const StepPlan &) const = default;
@@ -44,6 +48,9 @@ struct Model {
     // m/s: contacts approaching slower than this are inelastic, so that a particle resting under
     // gravity settles instead of hopping (see docs/physics.md); 0 without gravity
     double restingSpeed = 0.0;
+    ContactSolver contactSolver = ContactSolver::Iterative;
+    double friction = 0.0;        // μk of particle pairs
+    double staticFriction = 0.0;  // μs of particle pairs
 
     // particles; a pinned particle has inverse mass 0 (infinite mass)
     Eigen::VectorXd mass;     // kg
@@ -72,6 +79,8 @@ struct Model {
     // planes n·p = offset, unit normals
     Eigen::Matrix3Xd planeNormal;
     Eigen::VectorXd planeOffset;  // m
+    // the same planes as the iterative contact solver reads them: sides, bounds and friction
+    std::vector<Collider> colliders;
 
     StepPlan plan;
 

@@ -40,6 +40,10 @@ constexpr ParameterInfo kTable[] = {
      "Local error per step (m, m/s) the adaptive integrator keeps under", 1e-10, 1e-2},
     {Parameter::BreakStrain, "breakStrain", "Breaking strain", "", 0.0, 1.0e6, false, Scale::Linear, 0.0,
      "Stretch (l - l0) / l0 at which the spring breaks, live; 0 never breaks", 0.0, 2.0},
+    {Parameter::Friction, "friction", "Friction", "", 0.0, 10.0, false, Scale::Linear, 0.0,
+     "Coulomb coefficient: the friction a contact can hold, as a share of the force pressing it", 0.0, 2.0},
+    {Parameter::Extent, "size", "Size", "m", 0.0, 1.0e6, false, Scale::Linear, 0.0,
+     "A side of a rectangle; 0 makes the plane unbounded", 0.0, 20.0},
 };
 
 std::string formatValue(double value, std::string_view unit)

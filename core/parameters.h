@@ -24,8 +24,10 @@ enum class Parameter {
     Speed,       // a velocity component
     Tolerance,   // adaptive-rk45's local error target
     BreakStrain,  // (l - l0) / l0 at which a spring breaks; 0: never
+    Friction,     // a Coulomb coefficient, static or kinetic
+    Extent,       // a side of a rectangle
 };
-inline constexpr int kParameterCount = static_cast<int>(Parameter::BreakStrain) + 1;
+inline constexpr int kParameterCount = static_cast<int>(Parameter::Extent) + 1;
 
 enum class Scale { Linear, Log };
 

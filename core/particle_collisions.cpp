@@ -1,4 +1,5 @@
 #include "broad_phase.h"
+#include "geometry.h"
 #include "passes.h"
 
 #include <cmath>
@@ -6,19 +7,6 @@
 namespace core {
 
 namespace {
-
-// the axis two coincident particles are separated along: a direction on the unit sphere picked
-// from the pair's indices (a Fibonacci spiral of 1024 points), so that a crowd of particles
-// created at one point spreads out in every direction instead of along a single line
-Eigen::Vector3d coincidentAxis(int i, int j)
-{
-    constexpr int kPoints = 1024;
-    const int k = static_cast<int>((static_cast<unsigned>(i) * 7919u + static_cast<unsigned>(j)) % kPoints);
-    const double y = 1.0 - (2.0 * k + 1.0) / kPoints;
-    const double ring = std::sqrt(1.0 - y * y);
-    const double angle = 2.399963229728653 * k;  // the golden angle, rad
-    return Eigen::Vector3d(ring * std::cos(angle), y, ring * std::sin(angle));
-}
 
 // resolves one overlapping pair as the handout does, with inverse masses so that a pinned
 // particle (inverse mass 0) is the immovable side

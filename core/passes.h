@@ -51,8 +51,19 @@ inline double contactRestitution(const Model &model, double normalSpeed)
 // scratch arrays of the state's size, made on first use (a step allocates nothing after that)
 Eigen::Matrix3Xd &scratch(const State &state, Workspace &work, int index);
 
+// the handout's contact passes: a projection and an impulse for each contact, once
 void collidePlanes(const Model &model, State &state, Workspace &work);     // plane_collisions.cpp
 void collideParticles(const Model &model, State &state, Workspace &work);  // particle_collisions.cpp
+
+// the iterative contact solver (contacts.cpp): the positions and velocities at the sub-step's start,
+// kept before the integrator moves them; then, after it, the impacts along the paths and the
+// resting contacts
+void rememberSubStepStart(const Model &model, const State &state, Workspace &work);
+void solveContacts(const Model &model, State &state, Workspace &work);
+void resolveImpacts(const Model &model, State &state, Workspace &work, double h);  // contact_impacts.cpp
+void solveRestingContacts(const Model &model, State &state, Workspace &work, double h);       // contact_solve.cpp
+// m/s: a contact approaching slower than this along its normal is resting, not an impact
+double restingThreshold(const Model &model, const Eigen::Vector3d &normal);
 void breakSprings(const Model &model, State &state, Workspace &work);      // spring_breaks.cpp
 // every position and velocity finite and bounded (only the pinned particles' when freeChecked says
 // the integrator checked the free ones); else records the first culprit in work.blowup

@@ -9,9 +9,22 @@
 namespace core {
 
 // the stages of one sub-step, in the order they run; FusedSubStep stands for the force stages
-// and the integration of a model whose plan fuses them (StepPlan::subStep)
-enum class Stage { Gravity, Drag, Springs, Applied, Integrate, FusedSubStep, PlaneCollisions, ParticleCollisions, Breaks, Check };
-inline constexpr int kStageCount = 10;
+// and the integration of a model whose plan fuses them (StepPlan::subStep); PlaneCollisions and
+// ParticleCollisions are the handout's contact passes, Contacts the iterative solver
+enum class Stage {
+    Gravity,
+    Drag,
+    Springs,
+    Applied,
+    Integrate,
+    FusedSubStep,
+    PlaneCollisions,
+    ParticleCollisions,
+    Contacts,
+    Breaks,
+    Check
+};
+inline constexpr int kStageCount = 11;
 
 struct StageTiming {
     std::uint64_t calls = 0;

@@ -5,10 +5,18 @@
 #include "integrator.h"
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace core {
+
+// how contacts are resolved (docs/physics.md, "Contacts")
+enum class ContactSolver {
+    Iterative,  // the default: impacts located in time along swept paths, then an iterative solve of
+                // the resting contacts with Coulomb friction
+    Handout,    // the course handout's single pass: a projection and an impulse per pair, once
+};
 
 struct Settings {
     double timeStep = 0.01;  // s, one step of the simulation clock
@@ -21,6 +29,11 @@ struct Settings {
     Eigen::Vector3d gravity{0.0, -9.81, 0.0};  // m/s², y is up
     double viscosity = 0.0;                    // kg/s, drag force -c v on every particle
     double restitution = 1.0;                  // 1 elastic .. 0 fully inelastic, for every contact
+    ContactSolver contactSolver = ContactSolver::Iterative;
+    double friction = 0.0;  // kinetic Coulomb coefficient μk of every contact (a plane may override it)
+    // static coefficient μs: a contact sticks while its friction stays within μs times its normal
+    // force; unset, it equals friction
+    std::optional<double> staticFriction{};
     bool planeCollisions = true;
     bool particleCollisions = true;
 
@@ -49,10 +62,23 @@ struct SpringDesc {
     bool operator==(const SpringDesc &) const = default;
 };
 
-// the plane n·p = offset; particles live on the side n points to
+// the plane n·p = offset; particles live on the side n points to, or on both when it is two-sided.
+// With a size it is a rectangle of that plane instead (always two-sided: a thin sheet with edges)
 struct PlaneDesc {
     Eigen::Vector3d normal{0.0, 1.0, 0.0};  // unit length once loaded
     double offset = 0.0;                    // m
+    bool twoSided = false;
+    // this plane's Coulomb coefficient, static and kinetic alike; unset: the settings'
+    std::optional<double> friction{};
+    // m, the rectangle's width along `axis` and height along normal × axis; zero: the whole plane
+    Eigen::Vector2d size = Eigen::Vector2d::Zero();
+    // m, the rectangle's centre is the point of the plane nearest this
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    // the direction of the width, projected onto the plane; zero (or along the normal): the
+    // direction the viewport uses, normal × y (normal × x when the normal is near y)
+    Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+
+    bool bounded() const { return size[0] > 0.0 && size[1] > 0.0; }
 
     bool operator==(const PlaneDesc &) const = default;
 };

@@ -29,6 +29,7 @@ bool step(const Model &model, State &state, Workspace &work)
         // 1 and 2. forces at (x, v) and integration of every free particle, by the path the plan
         // chose when the model was compiled
         bool freeChecked = false;  // whether the update checked the free particles' new values
+        rememberSubStepStart(model, state, work);  // the contact solver's paths start here
         switch (plan.subStep) {
         case SubStepPath::FusedLattice:
             // the Euler schemes on a lattice: every force pass and the update fused, a block of
@@ -43,12 +44,17 @@ bool step(const Model &model, State &state, Workspace &work)
             break;
         }
 
-        // 3. contacts as projections: particles against planes, then pairs (they move particles
-        // after the integrator's check)
+        // 3. contacts (they move particles after the integrator's check): the iterative solver, or
+        // the handout's projections, particles against planes, then pairs
         if (plan.planeCollisions || plan.particleCollisions)
             freeChecked = false;
-        timed(profile, Stage::PlaneCollisions, plan.planeCollisions, [&] { collidePlanes(model, state, work); });
-        timed(profile, Stage::ParticleCollisions, plan.particleCollisions, [&] { collideParticles(model, state, work); });
+        if (plan.contactSolver) {
+            timed(profile, Stage::Contacts, true, [&] { solveContacts(model, state, work); });
+        } else {
+            timed(profile, Stage::PlaneCollisions, plan.planeCollisions, [&] { collidePlanes(model, state, work); });
+            timed(profile, Stage::ParticleCollisions, plan.particleCollisions,
+                  [&] { collideParticles(model, state, work); });
+        }
 
         // springs stretched past their breaking strain break, for good
         timed(profile, Stage::Breaks, plan.springBreaks, [&] { breakSprings(model, state, work); });

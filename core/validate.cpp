@@ -54,7 +54,9 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
         !check(Parameter::Tolerance, s.tolerance, "settings.tolerance", problem) ||
         !checkVector(Parameter::Gravity, s.gravity, "settings.gravity", problem) ||
         !check(Parameter::Viscosity, s.viscosity, "settings.viscosity", problem) ||
-        !check(Parameter::Restitution, s.restitution, "settings.restitution", problem))
+        !check(Parameter::Restitution, s.restitution, "settings.restitution", problem) ||
+        !check(Parameter::Friction, s.friction, "settings.friction", problem) ||
+        (s.staticFriction && !check(Parameter::Friction, *s.staticFriction, "settings.staticFriction", problem)))
         return problem;
 
     // particles
@@ -100,6 +102,15 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
             return problem;
         if (!(plane.normal.squaredNorm() > 1e-24))
             return SceneProblem{indexed("planes", i, "normal"), "is zero: a plane needs a direction"};
+        if ((plane.friction && !check(Parameter::Friction, *plane.friction, indexed("planes", i, "friction"), problem)) ||
+            !check(Parameter::Extent, plane.size[0], indexed("planes", i, "size") + "[0]", problem) ||
+            !check(Parameter::Extent, plane.size[1], indexed("planes", i, "size") + "[1]", problem) ||
+            !checkVector(Parameter::Coordinate, plane.centre, indexed("planes", i, "centre"), problem) ||
+            !checkVector(Parameter::Coordinate, plane.axis, indexed("planes", i, "axis"), problem))
+            return problem;
+        if ((plane.size[0] > 0.0) != (plane.size[1] > 0.0))
+            return SceneProblem{indexed("planes", i, "size"),
+                                "needs both sides greater than 0 m for a rectangle, or both 0 for the whole plane"};
     }
     // the particle the arrow keys push
     if (scene.steerable < -1 || scene.steerable >= count)

@@ -5,6 +5,7 @@
 // and reused, so that a step allocates nothing after the first.
 
 #include "contact_grid.h"
+#include "contact_scratch.h"
 #include "blowup.h"
 #include "profile.h"
 
@@ -26,6 +27,7 @@ struct Workspace {
     // block's forces (made again when the thread count changes)
     std::vector<double> blockScratch;
     ContactGrid contacts;  // the particle-pair pass's grid and pairs (broad_phase.cpp)
+    ContactScratch contactSolver;  // the iterative contact solver's (contacts.cpp)
 
     Profile profile;
     // set by the step that stopped being finite or bounded; step() refuses to go on until it is

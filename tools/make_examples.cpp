@@ -5,6 +5,7 @@
 #include "core/validate.h"
 
 #include <QDir>
+#include <cmath>
 #include <cstdio>
 
 namespace {
@@ -51,20 +52,86 @@ core::SceneDesc collisionsScene()
     return scene;
 }
 
-// the handout's pool: a 10 × 10 table with four walls and two balls; the first is steered with
-// the arrow keys; the medium's drag stands for the cloth of the table
+// the handout's pool: a 10 × 10 table with four cushions and two balls; the first is steered with
+// the arrow keys (two presses overcome the felt). The felt is the floor's friction, μ = 0.2: a ball
+// slides to a stop within a second or two instead of coasting forever; the cushions have none
 core::SceneDesc poolScene()
 {
     core::SceneDesc scene;
     scene.name = "pool";
-    scene.settings.viscosity = 0.9;
     scene.settings.restitution = 0.9;
     scene.particles = {ParticleDesc{Vector3d(-2.0, 0.5, 0.0), Vector3d::Zero(), 1.0, 0.5, false},
                        ParticleDesc{Vector3d(2.0, 0.5, 0.5), Vector3d::Zero(), 1.0, 0.5, false}};
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}, PlaneDesc{Vector3d(1.0, 0.0, 0.0), -5.0},
-                    PlaneDesc{Vector3d(-1.0, 0.0, 0.0), -5.0}, PlaneDesc{Vector3d(0.0, 0.0, 1.0), -5.0},
-                    PlaneDesc{Vector3d(0.0, 0.0, -1.0), -5.0}};
+    PlaneDesc felt{Vector3d(0.0, 1.0, 0.0), 0.0};
+    felt.friction = 0.2;
+    scene.planes = {felt, PlaneDesc{Vector3d(1.0, 0.0, 0.0), -5.0}, PlaneDesc{Vector3d(-1.0, 0.0, 0.0), -5.0},
+                    PlaneDesc{Vector3d(0.0, 0.0, 1.0), -5.0}, PlaneDesc{Vector3d(0.0, 0.0, -1.0), -5.0}};
+    for (std::size_t k = 1; k < scene.planes.size(); ++k)
+        scene.planes[k].friction = 0.0;
     scene.steerable = 0;
+    return scene;
+}
+
+// a granular heap: 400 grains (μ = 0.5, e = 0.2) poured from a narrow column onto an open floor
+// pile into a cone at their angle of repose
+core::SceneDesc heapScene()
+{
+    core::SceneDesc scene;
+    scene.name = "heap";
+    scene.settings.substeps = 2;
+    scene.settings.restitution = 0.2;
+    scene.settings.friction = 0.5;
+    constexpr double r = 0.05;  // m
+    for (int k = 0; k < 400; ++k) {
+        // a 4 × 4 column, each layer turned a little so that the grains do not land on each other's tops
+        const double turn = 0.7 * k / 16;
+        const double u = 0.11 * (k % 4 - 1.5), w = 0.11 * ((k / 4) % 4 - 1.5);
+        const Vector3d at(u * std::cos(turn) - w * std::sin(turn), 0.2 + 0.11 * (k / 16), u * std::sin(turn) + w * std::cos(turn));
+        scene.particles.push_back(ParticleDesc{at, Vector3d::Zero(), 0.05, r, false});
+    }
+    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    return scene;
+}
+
+// stacks that stand: a column of 12 balls and a pyramid on a base of 10 in one plane, μ = 0.5; with
+// settings.contactSolver "handout" both collapse
+core::SceneDesc stackScene()
+{
+    core::SceneDesc scene;
+    scene.name = "stack";
+    scene.settings.restitution = 0.5;
+    scene.settings.friction = 0.5;
+    constexpr double r = 0.1;  // m
+    for (int i = 0; i < 12; ++i)
+        scene.particles.push_back(ParticleDesc{Vector3d(-1.5, r + 2 * r * i, 0.0), Vector3d::Zero(), 1.0, r, false});
+    for (int row = 0; row < 10; ++row)
+        for (int i = 0; i < 10 - row; ++i)
+            scene.particles.push_back(ParticleDesc{Vector3d((2 * i + row) * r - 0.3, r + row * std::sqrt(3.0) * r, 0.0),
+                                                   Vector3d::Zero(), 1.0, r, false});
+    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    return scene;
+}
+
+// a cloth laid on a table (a 1 m square rectangle at 0.8 m, μ = 0.2) with a third of it over the
+// edge: the hanging part drags the rest off, and the sheet falls to the floor
+core::SceneDesc clothOnTableScene()
+{
+    core::ClothOptions options;
+    options.rows = 24;
+    options.cols = 24;
+    options.spacing = 0.05;
+    options.height = 0.8 + options.radius;
+    options.pinCorners = false;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.name = "cloth-on-table";
+    scene.settings.particleCollisions = false;  // no self contacts: the sheet does not fold onto itself here
+    scene.settings.restitution = 0.0;
+    PlaneDesc table{Vector3d(0.0, 1.0, 0.0), 0.8};
+    table.size = Eigen::Vector2d(1.0, 1.0);
+    table.centre = Vector3d(0.8, 0.8, 0.0);
+    table.axis = Vector3d(1.0, 0.0, 0.0);
+    table.friction = 0.2;
+    scene.planes = {table, PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
     return scene;
 }
 
@@ -111,7 +178,8 @@ int main(int argc, char **argv)
     }
     const QDir dir(QString::fromLocal8Bit(argv[1]));
     for (const core::SceneDesc &scene :
-         {particlesScene(), springsScene(), collisionsScene(), poolScene(), clothScene(), tearableClothScene()}) {
+         {particlesScene(), springsScene(), collisionsScene(), poolScene(), clothScene(), tearableClothScene(),
+          heapScene(), stackScene(), clothOnTableScene()}) {
         if (auto problem = core::findProblem(scene)) {
             std::fprintf(stderr, "%s: %s: %s\n", scene.name.c_str(), problem->path.c_str(), problem->message.c_str());
             return 1;

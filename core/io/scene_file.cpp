@@ -14,6 +14,7 @@
 
 #include "json_scan.h"
 
+#include "core/solver_names.h"
 #include "core/validate.h"
 
 #include <QDir>
@@ -76,6 +77,16 @@ QString knownIntegrators()
     QStringList names;
     for (core::Integrator integrator : core::kIntegrators) {
         const std::string_view name = core::integratorName(integrator);
+        names += QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+    }
+    return names.join(QStringLiteral(", "));
+}
+
+QString knownContactSolvers()
+{
+    QStringList names;
+    for (core::ContactSolver solver : core::kContactSolvers) {
+        const std::string_view name = core::contactSolverName(solver);
         names += QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
     }
     return names.join(QStringLiteral(", "));
@@ -181,6 +192,19 @@ private:
         return true;
     }
 
+    bool read(const QJsonValue &value, const QString &path, Eigen::Vector2d &out)
+    {
+        if (!value.isArray())
+            return expected(path, QStringLiteral("an array of 2 numbers"), value);
+        const QJsonArray array = value.toArray();
+        if (array.size() != 2)
+            return fail(path, u"expected an array of 2 numbers, got "_s + QString::number(array.size()));
+        for (int axis = 0; axis < 2; ++axis)
+            if (!read(array[axis], elementPath(path, axis), out[axis]))
+                return false;
+        return true;
+    }
+
     bool read(const QJsonValue &value, const QString &path, QJsonObject &out)
     {
         if (!value.isObject())
@@ -261,6 +285,10 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
         return false;
     const std::string_view defaultName = core::integratorName(settings.integrator);
     QString integrator = QString::fromUtf8(defaultName.data(), static_cast<qsizetype>(defaultName.size()));
+    const std::string_view defaultSolver = core::contactSolverName(settings.contactSolver);
+    QString contactSolver = QString::fromUtf8(defaultSolver.data(), static_cast<qsizetype>(defaultSolver.size()));
+    double staticFriction = 0.0;
+    bool hasStaticFriction = false;
     if (!member(object, path, QLatin1String("timeStep"), Need::Optional, settings.timeStep) ||
         !member(object, path, QLatin1String("substeps"), Need::Optional, settings.substeps) ||
         !member(object, path, QLatin1String("autoSubsteps"), Need::Optional, settings.autoSubsteps) ||
@@ -269,6 +297,9 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
         !member(object, path, QLatin1String("gravity"), Need::Optional, settings.gravity) ||
         !member(object, path, QLatin1String("viscosity"), Need::Optional, settings.viscosity) ||
         !member(object, path, QLatin1String("restitution"), Need::Optional, settings.restitution) ||
+        !member(object, path, QLatin1String("contactSolver"), Need::Optional, contactSolver) ||
+        !member(object, path, QLatin1String("friction"), Need::Optional, settings.friction) ||
+        !member(object, path, QLatin1String("staticFriction"), Need::Optional, staticFriction, &hasStaticFriction) ||
         !member(object, path, QLatin1String("planeCollisions"), Need::Optional, settings.planeCollisions) ||
         !member(object, path, QLatin1String("particleCollisions"), Need::Optional, settings.particleCollisions))
         return false;
@@ -280,10 +311,20 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
                     u"unknown integrator \""_s + integrator + u"\" (known: "_s + knownIntegrators() + u")"_s);
     settings.integrator = *chosen;
 
+    // the contact solver by name; the static coefficient only when given (else it follows friction)
+    const auto solver = core::contactSolverFromName(contactSolver.toStdString());
+    if (!solver)
+        return fail(QStringLiteral("settings.contactSolver"), u"unknown contact solver \""_s + contactSolver +
+                                                                  u"\" (known: "_s + knownContactSolvers() + u")"_s);
+    settings.contactSolver = *solver;
+    if (hasStaticFriction)
+        settings.staticFriction = staticFriction;
+
     warnUnknownKeys(object, path,
                     {QLatin1String("timeStep"), QLatin1String("substeps"), QLatin1String("autoSubsteps"),
                      QLatin1String("integrator"),
                      QLatin1String("tolerance"), QLatin1String("gravity"), QLatin1String("viscosity"), QLatin1String("restitution"),
+                     QLatin1String("contactSolver"), QLatin1String("friction"), QLatin1String("staticFriction"),
                      QLatin1String("planeCollisions"), QLatin1String("particleCollisions")});
     return true;
 }
@@ -366,11 +407,24 @@ bool Reader::readPlanes(const QJsonObject &root, std::vector<core::PlaneDesc> &p
         const QString path = elementPath(QStringLiteral("planes"), i);
         core::PlaneDesc &plane = planes[static_cast<std::size_t>(i)];
         QJsonObject object;
+        double friction = 0.0;
+        bool hasFriction = false;
         if (!read(array[i], path, object) ||
             !member(object, path, QLatin1String("normal"), Need::Required, plane.normal) ||
-            !member(object, path, QLatin1String("offset"), Need::Required, plane.offset))
+            !member(object, path, QLatin1String("offset"), Need::Required, plane.offset) ||
+            !member(object, path, QLatin1String("twoSided"), Need::Optional, plane.twoSided) ||
+            !member(object, path, QLatin1String("friction"), Need::Optional, friction, &hasFriction) ||
+            !member(object, path, QLatin1String("size"), Need::Optional, plane.size) ||
+            !member(object, path, QLatin1String("centre"), Need::Optional, plane.centre) ||
+            !member(object, path, QLatin1String("axis"), Need::Optional, plane.axis))
             return false;
-        warnUnknownKeys(object, path, {QLatin1String("normal"), QLatin1String("offset")});
+        // a plane without friction of its own takes the settings'
+        if (hasFriction)
+            plane.friction = friction;
+        warnUnknownKeys(object, path,
+                        {QLatin1String("normal"), QLatin1String("offset"), QLatin1String("twoSided"),
+                         QLatin1String("friction"), QLatin1String("size"), QLatin1String("centre"),
+                         QLatin1String("axis")});
     }
     return true;
 }
@@ -539,6 +593,42 @@ void appendVector(QByteArray &out, const Eigen::Vector3d &v)
     out += '[' + formatNumber(v.x()) + ", " + formatNumber(v.y()) + ", " + formatNumber(v.z()) + ']';
 }
 
+// every component a positive zero, bit for bit: the value a key left out reads back as
+template <typename Vector>
+bool isPositiveZero(const Vector &v)
+{
+    for (Eigen::Index k = 0; k < v.size(); ++k)
+        if (v[k] != 0.0 || std::signbit(v[k]))
+            return false;
+    return true;
+}
+
+// a plane: its normal and offset, then only what differs from an unbounded one-sided plane with
+// the settings' friction, so that files of plain planes read and write as before; a rectangle
+// writes its size, centre and axis whatever they are
+void appendPlane(QByteArray &out, const core::PlaneDesc &plane)
+{
+    out += "{\"normal\": ";
+    appendVector(out, plane.normal);
+    out += ", \"offset\": " + formatNumber(plane.offset);
+    if (plane.twoSided)
+        out += ", \"twoSided\": true";
+    if (plane.friction)
+        out += ", \"friction\": " + formatNumber(*plane.friction);
+    const bool bounded = plane.bounded();
+    if (bounded || !isPositiveZero(plane.size))
+        out += ", \"size\": [" + formatNumber(plane.size[0]) + ", " + formatNumber(plane.size[1]) + ']';
+    if (bounded || !isPositiveZero(plane.centre)) {
+        out += ", \"centre\": ";
+        appendVector(out, plane.centre);
+    }
+    if (bounded || !isPositiveZero(plane.axis)) {
+        out += ", \"axis\": ";
+        appendVector(out, plane.axis);
+    }
+    out += '}';
+}
+
 // a JSON string: quotes, backslashes and control characters escaped, UTF-8 kept as it is
 void appendString(QByteArray &out, std::string_view text)
 {
@@ -694,6 +784,12 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
     appendVector(out, s.gravity);
     out += ",\n        \"viscosity\": " + formatNumber(s.viscosity) + ",\n";
     out += "        \"restitution\": " + formatNumber(s.restitution) + ",\n";
+    out += "        \"contactSolver\": ";
+    appendString(out, core::contactSolverName(s.contactSolver));
+    out += ",\n        \"friction\": " + formatNumber(s.friction) + ",\n";
+    // only when set: unset, the static coefficient follows friction
+    if (s.staticFriction)
+        out += "        \"staticFriction\": " + formatNumber(*s.staticFriction) + ",\n";
     out += "        \"planeCollisions\": " + flag(s.planeCollisions) + ",\n";
     out += "        \"particleCollisions\": " + flag(s.particleCollisions) + "\n    },\n";
 
@@ -716,11 +812,7 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
             out += ", \"breakStrain\": " + formatNumber(spring.breakStrain);
         out += '}';
     });
-    appendList(out, "planes", scene.planes, true, [&](const core::PlaneDesc &plane) {
-        out += "{\"normal\": ";
-        appendVector(out, plane.normal);
-        out += ", \"offset\": " + formatNumber(plane.offset) + '}';
-    });
+    appendList(out, "planes", scene.planes, true, [&](const core::PlaneDesc &plane) { appendPlane(out, plane); });
     // the particle the arrow keys push, only in scenes that have one
     if (scene.steerable >= 0) {
         out.chop(1);  // the newline after the planes' closing bracket

@@ -165,6 +165,9 @@ void TestSimCli::exitCodes_data()
     QTest::newRow("unknown integrator") << QStringList{u"@/scene.json"_s, u"--integrator"_s, u"rk9"_s} << 2
                                         << QStringList{u"--integrator: unknown integrator \"rk9\""_s,
                                                        u"symplectic-euler"_s};
+    QTest::newRow("unknown contact solver")
+        << QStringList{u"@/scene.json"_s, u"--contact-solver"_s, u"pbd"_s} << 2
+        << QStringList{u"--contact-solver: unknown contact solver \"pbd\" (known: iterative, handout)"_s};
     QTest::newRow("negative steps") << QStringList{u"@/scene.json"_s, u"--steps"_s, u"-4"_s} << 2
                                     << QStringList{u"--steps:"_s};
     QTest::newRow("steps and duration") << QStringList{u"@/scene.json"_s, u"--steps"_s, u"4"_s, u"--duration"_s, u"1"_s}
@@ -318,13 +321,15 @@ void TestSimCli::overridesReachTheOutput()
     // the command line's settings win over the file's, and the final state keeps them
     const QString output = path(u"overridden.json"_s);
     const Run run = sim({path(u"scene.json"_s), u"--steps"_s, u"10"_s, u"--time-step"_s, u"0.002"_s, u"--substeps"_s,
-                         u"3"_s, u"--integrator"_s, u"explicit-euler"_s, u"--output"_s, output, u"--quiet"_s});
+                         u"3"_s, u"--integrator"_s, u"explicit-euler"_s, u"--contact-solver"_s, u"handout"_s,
+                         u"--output"_s, output, u"--quiet"_s});
     QVERIFY2(run.exitCode == 0, run.err.constData());
     const io::LoadResult result = io::loadScene(output);
     QVERIFY2(result.ok(), qPrintable(result.error));
     QCOMPARE(result.scene->settings.timeStep, 0.002);
     QCOMPARE(result.scene->settings.substeps, 3);
     QVERIFY(result.scene->settings.integrator == core::Integrator::ExplicitEuler);
+    QVERIFY(result.scene->settings.contactSolver == core::ContactSolver::Handout);
     QCOMPARE(result.scene->settings.viscosity, testScene().settings.viscosity);
     QVERIFY(result.scene->particles[1].position != testScene().particles[1].position);
 }

@@ -37,13 +37,17 @@ void TestStep::skippedPassesNeverRun_data()
     QTest::addColumn<bool>("springs");
     QTest::addColumn<bool>("planes");
     QTest::addColumn<bool>("pairs");
-    QTest::newRow("nothing") << false << false << false << false << false;
-    QTest::newRow("gravity only") << true << false << false << false << false;
-    QTest::newRow("drag only") << false << true << false << false << false;
-    QTest::newRow("springs only") << false << false << true << false << false;
-    QTest::newRow("planes only") << false << false << false << true << false;
-    QTest::newRow("pairs only") << false << false << false << false << true;
-    QTest::newRow("everything") << true << true << true << true << true;
+    QTest::addColumn<bool>("handout");
+    for (bool handout : {false, true}) {
+        const char *solver = handout ? "handout" : "iterative";
+        QTest::addRow("nothing, %s", solver) << false << false << false << false << false << handout;
+        QTest::addRow("gravity only, %s", solver) << true << false << false << false << false << handout;
+        QTest::addRow("drag only, %s", solver) << false << true << false << false << false << handout;
+        QTest::addRow("springs only, %s", solver) << false << false << true << false << false << handout;
+        QTest::addRow("planes only, %s", solver) << false << false << false << true << false << handout;
+        QTest::addRow("pairs only, %s", solver) << false << false << false << false << true << handout;
+        QTest::addRow("everything, %s", solver) << true << true << true << true << true << handout;
+    }
 }
 
 void TestStep::skippedPassesNeverRun()
@@ -53,8 +57,10 @@ void TestStep::skippedPassesNeverRun()
     QFETCH(bool, springs);
     QFETCH(bool, planes);
     QFETCH(bool, pairs);
+    QFETCH(bool, handout);
 
     core::SceneDesc scene = test::quietScene();
+    scene.settings.contactSolver = handout ? core::ContactSolver::Handout : core::ContactSolver::Iterative;
     scene.settings.gravity = gravity ? Eigen::Vector3d(0, -9.81, 0) : Eigen::Vector3d::Zero();
     scene.settings.viscosity = drag ? 0.1 : 0.0;
     scene.settings.planeCollisions = planes;
@@ -80,8 +86,9 @@ void TestStep::skippedPassesNeverRun()
     expect(core::Stage::Springs, springs);
     expect(core::Stage::Applied, false);
     expect(core::Stage::Integrate, true);
-    expect(core::Stage::PlaneCollisions, planes);
-    expect(core::Stage::ParticleCollisions, pairs);
+    expect(core::Stage::PlaneCollisions, handout && planes);
+    expect(core::Stage::ParticleCollisions, handout && pairs);
+    expect(core::Stage::Contacts, !handout && (planes || pairs));
     expect(core::Stage::Check, true);
 }
 

@@ -1,7 +1,9 @@
 // Scene files: every bad-file case gives one message naming the file, the JSON path and the
 // reason; defaults and unknown keys; save then load gives back the same bits, for hand-made
-// scenes and for every example in resources/scenes; saving is atomic; files past a size, count or
-// nesting limit are refused with the limit named, files at the limits load.
+// scenes and for every example in resources/scenes; the contact keys (solver, friction, two-sided
+// planes, rectangles) are written when they say something and read back exactly; saving is
+// atomic; files past a size, count or nesting limit are refused with the limit named, files at
+// the limits load.
 
 #include "core/io/scene_file.h"
 #include "core/validate.h"
@@ -62,12 +64,25 @@ bool sameBits(double a, double b, const QString &what, QString &difference)
     return false;
 }
 
-bool sameBits(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const QString &what, QString &difference)
+template <int N>
+bool sameBits(const Eigen::Matrix<double, N, 1> &a, const Eigen::Matrix<double, N, 1> &b, const QString &what,
+              QString &difference)
 {
-    for (int axis = 0; axis < 3; ++axis)
+    for (int axis = 0; axis < N; ++axis)
         if (!sameBits(a[axis], b[axis], what + u'[' + QString::number(axis) + u']', difference))
             return false;
     return true;
+}
+
+// both unset, or both set to the same bits
+bool sameBits(const std::optional<double> &a, const std::optional<double> &b, const QString &what,
+              QString &difference)
+{
+    if (a.has_value() != b.has_value()) {
+        difference = what + (a ? u": set, then unset"_s : u": unset, then set"_s);
+        return false;
+    }
+    return !a || sameBits(*a, *b, what, difference);
 }
 
 // empty when the two scenes hold the same bits; else the first difference
@@ -79,12 +94,14 @@ QString bitDifference(const core::SceneDesc &a, const core::SceneDesc &b)
     if (a.name != b.name)
         return QStringLiteral("name");
     if (s.substeps != t.substeps || s.integrator != t.integrator || s.planeCollisions != t.planeCollisions ||
-        s.particleCollisions != t.particleCollisions)
+        s.particleCollisions != t.particleCollisions || s.contactSolver != t.contactSolver)
         return QStringLiteral("settings");
     if (!sameBits(s.timeStep, t.timeStep, QStringLiteral("timeStep"), d) ||
         !sameBits(s.gravity, t.gravity, QStringLiteral("gravity"), d) ||
         !sameBits(s.viscosity, t.viscosity, QStringLiteral("viscosity"), d) ||
-        !sameBits(s.restitution, t.restitution, QStringLiteral("restitution"), d))
+        !sameBits(s.restitution, t.restitution, QStringLiteral("restitution"), d) ||
+        !sameBits(s.friction, t.friction, QStringLiteral("friction"), d) ||
+        !sameBits(s.staticFriction, t.staticFriction, QStringLiteral("staticFriction"), d))
         return d;
     if (a.particles.size() != b.particles.size() || a.springs.size() != b.springs.size() ||
         a.planes.size() != b.planes.size())
@@ -113,9 +130,14 @@ QString bitDifference(const core::SceneDesc &a, const core::SceneDesc &b)
             return d;
     }
     for (std::size_t i = 0; i < a.planes.size(); ++i) {
+        const core::PlaneDesc &p = a.planes[i];
+        const core::PlaneDesc &q = b.planes[i];
         const QString at = QStringLiteral("planes[%1].").arg(i);
-        if (!sameBits(a.planes[i].normal, b.planes[i].normal, at + u"normal"_s, d) ||
-            !sameBits(a.planes[i].offset, b.planes[i].offset, at + u"offset"_s, d))
+        if (p.twoSided != q.twoSided)
+            return at + u"twoSided"_s;
+        if (!sameBits(p.normal, q.normal, at + u"normal"_s, d) || !sameBits(p.offset, q.offset, at + u"offset"_s, d) ||
+            !sameBits(p.friction, q.friction, at + u"friction"_s, d) || !sameBits(p.size, q.size, at + u"size"_s, d) ||
+            !sameBits(p.centre, q.centre, at + u"centre"_s, d) || !sameBits(p.axis, q.axis, at + u"axis"_s, d))
             return d;
     }
     return {};
@@ -134,6 +156,9 @@ core::SceneDesc awkwardScene()
     scene.settings.gravity = {-0.0, -9.81, 1e-300};
     scene.settings.viscosity = denormal;
     scene.settings.restitution = 0.1;
+    scene.settings.contactSolver = core::ContactSolver::Handout;
+    scene.settings.friction = denormal;
+    scene.settings.staticFriction = 1.0 / 3.0;
     scene.settings.planeCollisions = false;
     scene.settings.particleCollisions = true;
 
@@ -163,6 +188,22 @@ core::SceneDesc awkwardScene()
     scene.springs.push_back({1, 2, 3.0, 0.0, 0.5, 1.0 / 3.0});  // breakable
     scene.planes.push_back({{0.6, 0.8, -0.0}, -0.0});
     scene.planes.push_back({{0.0, -1.0, 0.0}, 1.0 / 3.0});
+
+    // a two-sided wall with its own friction, and a tilted rectangle
+    core::PlaneDesc wall;
+    wall.normal = {1.0, 0.0, 0.0};
+    wall.offset = -2.5;
+    wall.twoSided = true;
+    wall.friction = 0.1 + 0.2;
+    scene.planes.push_back(wall);
+    core::PlaneDesc table;
+    table.normal = {0.0, 0.8, -0.6};
+    table.offset = 1.0 / 7.0;
+    table.size = {2.0 / 3.0, denormal};
+    table.centre = {-0.0, 1e-300, 1e9};
+    table.axis = {-0.0, 0.6, 0.8};
+    table.friction = 0.0;
+    scene.planes.push_back(table);
     return scene;
 }
 
@@ -220,6 +261,10 @@ private slots:
     void unreadableFile();
     void defaults();
     void unknownKeysWarn();
+    void contactSettings_data();
+    void contactSettings();
+    void planeKeys_data();
+    void planeKeys();
     void negativeZeroLiterals_data();
     void negativeZeroLiterals();
     void normalsNormalised_data();
@@ -344,6 +389,45 @@ void TestSceneFile::badFile_data()
                                         << QStringLiteral(
                                                "unknown integrator \"rk9\" (known: symplectic-euler, explicit-euler, velocity-verlet, rk4, implicit-euler, adaptive-rk45)");
 
+    // the contact keys: names, types and shapes
+    QTest::newRow("unknown contact solver")
+        << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"contactSolver\": \"box2d\",")
+        << QStringLiteral("settings.contactSolver")
+        << QStringLiteral("unknown contact solver \"box2d\" (known: iterative, handout)");
+    QTest::newRow("contact solver in capitals")
+        << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"contactSolver\": \"Handout\",")
+        << QStringLiteral("settings.contactSolver") << QStringLiteral("unknown contact solver \"Handout\"");
+    QTest::newRow("contact solver a number")
+        << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"contactSolver\": 2,")
+        << QStringLiteral("settings.contactSolver") << QStringLiteral("expected a string, got a number");
+    QTest::newRow("friction a string")
+        << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"friction\": \"high\",")
+        << QStringLiteral("settings.friction") << QStringLiteral("expected a number, got a string");
+    QTest::newRow("static friction null")
+        << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"staticFriction\": null,")
+        << QStringLiteral("settings.staticFriction") << QStringLiteral("expected a number, got null");
+    QTest::newRow("two-sided a number") << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"twoSided\": 1}")
+                                        << QStringLiteral("planes[0].twoSided")
+                                        << QStringLiteral("expected true or false, got a number");
+    QTest::newRow("plane friction an array")
+        << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"friction\": [0.5]}")
+        << QStringLiteral("planes[0].friction") << QStringLiteral("expected a number, got an array");
+    QTest::newRow("size a number") << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"size\": 2}")
+                                   << QStringLiteral("planes[0].size")
+                                   << QStringLiteral("expected an array of 2 numbers, got a number");
+    QTest::newRow("size of three") << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"size\": [1, 2, 3]}")
+                                   << QStringLiteral("planes[0].size")
+                                   << QStringLiteral("expected an array of 2 numbers, got 3");
+    QTest::newRow("size component a string")
+        << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"size\": [1, \"2\"]}")
+        << QStringLiteral("planes[0].size[1]") << QStringLiteral("expected a number, got a string");
+    QTest::newRow("short centre") << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"centre\": [1, 2]}")
+                                  << QStringLiteral("planes[0].centre")
+                                  << QStringLiteral("expected an array of 3 numbers, got 2");
+    QTest::newRow("axis an object") << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"axis\": {}}")
+                                    << QStringLiteral("planes[0].axis")
+                                    << QStringLiteral("expected an array of 3 numbers, got an object");
+
     // missing keys, vectors of the wrong length
     QTest::newRow("radius missing") << QByteArray("\"mass\": 2, \"radius\": 0.2}") << QByteArray("\"mass\": 2}")
                                     << QStringLiteral("particles[1].radius")
@@ -415,6 +499,35 @@ void TestSceneFile::badFile_data()
                                  << QStringLiteral("is zero: a plane needs a direction");
     QTest::newRow("huge coordinate") << QByteArray("[0.8, 1, 0]") << QByteArray("[0.8, 1, 1e300]")
                                      << QStringLiteral("particles[2].position[2]") << QStringLiteral("must be at most");
+
+    // the contact values, against the same table
+    QTest::newRow("friction above 10")
+        << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"friction\": 10.5,")
+        << QStringLiteral("settings.friction") << QStringLiteral("must be at most 10 (got 10.5)");
+    QTest::newRow("negative static friction")
+        << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"staticFriction\": -0.1,")
+        << QStringLiteral("settings.staticFriction") << QStringLiteral("must be at least 0 (got -0.1)");
+    QTest::newRow("plane friction above 10")
+        << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"friction\": 12}")
+        << QStringLiteral("planes[0].friction") << QStringLiteral("must be at most 10 (got 12)");
+    QTest::newRow("third plane's friction")
+        << QByteArray("{\"normal\": [0, 1, 0], \"offset\": 0}")
+        << QByteArray("{\"normal\": [0, 1, 0], \"offset\": 0}, {\"normal\": [1, 0, 0], \"offset\": -3},\n"
+                      "        {\"normal\": [-1, 0, 0], \"offset\": -3, \"friction\": -1}")
+        << QStringLiteral("planes[2].friction") << QStringLiteral("must be at least 0 (got -1)");
+    QTest::newRow("negative size") << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"size\": [-1, 2]}")
+                                   << QStringLiteral("planes[0].size[0]")
+                                   << QStringLiteral("must be at least 0 m (got -1 m)");
+    QTest::newRow("size past 1e6") << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"size\": [1, 2e6]}")
+                                   << QStringLiteral("planes[0].size[1]") << QStringLiteral("must be at most 1e+06 m");
+    QTest::newRow("one side zero") << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"size\": [2, 0]}")
+                                   << QStringLiteral("planes[0].size")
+                                   << QStringLiteral("needs both sides greater than 0 m for a rectangle, or both 0");
+    QTest::newRow("centre far away")
+        << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"size\": [1, 1], \"centre\": [0, 2e9, 0]}")
+        << QStringLiteral("planes[0].centre[1]") << QStringLiteral("must be at most");
+    QTest::newRow("axis huge") << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"axis\": [-1e10, 0, 0]}")
+                               << QStringLiteral("planes[0].axis[0]") << QStringLiteral("must be at least");
 }
 
 void TestSceneFile::badFile()
@@ -469,7 +582,7 @@ void TestSceneFile::defaults()
         "particles": [{"position": [0, 0, 0], "mass": 1, "radius": 0.5},
                       {"position": [3, 4, 0], "mass": 2, "radius": 0.5}],
         "springs": [{"particles": [0, 1], "stiffness": 10, "damping": 0.5}],
-        "planes": []})";
+        "planes": [{"normal": [0, 1, 0], "offset": 0}]})";
     const io::LoadResult result = io::parseScene(json, QStringLiteral("minimal.json"));
     QVERIFY2(result.ok(), qPrintable(result.error));
     QVERIFY(result.warnings.isEmpty());
@@ -481,10 +594,16 @@ void TestSceneFile::defaults()
         QVERIFY(!particle.pinned);
     }
     QCOMPARE(scene.springs[0].restLength, 5.0);
+    // a plane is unbounded and one-sided, with the settings' friction
+    QVERIFY(scene.planes[0] == core::PlaneDesc{});
+    QVERIFY(!scene.planes[0].twoSided && !scene.planes[0].friction && !scene.planes[0].bounded());
+    QVERIFY(scene.settings.contactSolver == core::ContactSolver::Iterative);
+    QCOMPARE(scene.settings.friction, 0.0);
+    QVERIFY(!scene.settings.staticFriction);
 
     // an empty settings object is the same; a key in it overrides only itself
     QByteArray withSettings = json;
-    withSettings.replace("\"planes\": []", "\"planes\": [], \"settings\": {\"viscosity\": 0.25}");
+    withSettings.replace("\"planes\": [", "\"settings\": {\"viscosity\": 0.25}, \"planes\": [");
     const io::LoadResult other = io::parseScene(withSettings, QStringLiteral("minimal.json"));
     QVERIFY2(other.ok(), qPrintable(other.error));
     core::Settings expected;
@@ -499,7 +618,7 @@ void TestSceneFile::unknownKeysWarn()
     json.replace("\"substeps\": 1,", "\"substeps\": 1, \"solver\": {\"x\": 1},");
     json.replace("\"mass\": 2,", "\"mass\": 2, \"colour\": [1, 0, 0],");
     json.replace("\"damping\": 1}", "\"damping\": 1, \"breakable\": true}");
-    json.replace("\"offset\": 0}", "\"offset\": 0, \"friction\": 0.5}");
+    json.replace("\"offset\": 0}", "\"offset\": 0, \"colour\": \"grey\"}");
     const io::LoadResult result = io::parseScene(json, QStringLiteral("extra.json"));
     QVERIFY2(result.ok(), qPrintable(result.error));
 
@@ -508,7 +627,7 @@ void TestSceneFile::unknownKeysWarn()
     const QStringList expected = {
         QStringLiteral("extra.json: author: unknown key, ignored"),
         QStringLiteral("extra.json: particles[1].colour: unknown key, ignored"),
-        QStringLiteral("extra.json: planes[0].friction: unknown key, ignored"),
+        QStringLiteral("extra.json: planes[0].colour: unknown key, ignored"),
         QStringLiteral("extra.json: settings.solver: unknown key, ignored"),
         QStringLiteral("extra.json: springs[1].breakable: unknown key, ignored"),
     };
@@ -517,6 +636,126 @@ void TestSceneFile::unknownKeysWarn()
     // the known keys read as if the others were not there
     const io::LoadResult base = io::parseScene(kBase, QStringLiteral("base.json"));
     QVERIFY(*result.scene == *base.scene);
+}
+
+void TestSceneFile::contactSettings_data()
+{
+    // keys: put into kBase's settings; staticFriction -1: unset; written: what saving writes of them
+    QTest::addColumn<QByteArray>("keys");
+    QTest::addColumn<int>("solver");
+    QTest::addColumn<double>("friction");
+    QTest::addColumn<double>("staticFriction");
+    QTest::addColumn<QByteArray>("written");
+
+    const QByteArray iterative = "        \"contactSolver\": \"iterative\",\n";
+    const QByteArray handout = "        \"contactSolver\": \"handout\",\n";
+    const int it = int(core::ContactSolver::Iterative);
+    QTest::newRow("absent: the defaults") << QByteArray() << it << 0.0 << -1.0
+                                          << iterative + "        \"friction\": 0,\n        \"planeCollisions\"";
+    QTest::newRow("the handout's") << QByteArray("\"contactSolver\": \"handout\",") << int(core::ContactSolver::Handout)
+                                   << 0.0 << -1.0 << handout + "        \"friction\": 0,\n        \"planeCollisions\"";
+    QTest::newRow("iterative, named") << QByteArray("\"contactSolver\": \"iterative\",") << it << 0.0 << -1.0
+                                      << iterative + "        \"friction\": 0,\n        \"planeCollisions\"";
+    QTest::newRow("kinetic only: static follows")
+        << QByteArray("\"friction\": 0.5,") << it << 0.5 << -1.0
+        << iterative + "        \"friction\": 0.5,\n        \"planeCollisions\"";
+    QTest::newRow("static of its own") << QByteArray("\"friction\": 0.5, \"staticFriction\": 0.8,") << it << 0.5 << 0.8
+                                       << iterative + "        \"friction\": 0.5,\n        \"staticFriction\": 0.8,\n";
+    QTest::newRow("static set equal is kept")
+        << QByteArray("\"staticFriction\": 0.5, \"friction\": 0.5,") << it << 0.5 << 0.5
+        << iterative + "        \"friction\": 0.5,\n        \"staticFriction\": 0.5,\n";
+    QTest::newRow("static zero is kept") << QByteArray("\"staticFriction\": 0,") << it << 0.0 << 0.0
+                                         << iterative + "        \"friction\": 0,\n        \"staticFriction\": 0,\n";
+    QTest::newRow("the table's ends") << QByteArray("\"friction\": 10, \"staticFriction\": 10,") << it << 10.0 << 10.0
+                                      << iterative + "        \"friction\": 10,\n        \"staticFriction\": 10,\n";
+}
+
+void TestSceneFile::contactSettings()
+{
+    QFETCH(QByteArray, keys);
+    QFETCH(int, solver);
+    QFETCH(double, friction);
+    QFETCH(double, staticFriction);
+    QFETCH(QByteArray, written);
+
+    // read
+    const QByteArray json = QByteArray(kBase).replace("\"restitution\": 1,", "\"restitution\": 1, " + keys);
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("contacts.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY2(result.warnings.isEmpty(), qPrintable(result.warnings.join(u'\n')));
+    const core::Settings &settings = result.scene->settings;
+    QCOMPARE(int(settings.contactSolver), solver);
+    QCOMPARE(settings.friction, friction);
+    QCOMPARE(settings.staticFriction.has_value(), staticFriction >= 0.0);
+    if (settings.staticFriction)
+        QCOMPARE(*settings.staticFriction, staticFriction);
+
+    // written after the restitution, the static coefficient only when set; read back the same
+    const QByteArray saved = io::sceneToJson(*result.scene);
+    QVERIFY2(saved.contains("        \"restitution\": 1,\n" + written), saved.constData());
+    QCOMPARE(saved.contains("staticFriction"), staticFriction >= 0.0);
+    const io::LoadResult again = io::parseScene(saved, QStringLiteral("again.json"));
+    QVERIFY2(again.ok(), qPrintable(again.error));
+    QCOMPARE(bitDifference(*result.scene, *again.scene), QString());
+    QCOMPARE(io::sceneToJson(*again.scene), saved);
+}
+
+void TestSceneFile::planeKeys_data()
+{
+    // plane: kBase's plane replaced by this; written: how saving writes it (keys in a fixed order,
+    // each only when it says something: two-sided when true, friction when the plane has its own,
+    // size, centre and axis for a rectangle or when not zero)
+    QTest::addColumn<QByteArray>("plane");
+    QTest::addColumn<QByteArray>("written");
+
+    const QByteArray plain = R"({"normal": [0, 1, 0], "offset": 0})";
+    QTest::newRow("plain") << plain << plain;
+    QTest::newRow("defaults written out are left out")
+        << QByteArray(R"({"normal": [0, 1, 0], "offset": 0, "twoSided": false, "size": [0, 0], "centre": [0, 0, 0],
+                         "axis": [0, 0, 0]})")
+        << plain;
+    QTest::newRow("two-sided") << QByteArray(R"({"normal": [1, 0, 0], "offset": -2, "twoSided": true})")
+                               << QByteArray(R"({"normal": [1, 0, 0], "offset": -2, "twoSided": true})");
+    QTest::newRow("own friction") << QByteArray(R"({"friction": 0.4, "normal": [0, 1, 0], "offset": 0})")
+                                  << QByteArray(R"({"normal": [0, 1, 0], "offset": 0, "friction": 0.4})");
+    QTest::newRow("own friction of 0") << QByteArray(R"({"normal": [0, 1, 0], "offset": 0, "friction": 0})")
+                                       << QByteArray(R"({"normal": [0, 1, 0], "offset": 0, "friction": 0})");
+    QTest::newRow("rectangle, default axis")
+        << QByteArray(R"({"normal": [0, 1, 0], "offset": 0.75, "size": [2, 1], "centre": [0.5, 0, 0]})")
+        << QByteArray(R"({"normal": [0, 1, 0], "offset": 0.75, "size": [2, 1], "centre": [0.5, 0, 0], "axis": [0, 0, 0]})");
+    QTest::newRow("rectangle at the origin")
+        << QByteArray(R"({"normal": [0, 1, 0], "offset": 0, "size": [3, 4]})")
+        << QByteArray(R"({"normal": [0, 1, 0], "offset": 0, "size": [3, 4], "centre": [0, 0, 0], "axis": [0, 0, 0]})");
+    QTest::newRow("every key")
+        << QByteArray(R"({"axis": [1, 1, 0], "centre": [0, 1, -2], "size": [0.5, 1e6], "friction": 10, "twoSided": true,
+                         "offset": -1, "normal": [0, 0, 1]})")
+        << QByteArray(R"({"normal": [0, 0, 1], "offset": -1, "twoSided": true, "friction": 10, "size": [0.5, 1e+06], )"
+                      R"("centre": [0, 1, -2], "axis": [1, 1, 0]})");
+    QTest::newRow("unbounded, centre and axis kept")
+        << QByteArray(R"({"normal": [0, 1, 0], "offset": 0, "centre": [1, 2, 3], "axis": [0, 0, -1]})")
+        << QByteArray(R"({"normal": [0, 1, 0], "offset": 0, "centre": [1, 2, 3], "axis": [0, 0, -1]})");
+    QTest::newRow("negative zeros kept")
+        << QByteArray(R"({"normal": [0, 1, 0], "offset": 0, "size": [-0, 0], "axis": [0, -0, 0]})")
+        << QByteArray(R"({"normal": [0, 1, 0], "offset": 0, "size": [-0, 0], "axis": [0, -0, 0]})");
+}
+
+void TestSceneFile::planeKeys()
+{
+    QFETCH(QByteArray, plane);
+    QFETCH(QByteArray, written);
+
+    const QByteArray json = QByteArray(kBase).replace(R"({"normal": [0, 1, 0], "offset": 0})", plane);
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("plane.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY2(result.warnings.isEmpty(), qPrintable(result.warnings.join(u'\n')));
+
+    // the plane's line as saved, then the same bits and text again
+    const QByteArray saved = io::sceneToJson(*result.scene);
+    QVERIFY2(saved.contains("\"planes\": [\n        " + written + "\n    ]"), saved.constData());
+    const io::LoadResult again = io::parseScene(saved, QStringLiteral("again.json"));
+    QVERIFY2(again.ok(), qPrintable(again.error));
+    QCOMPARE(bitDifference(*result.scene, *again.scene), QString());
+    QCOMPARE(io::sceneToJson(*again.scene), saved);
 }
 
 void TestSceneFile::negativeZeroLiterals_data()
@@ -677,7 +916,8 @@ void TestSceneFile::saveWritesEveryKey()
     const QByteArray json = io::sceneToJson(scene);
     for (const char *key :
          {"format",     "version",   "name",      "settings",    "timeStep",        "substeps",
-          "integrator", "tolerance", "gravity",   "viscosity", "restitution", "planeCollisions", "particleCollisions",
+          "integrator", "tolerance", "gravity",   "viscosity", "restitution", "contactSolver", "friction",
+          "planeCollisions", "particleCollisions",
           "particles",  "position",  "velocity",  "mass",        "radius",          "pinned",
           "springs",    "stiffness", "damping",   "restLength",  "planes",          "normal",
           "offset"})
@@ -687,6 +927,10 @@ void TestSceneFile::saveWritesEveryKey()
     QVERIFY(!json.contains("autoSubsteps"));
     scene.settings.autoSubsteps = true;
     QVERIFY(io::sceneToJson(scene).contains("\"autoSubsteps\": true,"));
+    // and the contact keys that can be unset, or that only a rectangle needs, only when they say
+    // something (planeKeys has the cases)
+    for (const char *key : {"staticFriction", "twoSided", "\"friction\": 0}", "size", "centre", "axis"})
+        QVERIFY2(!json.contains(key), key);
 
     // an empty scene is still a whole file
     const io::LoadResult empty = io::parseScene(io::sceneToJson(core::SceneDesc{}), QStringLiteral("empty.json"));

@@ -1,7 +1,9 @@
 // The inspector with real widgets and real key presses: it shows the selection's values (mixed
 // where they differ), a typed value edits every selected item as one undo step, arrow steps on one
 // field merge into one step, a bad value is refused with a message and leaves the scene and the
-// undo stack alone, planes are added, edited and removed, and undo shows in the fields at once.
+// undo stack alone, planes are added, edited and removed (two-sided, with friction of their own or
+// the scene's, as rectangles with a centre and an axis, each change one named undo step), and undo
+// shows in the fields at once.
 
 #include "ui/viewport/edit_tools.h"
 #include "ui/panels/inspector_field.h"
@@ -97,6 +99,11 @@ private slots:
     void planesAreAddedEditedAndRemoved();
     void zeroNormalIsRefused();
     void normalIsMadeUnitLength();
+    void planeIsMadeTwoSided();
+    void planeFrictionIsItsOwnOrTheScenes();
+    void sizeMakesARectangleWithCentreAndAxis();
+    void badPlaneValueIsRefused_data();
+    void badPlaneValueIsRefused();
     void fieldsFollowUndoAndOtherEdits();
 
 private:
@@ -485,6 +492,190 @@ void TestInspectorPanel::normalIsMadeUnitLength()
     QCOMPARE(normal.z(), 0.0);
     QCOMPARE(commands(), count + 1);
     QCOMPARE(planes->normalField(0)->value(), normal.x());
+}
+
+void TestInspectorPanel::planeIsMadeTwoSided()
+{
+    ui::InspectorPlanes *planes = m_panel->planes();
+    QCheckBox *box = planes->twoSidedBox();
+    QVERIFY(box->isEnabled());
+    QVERIFY(!box->isChecked());
+    const int count = commands();
+
+    // a click: two-sided, one named undo step, said in the list too
+    QTest::mouseClick(box, Qt::LeftButton, {}, QPoint(4, box->height() / 2));
+    QVERIFY(m_document->scene().planes[0].twoSided);
+    QCOMPARE(commands(), count + 1);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Make plane 0 two-sided"));
+    QVERIFY(planes->list()->item(0)->text().contains(QStringLiteral("two-sided")));
+    QTest::mouseClick(box, Qt::LeftButton, {}, QPoint(4, box->height() / 2));
+    QVERIFY(!m_document->scene().planes[0].twoSided);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Make plane 0 one-sided"));
+
+    // undo shows in the box
+    m_document->undoStack()->undo();
+    QVERIFY(box->isChecked());
+    m_document->undoStack()->undo();
+    QVERIFY(!box->isChecked());
+    QCOMPARE(commands(), count + 2);
+}
+
+void TestInspectorPanel::planeFrictionIsItsOwnOrTheScenes()
+{
+    ui::InspectorPlanes *planes = m_panel->planes();
+    QCheckBox *own = planes->ownFrictionBox();
+    ui::InspectorSpinBox *friction = planes->frictionField();
+
+    // the scene's friction, shown greyed; it follows the settings
+    auto scene = std::make_shared<core::SceneDesc>(m_document->scene());
+    scene->settings.friction = 0.25;
+    m_document->undoStack()->push(new ui::SceneCommand(*m_document, QStringLiteral("settings"), scene));
+    QVERIFY(!own->isChecked());
+    QVERIFY(!friction->isEnabled());
+    QCOMPARE(friction->value(), 0.25);
+    const int count = commands();
+
+    // its own: starts from the scene's, then typed
+    QTest::mouseClick(own, Qt::LeftButton, {}, QPoint(4, own->height() / 2));
+    QCOMPARE(m_document->scene().planes[0].friction, std::optional<double>(0.25));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Give plane 0 its own friction"));
+    QVERIFY(friction->isEnabled());
+    type(friction, QStringLiteral("0.6"));
+    QCOMPARE(m_document->scene().planes[0].friction, std::optional<double>(0.6));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Set plane 0 friction to 0.6"));
+    QVERIFY(planes->list()->item(0)->text().contains(QStringLiteral("μ 0.6")));
+    QCOMPARE(m_document->scene().settings.friction, 0.25);
+
+    // arrow steps merge into one undo step
+    friction->setFocus();
+    QTest::keyClick(friction, Qt::Key_Up);
+    QTest::keyClick(friction, Qt::Key_Up);
+    const double stepped = *m_document->scene().planes[0].friction;
+    QVERIFY(stepped > 0.6);
+    QCOMPARE(commands(), count + 3);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Set plane 0 friction to %1").arg(stepped, 0, 'g', 6));
+
+    // back to the scene's: unset, and the field shows the scene's again
+    QTest::mouseClick(own, Qt::LeftButton, {}, QPoint(4, own->height() / 2));
+    QVERIFY(!m_document->scene().planes[0].friction);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Let plane 0 take the scene's friction"));
+    QVERIFY(!friction->isEnabled());
+    QCOMPARE(friction->value(), 0.25);
+    QCOMPARE(commands(), count + 4);
+
+    // each undo steps back
+    m_document->undoStack()->undo();
+    QVERIFY(own->isChecked());
+    m_document->undoStack()->undo();
+    QCOMPARE(friction->value(), 0.6);
+    m_document->undoStack()->undo();
+    m_document->undoStack()->undo();
+    QVERIFY(!own->isChecked());
+    QVERIFY(!m_document->scene().planes[0].friction);
+}
+
+void TestInspectorPanel::sizeMakesARectangleWithCentreAndAxis()
+{
+    ui::InspectorPlanes *planes = m_panel->planes();
+    const core::SceneDesc before = m_document->scene();
+    const int count = commands();
+
+    // an unbounded plane: no centre, no axis to edit
+    QVERIFY(planes->sizeField(0)->isVisible());
+    QVERIFY(!planes->centreField(0)->isVisible());
+    QVERIFY(!planes->axisField(2)->isVisible());
+
+    // a width on the whole plane makes a square of it, which shows its centre and axis
+    type(planes->sizeField(0), QStringLiteral("2"));
+    QCOMPARE(m_document->scene().planes[0].size, Eigen::Vector2d(2.0, 2.0));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Make plane 0 a 2 × 2 m rectangle"));
+    QCOMPARE(planes->sizeField(1)->value(), 2.0);
+    QVERIFY(planes->centreField(0)->isVisible());
+    QVERIFY(planes->axisField(2)->isVisible());
+    QVERIFY(planes->list()->item(0)->text().contains(QStringLiteral("2 × 2 m rectangle")));
+
+    // a rectangle is two-sided, whatever its flag says
+    QVERIFY(planes->twoSidedBox()->isChecked());
+    QVERIFY(!planes->twoSidedBox()->isEnabled());
+    QVERIFY(!m_document->scene().planes[0].twoSided);
+
+    // each side, the centre and the axis on their own
+    type(planes->sizeField(1), QStringLiteral("0.5"));
+    QCOMPARE(m_document->scene().planes[0].size, Eigen::Vector2d(2.0, 0.5));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Set plane 0 height to 0.5 m"));
+    type(planes->centreField(0), QStringLiteral("1.5"));
+    QCOMPARE(m_document->scene().planes[0].centre, Eigen::Vector3d(1.5, 0.0, 0.0));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Set plane 0 centre x to 1.5"));
+    type(planes->axisField(2), QStringLiteral("1"));
+    QCOMPARE(m_document->scene().planes[0].axis, Eigen::Vector3d(0.0, 0.0, 1.0));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Set plane 0 axis z to 1"));
+    QCOMPARE(commands(), count + 4);
+
+    // a zero side makes the whole plane again; centre and axis stay in the scene, out of sight
+    type(planes->sizeField(0), QStringLiteral("0"));
+    QCOMPARE(m_document->scene().planes[0].size, Eigen::Vector2d(0.0, 0.0));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Make plane 0 unbounded"));
+    QVERIFY(!planes->centreField(0)->isVisible());
+    QVERIFY(planes->twoSidedBox()->isEnabled());
+    QVERIFY(!planes->twoSidedBox()->isChecked());
+    QCOMPARE(m_document->scene().planes[0].centre, Eigen::Vector3d(1.5, 0.0, 0.0));
+
+    // undo all the way: the rectangle comes back, then the plane as it was
+    m_document->undoStack()->undo();
+    QCOMPARE(planes->sizeField(0)->value(), 2.0);
+    QCOMPARE(planes->sizeField(1)->value(), 0.5);
+    QCOMPARE(planes->axisField(2)->value(), 1.0);
+    QVERIFY(planes->centreField(0)->isVisible());
+    while (m_document->undoStack()->index() > count)
+        m_document->undoStack()->undo();
+    QVERIFY(m_document->scene() == before);
+    QVERIFY(!planes->centreField(0)->isVisible());
+}
+
+void TestInspectorPanel::badPlaneValueIsRefused_data()
+{
+    // field: "friction", "width", "height", "centre.y", "axis.x"; each on a rectangle with its own friction
+    QTest::addColumn<QString>("field");
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("friction above 10") << "friction" << "12" << "Plane friction must be at most 10 (got 12)";
+    QTest::newRow("negative friction") << "friction" << "-1" << "Plane friction must be at least 0 (got -1)";
+    QTest::newRow("friction nan") << "friction" << "nan" << "Plane friction is not a number";
+    QTest::newRow("negative width") << "width" << "-1" << "Plane width must be at least 0 m (got -1 m)";
+    QTest::newRow("height past 1e6") << "height" << "2e6" << "Plane height must be at most 1e+06 m";
+    QTest::newRow("centre far away") << "centre.y" << "2e9" << "Plane centre y must be at most";
+    QTest::newRow("axis infinite") << "axis.x" << "inf" << "Plane axis x must be finite";
+}
+
+void TestInspectorPanel::badPlaneValueIsRefused()
+{
+    QFETCH(QString, field);
+    QFETCH(QString, typed);
+    QFETCH(QString, message);
+
+    // plane 0 a rectangle with friction of its own, so that every field is there to type in
+    auto scene = std::make_shared<core::SceneDesc>(m_document->scene());
+    scene->planes[0].size = {1.0, 1.0};
+    scene->planes[0].friction = 0.5;
+    m_document->undoStack()->push(new ui::SceneCommand(*m_document, QStringLiteral("rectangle"), scene));
+    ui::InspectorPlanes *planes = m_panel->planes();
+    ui::InspectorSpinBox *box = field == u"friction"   ? planes->frictionField()
+                                : field == u"width"    ? planes->sizeField(0)
+                                : field == u"height"   ? planes->sizeField(1)
+                                : field == u"centre.y" ? planes->centreField(1)
+                                                       : planes->axisField(0);
+    QVERIFY(box->isEnabled() && box->isVisible());
+    const core::SceneDesc before = m_document->scene();
+    const int count = commands();
+    QSignalSpy refused(m_panel, &ui::InspectorPanel::valueRefused);
+
+    // refused with a message naming the field; the scene, the undo stack and the field as they were
+    type(box, typed);
+    QCOMPARE(refused.count(), 1);
+    const QString said = refused.first().first().toString();
+    QVERIFY2(said.startsWith(message) && said.endsWith(QStringLiteral("; not applied")), qPrintable(said));
+    QVERIFY(m_document->scene() == before);
+    QCOMPARE(commands(), count);
 }
 
 void TestInspectorPanel::fieldsFollowUndoAndOtherEdits()

@@ -1,7 +1,9 @@
 // The parameters panel with real widgets: its rows come from the parameter table, a slider move or
 // a typed value edits the document (one undo step per drag), and a value out of range is refused
 // with a message and never reaches the document. The integrator combo box lists every integrator;
-// each choice is one undo step, and the tolerance row is enabled for adaptive-rk45 only.
+// each choice is one undo step, and the tolerance row is enabled for adaptive-rk45 only. In the
+// contacts group, a friction drag is one undo step, the static friction row follows it until it is
+// set (and can be made to follow again), and the contact solver is a choice like the integrator.
 
 #include "ui/panels/parameter_row.h"
 #include "ui/panels/parameters_panel.h"
@@ -9,6 +11,7 @@
 #include "ui/panels/value_spin_box.h"
 
 #include "core/generators.h"
+#include "core/solver_names.h"
 
 #include <QAbstractItemView>
 #include <QCheckBox>
@@ -82,6 +85,10 @@ private slots:
     void integratorBoxListsEveryIntegrator();
     void choosingAnIntegratorIsOneUndoStep();
     void toleranceRowIsForTheAdaptiveIntegratorOnly();
+    void frictionRowsSayWhichCoefficient();
+    void frictionDragIsOneUndoStep();
+    void staticFrictionFollowsUntilSet();
+    void contactSolverIsOneUndoStepPerChoice();
 
 private:
     ui::SceneDocument *m_document = nullptr;
@@ -194,6 +201,8 @@ void TestParametersPanel::outOfRangeValueIsRefused_data()
     QTest::newRow("zero time step") << "timeStep" << "0" << "must be greater than";
     QTest::newRow("restitution above 1") << "restitution" << "1.5" << "must be at most";
     QTest::newRow("half a substep") << "substeps" << "2.5" << "whole number";
+    QTest::newRow("friction above 10") << "friction" << "11" << "must be at most 10 (got 11)";
+    QTest::newRow("negative static friction") << "staticFriction" << "-0.5" << "must be at least 0 (got -0.5)";
 }
 
 void TestParametersPanel::outOfRangeValueIsRefused()
@@ -318,5 +327,119 @@ void TestParametersPanel::toleranceRowIsForTheAdaptiveIntegratorOnly()
     QVERIFY(!row->isEnabled());
 }
 
+void TestParametersPanel::frictionRowsSayWhichCoefficient()
+{
+    // both from the table's friction entry, each named and explained for its coefficient
+    ui::ParameterRow *friction = m_panel->row(QStringLiteral("friction"));
+    ui::ParameterRow *staticFriction = m_panel->row(QStringLiteral("staticFriction"));
+    QVERIFY(friction && staticFriction);
+    QVERIFY(friction->info().parameter == core::Parameter::Friction);
+    QVERIFY(staticFriction->info().parameter == core::Parameter::Friction);
+    QCOMPARE(friction->label()->text(), QStringLiteral("Friction"));
+    QCOMPARE(staticFriction->label()->text(), QStringLiteral("Static friction"));
+    QVERIFY2(friction->toolTip().contains(QStringLiteral("Kinetic")), qPrintable(friction->toolTip()));
+    QVERIFY2(staticFriction->toolTip().contains(QStringLiteral("Static")), qPrintable(staticFriction->toolTip()));
+    QVERIFY(!m_panel->staticFollowsBox()->toolTip().isEmpty());
+    QVERIFY(!m_panel->contactSolverBox()->toolTip().isEmpty());
+
+    // the scene's values: no friction, the static one following it
+    QCOMPARE(friction->value(), 0.0);
+    QCOMPARE(staticFriction->value(), 0.0);
+    QVERIFY(m_panel->staticFollowsBox()->isChecked());
+}
+
+void TestParametersPanel::frictionDragIsOneUndoStep()
+{
+    // the friction slider dragged with the mouse from its handle to the right end: the slider's
+    // end of the table's range
+    ui::ParameterRow *friction = m_panel->row(QStringLiteral("friction"));
+    QSlider *slider = friction->slider();
+    const QPoint handle = handleCentre(slider);
+    QTest::mousePress(slider, Qt::LeftButton, {}, handle);
+    for (int x = handle.x(); x < slider->width(); x += 10)
+        QTest::mouseMove(slider, QPoint(x, handle.y()));
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, QPoint(slider->width() - 1, handle.y()));
+    const double top = core::parameterInfo(core::Parameter::Friction).sliderMaximum;
+    QCOMPARE(m_document->scene().settings.friction, top);
+    QCOMPARE(friction->spinBox()->value(), top);
+    QCOMPARE(m_document->undoStack()->count(), 1);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Set Friction to %1").arg(top));
+
+    // the static coefficient still follows: unset in the scene, friction's value in its row
+    QVERIFY(!m_document->scene().settings.staticFriction);
+    QCOMPARE(m_panel->row(QStringLiteral("staticFriction"))->value(), top);
+
+    // undo gives the old value back everywhere
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->scene().settings.friction, 0.0);
+    QCOMPARE(friction->value(), 0.0);
+    QCOMPARE(slider->value(), 0);
+    QCOMPARE(m_panel->row(QStringLiteral("staticFriction"))->value(), 0.0);
+    QVERIFY(!m_document->isModified());
+}
+
+void TestParametersPanel::staticFrictionFollowsUntilSet()
+{
+    ui::ParameterRow *friction = m_panel->row(QStringLiteral("friction"));
+    ui::ParameterRow *staticFriction = m_panel->row(QStringLiteral("staticFriction"));
+    QCheckBox *follows = m_panel->staticFollowsBox();
+    type(friction->spinBox(), QStringLiteral("0.4"));
+    QCOMPARE(staticFriction->value(), 0.4);
+
+    // typed: set apart, and no longer following friction
+    type(staticFriction->spinBox(), QStringLiteral("0.7"));
+    QCOMPARE(m_document->scene().settings.staticFriction, std::optional<double>(0.7));
+    QCOMPARE(m_document->scene().settings.friction, 0.4);
+    QVERIFY(!follows->isChecked());
+    type(friction->spinBox(), QStringLiteral("0.3"));
+    QCOMPARE(staticFriction->value(), 0.7);
+    QCOMPARE(m_document->undoStack()->count(), 3);
+
+    // checked again with a click: unset, showing friction's value; one undo step sets it back
+    QTest::mouseClick(follows, Qt::LeftButton, {}, QPoint(4, follows->height() / 2));
+    QVERIFY(!m_document->scene().settings.staticFriction);
+    QCOMPARE(staticFriction->value(), 0.3);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Let static friction follow friction"));
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->scene().settings.staticFriction, std::optional<double>(0.7));
+    QVERIFY(!follows->isChecked());
+    QCOMPARE(staticFriction->value(), 0.7);
+
+    // unchecked by hand: set to the value it showed, friction's
+    m_document->undoStack()->undo();  // friction 0.3
+    m_document->undoStack()->undo();  // static 0.7
+    QVERIFY(follows->isChecked());
+    QTest::mouseClick(follows, Qt::LeftButton, {}, QPoint(4, follows->height() / 2));
+    QCOMPARE(m_document->scene().settings.staticFriction, std::optional<double>(0.4));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Set static friction apart"));
+}
+
+void TestParametersPanel::contactSolverIsOneUndoStepPerChoice()
+{
+    // the solvers in the core's order, by their names in the panel
+    QComboBox *box = m_panel->contactSolverBox();
+    QCOMPARE(box->count(), int(std::size(core::kContactSolvers)));
+    QCOMPARE(box->itemText(0), QStringLiteral("Iterative"));
+    QCOMPARE(box->itemText(1), QStringLiteral("Handout"));
+    QCOMPARE(box->currentIndex(), 0);
+    for (int i = 0; i < box->count(); ++i)
+        QVERIFY(!box->itemData(i, Qt::ToolTipRole).toString().isEmpty());
+
+    // chosen from the keyboard: one undo step each
+    box->setFocus();
+    QTest::keyClick(box, Qt::Key_Down);
+    QVERIFY(m_document->scene().settings.contactSolver == core::ContactSolver::Handout);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Set contact solver to handout"));
+    QTest::keyClick(box, Qt::Key_Up);
+    QVERIFY(m_document->scene().settings.contactSolver == core::ContactSolver::Iterative);
+    QCOMPARE(m_document->undoStack()->count(), 2);
+    m_document->undoStack()->undo();
+    QCOMPARE(box->currentText(), QStringLiteral("Handout"));
+    m_document->undoStack()->undo();
+    QCOMPARE(box->currentText(), QStringLiteral("Iterative"));
+    QVERIFY(!m_document->isModified());
+}
+
 QTEST_MAIN(TestParametersPanel)
 #include "test_parameters_panel.moc"
+

@@ -1,5 +1,6 @@
 // Packing a snapshot for drawing, without GL: colours by strain and by pin and selection, the
-// sizes of the packed arrays, when the style must be uploaded again, and the decoration geometry.
+// sizes of the packed arrays, when the style must be uploaded again, and the decoration geometry
+// (a bounded plane drawn as exactly its rectangle, wherever the scene is).
 
 #include "ui/viewport/render_data.h"
 
@@ -30,7 +31,22 @@ bool near(const ui::Rgb &a, const ui::Rgb &b, float tolerance = 1e-6f)
            std::abs(a[2] - b[2]) <= tolerance;
 }
 
+// a rectangle, and the box around its corners worked out by hand (boxKnown false when it is
+// tilted: then only the general checks apply)
+struct RectangleCase {
+    QVector3D normal;
+    double offset = 0.0;
+    QPointF size;
+    QVector3D centre;
+    QVector3D axis;
+    QVector3D low;
+    QVector3D high;
+    bool boxKnown = false;
+};
+
 }  // namespace
+
+Q_DECLARE_METATYPE(RectangleCase)
 
 class TestRenderData : public QObject {
     Q_OBJECT
@@ -50,6 +66,8 @@ private slots:
     void niceSteps();
     void gridLiesOnItsPlaneAroundTheScene();
     void planeQuadsLieOnTheirPlanes();
+    void rectanglesAreDrawnAsThemselves_data();
+    void rectanglesAreDrawnAsThemselves();
     void icosphereIsAClosedOutwardUnitSphere_data();
     void icosphereIsAClosedOutwardUnitSphere();
 };
@@ -305,6 +323,80 @@ void TestRenderData::planeQuadsLieOnTheirPlanes()
                               quads[(6 * p) * ui::kVertexFloats + 2]);
         QCOMPARE_LT((sum / 6.0f - foot).length(), 1e-3f + (first - foot).length());
         QCOMPARE_GT((first - foot).length(), scene.radius);
+    }
+}
+
+void TestRenderData::rectanglesAreDrawnAsThemselves_data()
+{
+    QTest::addColumn<RectangleCase>("rectangle");
+
+    // a table top at y = 1, 2 m along x and 1 m along z, centred over (3, ·, 0)
+    QTest::newRow("table, width along x")
+        << RectangleCase{{0, 1, 0}, 1.0, {2, 1}, {3, 5, 0}, {1, 0, 0}, {2, 1, -0.5}, {4, 1, 0.5}, true};
+    // the default axis of a floor is n × x = -z: the width runs along z
+    QTest::newRow("table, default axis")
+        << RectangleCase{{0, 1, 0}, 1.0, {2, 1}, {0, 0, 0}, {0, 0, 0}, {-0.5, 1, -1}, {0.5, 1, 1}, true};
+    // an axis along the normal says nothing either
+    QTest::newRow("axis along the normal")
+        << RectangleCase{{0, 2, 0}, 1.0, {2, 1}, {0, 0, 0}, {0, -3, 0}, {-0.5, 1, -1}, {0.5, 1, 1}, true};
+    // a wall x = -2, 4 wide along z and 3 high, its centre dropped onto it from outside
+    QTest::newRow("wall")
+        << RectangleCase{{1, 0, 0}, -2.0, {4, 3}, {7, 1.5, 0}, {0.5, 0, 2}, {-2, 0, -2}, {-2, 3, 2}, true};
+    QTest::newRow("tilted") << RectangleCase{{0, 0.8f, -0.6f}, 0.25, {1.5, 0.5}, {1, 2, 3}, {1, 1, 1}, {}, {}, false};
+}
+
+void TestRenderData::rectanglesAreDrawnAsThemselves()
+{
+    QFETCH(RectangleCase, rectangle);
+    const QVector3D normal = rectangle.normal.normalized();
+    const float offset = float(rectangle.offset);
+    core::PlaneDesc plane;
+    plane.normal = Eigen::Vector3d(rectangle.normal.x(), rectangle.normal.y(), rectangle.normal.z()).normalized();
+    plane.offset = rectangle.offset;
+    plane.size = {rectangle.size.x(), rectangle.size.y()};
+    plane.centre = {rectangle.centre.x(), rectangle.centre.y(), rectangle.centre.z()};
+    plane.axis = {rectangle.axis.x(), rectangle.axis.y(), rectangle.axis.z()};
+
+    // the same quad wherever the scene is and however large it is
+    const std::vector<float> quads = ui::packPlaneQuads({plane}, ui::Sphere{QVector3D(0, 0, 0), 1.0f});
+    const std::vector<float> far = ui::packPlaneQuads({plane}, ui::Sphere{QVector3D(100, -50, 20), 300.0f});
+    QCOMPARE(quads.size(), std::size_t(6 * ui::kVertexFloats));
+    QVERIFY(quads == far);
+
+    // two triangles a b c, a c d over the four corners, all on the plane
+    std::vector<QVector3D> corners;
+    for (int v = 0; v < 6; ++v) {
+        const float *f = quads.data() + v * ui::kVertexFloats;
+        corners.emplace_back(f[0], f[1], f[2]);
+        QCOMPARE(f[6], ui::kPlaneAlpha);
+        QCOMPARE_LT(std::abs(QVector3D::dotProduct(normal, corners.back()) - offset), 1e-5f);
+    }
+    QCOMPARE(corners[3], corners[0]);
+    QCOMPARE(corners[4], corners[2]);
+    const QVector3D a = corners[0], b = corners[1], c = corners[2], d = corners[5];
+
+    // sides of the given size, at right angles
+    QCOMPARE_LT(std::abs((b - a).length() - float(rectangle.size.x())), 1e-5f);
+    QCOMPARE_LT(std::abs((c - b).length() - float(rectangle.size.y())), 1e-5f);
+    QCOMPARE_LT(std::abs(QVector3D::dotProduct(b - a, c - b)), 1e-5f);
+    QCOMPARE_LT(((a + c) * 0.5f - (b + d) * 0.5f).length(), 1e-5f);
+
+    // centred where the given centre drops onto the plane, the width along the axis as projected
+    const QVector3D foot = rectangle.centre - (QVector3D::dotProduct(normal, rectangle.centre) - offset) * normal;
+    QCOMPARE_LT(((a + c) * 0.5f - foot).length(), 1e-5f);
+    const QVector3D along = rectangle.axis - QVector3D::dotProduct(rectangle.axis, normal) * normal;
+    if (along.length() > 1e-6f)
+        QCOMPARE_LT(std::abs(std::abs(QVector3D::dotProduct((b - a).normalized(), along.normalized())) - 1.0f), 1e-5f);
+
+    // and, where worked out by hand, exactly there
+    if (rectangle.boxKnown) {
+        QVector3D lo = a, hi = a;
+        for (const QVector3D &p : {b, c, d}) {
+            lo = QVector3D(std::min(lo.x(), p.x()), std::min(lo.y(), p.y()), std::min(lo.z(), p.z()));
+            hi = QVector3D(std::max(hi.x(), p.x()), std::max(hi.y(), p.y()), std::max(hi.z(), p.z()));
+        }
+        QCOMPARE_LT((lo - rectangle.low).length(), 1e-5f);
+        QCOMPARE_LT((hi - rectangle.high).length(), 1e-5f);
     }
 }
 

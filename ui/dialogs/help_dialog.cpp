@@ -93,6 +93,26 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
     addEntry(tr("Status bar: ΔE"),
              tr("The change of the total energy since the last reset, in % of it (in J when it is about 0)"));
 
+    // contacts: the parameters dock's group and the inspector's planes
+    addSection(tr("Contacts"));
+    addEntry(tr("Parameters › Solver"),
+             tr("Iterative (the default: impacts located in time within the sub-step, then the resting contacts "
+                "solved together, so stacks and piles come to rest) or Handout (the course's single pass per "
+                "sub-step); undoable"));
+    addEntry(tr("Parameters › Restitution"),
+             tr("1 elastic … 0 fully inelastic, for every contact: the share of the approach speed a contact "
+                "gives back"));
+    addEntry(tr("Parameters › Friction"),
+             tr("The kinetic Coulomb coefficient μk (0 to 10): a sliding contact's friction is μk times the force "
+                "pressing it; live and undoable"));
+    addEntry(tr("Parameters › Static friction"),
+             tr("The static coefficient μs: a contact sticks while the friction it needs stays within μs times "
+                "that force. It follows Friction until set; Static follows friction makes it follow again"));
+    addEntry(tr("Inspector › Planes"),
+             tr("Two-sided: a thin wall instead of a half-space. Own friction: this plane's coefficient, static "
+                "and kinetic, instead of the scene's. Size w × h: a rectangle (two-sided, with edges, drawn as "
+                "itself) at Centre with its width along Axis; 0 is the whole plane"));
+
     // the timeline and tearing
     addSection(tr("Timeline"));
     addEntry(tr("Timeline slider, under the view"),

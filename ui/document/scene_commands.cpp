@@ -40,7 +40,9 @@ bool SettingsCommand::mergeWith(const QUndoCommand *other)
     const auto *next = static_cast<const SettingsCommand *>(other);
     if (m_mergeKey.isEmpty() || next->m_mergeKey != m_mergeKey)
         return false;
+    // the merged step says where it ended: "Set Friction to 2", not the drag's first value
     m_after = next->m_after;
+    setText(next->text());
     setObsolete(m_after == m_before);
     return true;
 }
@@ -85,6 +87,7 @@ bool SpringValueCommand::mergeWith(const QUndoCommand *other)
     if (next->m_field != m_field)
         return false;
     m_after = next->m_after;
+    setText(next->text());
     return true;
 }
 
@@ -116,6 +119,7 @@ bool SceneCommand::mergeWith(const QUndoCommand *other)
     if (m_mergeKey.isEmpty() || next->m_mergeKey != m_mergeKey)
         return false;
     m_after = next->m_after;
+    setText(next->text());
     setObsolete(*m_after == *m_before);
     return true;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Undo commands for the scene's parameters. Consecutive changes of the same parameter merge into
-// one command, so a slider drag is one step of undo.
+// one command, named after the last, so a slider drag is one step of undo that says where it ended.
 
 #include "core/scene.h"
 

@@ -5,6 +5,7 @@
 #include "ui/document/scene_document.h"
 #include "status_text.h"
 
+#include "core/solver_names.h"
 #include "core/stability.h"
 
 #include <QCheckBox>
@@ -68,6 +69,13 @@ const Binding kBindings[] = {
     {"restitution", core::Parameter::Restitution, Group::Contacts, "",
      [](const core::SceneDesc &s) { return s.settings.restitution; },
      [](core::Settings &s, double v) { s.restitution = v; }, nullptr},
+    {"friction", core::Parameter::Friction, Group::Contacts, "",
+     [](const core::SceneDesc &s) { return s.settings.friction; },
+     [](core::Settings &s, double v) { s.friction = v; }, nullptr},
+    // unset, the static coefficient follows friction and the row shows friction's; editing it sets it
+    {"staticFriction", core::Parameter::Friction, Group::Contacts, "",
+     [](const core::SceneDesc &s) { return s.settings.staticFriction.value_or(s.settings.friction); },
+     [](core::Settings &s, double v) { s.staticFriction = v; }, nullptr},
     {"stiffness", core::Parameter::Stiffness, Group::Springs, "", firstSpring<&core::SpringDesc::stiffness>,
      nullptr, &core::SpringDesc::stiffness},
     {"damping", core::Parameter::Damping, Group::Springs, "", firstSpring<&core::SpringDesc::damping>, nullptr,
@@ -94,6 +102,29 @@ QString integratorTip(core::Integrator integrator)
         return ParametersPanel::tr("First order, stable at any step but damps; a linear solve per step");
     case core::Integrator::AdaptiveRk45:
         return ParametersPanel::tr("Fifth order, shortens its steps to keep the local error under the tolerance");
+    }
+    return QString();
+}
+
+// the contact solvers as the panel names them, in core::kContactSolvers order
+QString contactSolverLabel(core::ContactSolver solver)
+{
+    switch (solver) {
+    case core::ContactSolver::Iterative: return ParametersPanel::tr("Iterative");
+    case core::ContactSolver::Handout: return ParametersPanel::tr("Handout");
+    }
+    return QString();
+}
+
+QString contactSolverTip(core::ContactSolver solver)
+{
+    switch (solver) {
+    case core::ContactSolver::Iterative:
+        return ParametersPanel::tr("Impacts located in time within the sub-step, then every resting contact solved "
+                                   "together with Coulomb friction, so stacks and piles come to rest (the default)");
+    case core::ContactSolver::Handout:
+        return ParametersPanel::tr("The course handout's single pass: each contact pushed apart and given an impulse "
+                                   "once per sub-step");
     }
     return QString();
 }
@@ -126,6 +157,17 @@ ParametersPanel::ParametersPanel(SceneDocument &document, QWidget *parent)
     }
     forms[std::size_t(Group::Time)]->addRow(tr("Integrator"), m_integrator);
     connect(m_integrator, &QComboBox::activated, this, &ParametersPanel::setIntegrator);
+
+    // the contact solver heads the contacts group
+    m_contactSolver = new QComboBox(this);
+    m_contactSolver->setObjectName(QStringLiteral("parameter-contactSolver"));
+    m_contactSolver->setToolTip(tr("How contacts between particles, and with planes, are resolved"));
+    for (core::ContactSolver solver : core::kContactSolvers) {
+        m_contactSolver->addItem(contactSolverLabel(solver));
+        m_contactSolver->setItemData(m_contactSolver->count() - 1, contactSolverTip(solver), Qt::ToolTipRole);
+    }
+    forms[std::size_t(Group::Contacts)]->addRow(tr("Solver"), m_contactSolver);
+    connect(m_contactSolver, &QComboBox::activated, this, &ParametersPanel::setContactSolver);
 
     // the springs group says what its values apply to
     m_springsNote = new QLabel(m_springsGroup);
@@ -161,6 +203,25 @@ ParametersPanel::ParametersPanel(SceneDocument &document, QWidget *parent)
     m_stabilityNote->setToolTip(tr("The largest sub-step the explicit integrators stay stable at, from the highest "
                                    "frequency of the springs (timeStep / substeps must stay under it)"));
     time->insertRow(substepsRow + 2, QString(), m_stabilityNote);
+
+    // the two friction rows share the table's entry; each says which coefficient it is, and a
+    // check box below them lets the static one follow the kinetic one again
+    ParameterRow *friction = row(QStringLiteral("friction"));
+    friction->setToolTip(tr("Kinetic Coulomb coefficient μk: a sliding contact's friction is μk times the force "
+                            "pressing it; a plane with friction of its own (Inspector) overrides it"));
+    ParameterRow *staticFriction = row(QStringLiteral("staticFriction"));
+    staticFriction->label()->setText(tr("Static friction"));
+    staticFriction->setToolTip(tr("Static Coulomb coefficient μs: a contact sticks while the friction it needs stays "
+                                  "within μs times the force pressing it; follows Friction until set here"));
+    QFormLayout *contacts = forms[std::size_t(Group::Contacts)];
+    int staticRow = 0;
+    contacts->getWidgetPosition(staticFriction, &staticRow, nullptr);
+    m_staticFollows = new QCheckBox(tr("Static follows friction"), this);
+    m_staticFollows->setObjectName(QStringLiteral("parameter-staticFollows"));
+    m_staticFollows->setToolTip(tr("The static coefficient equals the kinetic one (the file then leaves "
+                                   "staticFriction out); editing Static friction sets it apart"));
+    contacts->insertRow(staticRow + 1, QString(), m_staticFollows);
+    connect(m_staticFollows, &QCheckBox::toggled, this, &ParametersPanel::setStaticFollows);
 
     // the collision switches
     m_planeCollisions = new QCheckBox(tr("Plane collisions"), this);
@@ -212,6 +273,13 @@ void ParametersPanel::refresh()
         if (core::kIntegrators[i] == integrator)
             m_integrator->setCurrentIndex(int(i));
     row(QStringLiteral("tolerance"))->setEnabled(integrator == core::Integrator::AdaptiveRk45);
+    for (std::size_t i = 0; i < std::size(core::kContactSolvers); ++i)
+        if (core::kContactSolvers[i] == scene.settings.contactSolver)
+            m_contactSolver->setCurrentIndex(int(i));
+    {
+        const QSignalBlocker blockFollows(m_staticFollows);
+        m_staticFollows->setChecked(!scene.settings.staticFriction.has_value());
+    }
     {
         const QSignalBlocker blockAuto(m_autoSubsteps);
         m_autoSubsteps->setChecked(scene.settings.autoSubsteps);
@@ -274,6 +342,34 @@ void ParametersPanel::setIntegrator(int index)
     m_document.undoStack()->push(new SettingsCommand(
         m_document, tr("Set integrator to %1").arg(fromView(core::integratorName(integrator))),
         QString(), settings));
+}
+
+void ParametersPanel::setContactSolver(int index)
+{
+    if (index < 0 || index >= int(std::size(core::kContactSolvers)))
+        return;
+    const core::ContactSolver solver = core::kContactSolvers[index];
+    if (solver == m_document.scene().settings.contactSolver)
+        return;
+    m_message->hide();
+    core::Settings settings = m_document.scene().settings;
+    settings.contactSolver = solver;
+    m_document.undoStack()->push(new SettingsCommand(
+        m_document, tr("Set contact solver to %1").arg(fromView(core::contactSolverName(solver))), QString(),
+        settings));
+}
+
+void ParametersPanel::setStaticFollows(bool follows)
+{
+    // following: unset; set apart: it keeps the value it showed, friction's
+    core::Settings settings = m_document.scene().settings;
+    if (follows == !settings.staticFriction.has_value())
+        return;
+    m_message->hide();
+    settings.staticFriction = follows ? std::nullopt : std::optional<double>(settings.friction);
+    m_document.undoStack()->push(new SettingsCommand(
+        m_document, follows ? tr("Let static friction follow friction") : tr("Set static friction apart"), QString(),
+        settings));
 }
 
 void ParametersPanel::setAutoSubsteps(bool on)

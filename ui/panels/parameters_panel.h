@@ -1,9 +1,10 @@
 #pragma once
 // ParametersPanel: the dock that tunes the scene's parameters live. Its rows are generated from
 // the parameter table (core/parameters.h), one ParameterRow per binding below, never written out
-// widget by widget; the integrator is a combo box of core::kIntegrators. An accepted change
-// becomes an undo command on the document, which the main window forwards to the worker; a
-// refused one is reported here and goes nowhere.
+// widget by widget; the integrator and the contact solver are combo boxes of core::kIntegrators and
+// core::kContactSolvers, and the static friction row follows the friction row until it is set (a
+// check box lets it follow again). An accepted change becomes an undo command on the document,
+// which the main window forwards to the worker; a refused one is reported here and goes nowhere.
 
 #include <QString>
 #include <QWidget>
@@ -38,6 +39,10 @@ public:
     QCheckBox *planeCollisionsBox() const { return m_planeCollisions; }
     QCheckBox *particleCollisionsBox() const { return m_particleCollisions; }
     QCheckBox *autoSubstepsBox() const { return m_autoSubsteps; }
+    // the contact solvers in core::kContactSolvers order: "Iterative", "Handout"
+    QComboBox *contactSolverBox() const { return m_contactSolver; }
+    // checked while the static friction is unset and follows the friction row
+    QCheckBox *staticFollowsBox() const { return m_staticFollows; }
     // "Stable sub-step ≤ 3.1 ms; each is 10 ms, 3.2× over: ...", coloured by how near the limit
     QLabel *stabilityLabel() const { return m_stabilityNote; }
 
@@ -59,6 +64,8 @@ private:
     void setCollisions(bool planes, bool particles);
     void setIntegrator(int index);
     void setAutoSubsteps(bool on);
+    void setContactSolver(int index);
+    void setStaticFollows(bool follows);
 
     SceneDocument &m_document;
     std::vector<ParameterRow *> m_rows;  // one per binding, in the bindings' order
@@ -68,6 +75,8 @@ private:
     QCheckBox *m_planeCollisions = nullptr;
     QCheckBox *m_particleCollisions = nullptr;
     QCheckBox *m_autoSubsteps = nullptr;
+    QComboBox *m_contactSolver = nullptr;
+    QCheckBox *m_staticFollows = nullptr;
     QLabel *m_stabilityNote = nullptr;
     QLabel *m_message = nullptr;
 };

@@ -1,5 +1,7 @@
 #include "render_data.h"
 
+#include "core/colliders.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -272,6 +274,19 @@ std::vector<float> packPlaneQuads(const std::vector<core::PlaneDesc> &planes, co
         const QVector3D n = toVector(plane.normal).normalized();
         if (n.isNull())
             continue;
+
+        // a rectangle is drawn as exactly the quad that collides: its corners from the collider
+        // the core compiles it to (the settings only lend it friction, which is not drawn)
+        if (plane.bounded()) {
+            const core::Collider quad = core::makeCollider(plane, core::Settings{});
+            const QVector3D centre = toVector(quad.centre);
+            const QVector3D u = toVector(quad.axisU * quad.halfWidth);
+            const QVector3D v = toVector(quad.axisV * quad.halfHeight);
+            const QVector3D a = centre - u - v, b = centre + u - v, c = centre + u + v, d = centre - u + v;
+            for (const QVector3D &corner : {a, b, c, a, c, d})
+                pushVertex(vertices, corner, kPlaneColour, kPlaneAlpha);
+            continue;
+        }
 
         // the point of the plane nearest the scene's centre, and two directions along the plane
         const QVector3D foot = scene.centre - (QVector3D::dotProduct(n, scene.centre) - float(plane.offset)) * n;

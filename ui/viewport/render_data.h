@@ -105,7 +105,8 @@ SphereMesh icosphere(int subdivisions);
 // the x, y and z axes from the origin in red, green and blue
 std::vector<float> packAxes(float length);
 
-// two triangles per plane: a square of the plane around the scene's centre, translucent
+// two triangles per plane, translucent: for an unbounded plane a square of it around the scene's
+// centre, for a rectangle (core::PlaneDesc::bounded) exactly the rectangle that collides
 std::vector<float> packPlaneQuads(const std::vector<core::PlaneDesc> &planes, const Sphere &scene);
 
 }  // namespace ui

@@ -1,0 +1,74 @@
+#pragma once
+// What the iterative contact solver (contacts.cpp) keeps between its passes within a sub-step:
+// where each particle started, the impacts found along the paths, the contacts it solves and their
+// accumulated impulses. All of it is rebuilt every sub-step (nothing carries over, so a resumed run
+// solves exactly as the run it continues) and lives in the Workspace, so that a step allocates
+// nothing once the arrays have reached the scene's size.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+namespace core {
+
+// a contact of free particle i with particle j, or with collider -1 - j when j < 0
+struct Contact {
+    int i = 0;
+    int j = 0;
+    int order = 0;  // the level it is solved at: lowest first (contacts.cpp, "shock propagation")
+    double side = 1.0;                                 // a collider's side particle i started on
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  // unit, towards i
+    double targetSpeed = 0.0;       // m/s, the separating normal speed the solve aims at
+    double friction = 0.0;          // μk
+    double staticFriction = 0.0;    // μs
+    double normalImpulse = 0.0;     // per unit inverse mass: N·s, accumulated over the iterations
+    Eigen::Vector3d frictionImpulse = Eigen::Vector3d::Zero();  // N·s, accumulated
+    double pushed = 0.0;            // m·kg, the position correction along the normal, accumulated
+    Eigen::Vector3d heldBack = Eigen::Vector3d::Zero();  // m·kg, friction's correction along the surface
+    bool deferred = false;  // a near miss closing faster than a resting contact
+    bool stuck = false;  // the position solve held it in place along its surface
+
+    bool withCollider() const { return j < 0; }
+    int collider() const { return -1 - j; }
+};
+
+// an impact found along the paths: the time within the sub-step, and the pair or particle and collider
+struct Impact {
+    double time = 0.0;  // s since the sub-step began
+    int i = 0;
+    int j = 0;  // as Contact::j
+
+    bool operator<(const Impact &other) const
+    {
+        if (time != other.time)
+            return time < other.time;
+        if (i != other.i)
+            return i < other.i;
+        return j < other.j;
+    }
+};
+
+struct ContactScratch {
+    Eigen::Matrix3Xd startPosition;  // m, at the sub-step's start
+    Eigen::Matrix3Xd startVelocity;  // m/s
+    Eigen::Matrix3Xd sweptCentre;    // m, the middle of each particle's move through the sub-step
+    Eigen::VectorXd sweptRadius;     // m, a sphere about it holding the particle all along its path
+
+    std::vector<Impact> impacts;
+    std::vector<std::uint8_t> impacted;  // per particle: it took part in an impact this sub-step
+
+    std::vector<Contact> contacts;
+    std::vector<Contact> sorted;  // the same, in the order they are solved
+    // the pair contacts as an adjacency list, for the levels: particle p's neighbours are
+    // neighbours[neighbourStart[p] .. neighbourStart[p + 1])
+    std::vector<int> neighbourStart;
+    std::vector<int> neighbours;
+    std::vector<int> level;  // per particle: contacts between it and the ground, by breadth-first search
+    std::vector<int> queue;
+    std::vector<int> levelStart;  // counting sort of the contacts by level
+
+    std::uint64_t impactsResolved = 0;  // counters for the tests and the benchmark
+    std::uint64_t contactsSolved = 0;
+};
+
+}  // namespace core

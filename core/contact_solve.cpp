@@ -1,0 +1,350 @@
+// The resting contacts: every particle overlapping a collider or another particle at the end of the
+// sub-step, solved together by sequential impulses (Gauss-Seidel over the contacts, impulses
+// accumulated and clamped: a contact pushes, never pulls, and its friction stays inside the
+// Coulomb cone), then by the same iteration on positions. Velocities and positions are solved
+// apart, so that pushing an overlap out adds no speed. Contacts are solved from the ground up:
+// a particle's level is the number of contacts between it and a collider or a pinned particle,
+// and in the last iteration of each solve the lower particle of a pair counts as immovable, so a
+// stack or a pile carries its weight down to the ground in one sweep ("shock propagation",
+// Guendelman, Bridson and Fedkiw 2003) instead of sinking a little every sub-step.
+
+#include "broad_phase.h"
+#include "geometry.h"
+#include "passes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace core {
+
+namespace {
+
+constexpr int kVelocityIterations = 8;
+constexpr int kPositionIterations = 4;
+constexpr int kUnreached = std::numeric_limits<int>::max();
+
+// the contacts at the end of the sub-step: every overlap, and every near miss closer than a resting
+// contact comes in a sub-step that is not closing faster than one (a speculative contact: it may
+// close its gap but not overlap). The near misses let a stack stop as one: when the floor stops
+// the bottom ball, the ball on it, still falling with it, is already a contact.
+void gather(const Model &model, State &state, Workspace &work, double h)
+{
+    ContactScratch &scratch = work.contactSolver;
+    scratch.contacts.clear();
+    // m: how near counts as a near miss; never more than a particle's radius, so that a huge gravity
+    // or step cannot make every particle a near miss of every other
+    const double reach = model.restingSpeed * h;
+    const auto add = [&](int i, int j, double side, const Eigen::Vector3d &normal, double gap, double friction,
+                         double staticFriction) {
+        const Eigen::Vector3d vj = j >= 0 ? Eigen::Vector3d(state.velocity.col(j)) : Eigen::Vector3d::Zero();
+        const double approach = normal.dot(state.velocity.col(i) - vj);
+        const bool fast = -approach > restingThreshold(model, normal);
+        Contact c;
+        // an impact to come, unless it is inside a pile (decided below)
+        c.deferred = gap >= 0.0 && fast;
+        c.i = i;
+        c.j = j;
+        c.side = side;
+        c.normal = normal;
+        c.friction = friction;
+        c.staticFriction = staticFriction;
+        // restitution once, from the approach speed before the solve; a contact slower than
+        // gravity makes it in a sub-step along its normal is resting, and stays put
+        c.targetSpeed = gap > 0.0 ? -gap / h : fast ? -model.restitution * approach : 0.0;
+        scratch.contacts.push_back(c);
+    };
+
+    if (model.plan.planeCollisions)
+        for (int i : model.freeParticles)
+            for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k) {
+                const Collider &collider = model.colliders[std::size_t(k)];
+                const double side = sideOf(collider, scratch.startPosition.col(i));
+                const Separation s = separation(collider, state.position.col(i), side);
+                const double gap = s.distance - model.radius[i];
+                if (gap < std::min(reach, model.radius[i]))
+                    add(i, -1 - k, side, s.normal, gap, collider.friction, collider.staticFriction);
+            }
+
+    if (model.plan.particleCollisions) {
+        ContactGrid &grid = work.contacts;
+        scratch.sweptRadius = model.radius.array() + model.radius.array().min(0.5 * reach);
+        if (grid.bruteForce)
+            findContactsBruteForce(model, state.position, scratch.sweptRadius, grid.pairs);
+        else
+            findContacts(model, state.position, scratch.sweptRadius, grid);
+        for (const ContactPair &pair : grid.pairs) {
+            // i the free one: a pinned particle never moves, whichever end it is
+            const bool swap = model.invMass[pair.i] == 0.0;
+            const int i = swap ? pair.j : pair.i;
+            const int j = swap ? pair.i : pair.j;
+            const Eigen::Vector3d d = state.position.col(i) - state.position.col(j);
+            const double distance = d.norm();
+            const Eigen::Vector3d normal = apart(distance) ? Eigen::Vector3d(d / distance) : coincidentAxis(pair.i, pair.j);
+            add(i, j, 1.0, normal, distance - model.radius[i] - model.radius[j], model.friction, model.staticFriction);
+        }
+    }
+
+    // a near miss closing fast is an impact to come, located in time in the next sub-step, when
+    // neither particle touches anything else: braking it here would take energy from a bounce. In
+    // a pile it is braked now, since the impact would be resolved as if the two were alone
+    if (std::none_of(scratch.contacts.begin(), scratch.contacts.end(), [](const Contact &c) { return c.deferred; }))
+        return;
+    std::vector<int> &touching = scratch.queue;  // borrowed: per particle, contacts that are not impacts to come
+    touching.assign(std::size_t(model.particleCount()), 0);
+    for (const Contact &c : scratch.contacts)
+        if (!c.deferred) {
+            touching[std::size_t(c.i)] += 1;
+            if (!c.withCollider())
+                touching[std::size_t(c.j)] += 1;
+        }
+    const auto alone = [&](const Contact &c) {
+        return c.deferred && touching[std::size_t(c.i)] == 0 && (c.withCollider() || touching[std::size_t(c.j)] == 0);
+    };
+    scratch.contacts.erase(std::remove_if(scratch.contacts.begin(), scratch.contacts.end(), alone), scratch.contacts.end());
+}
+
+// each particle's level above the ground, and the contacts sorted by it
+void sortByLevel(const Model &model, ContactScratch &scratch)
+{
+    const int n = model.particleCount();
+    scratch.level.assign(std::size_t(n), kUnreached);
+    scratch.neighbourStart.assign(std::size_t(n) + 1, 0);
+    scratch.queue.clear();
+    const auto ground = [&](int p) {
+        if (scratch.level[std::size_t(p)] != 0) {
+            scratch.level[std::size_t(p)] = 0;
+            scratch.queue.push_back(p);
+        }
+    };
+    // the ground: a collider that carries weight (facing against gravity within 60°), or a pinned
+    // particle; a wall holds nothing up, and without gravity nothing is above anything
+    const double weight = model.gravity.norm();
+    const auto carries = [&](const Eigen::Vector3d &normal) { return weight > 0.0 && -normal.dot(model.gravity) > 0.5 * weight; };
+    for (const Contact &c : scratch.contacts) {
+        if (c.withCollider()) {
+            if (carries(c.normal))
+                ground(c.i);
+            continue;
+        }
+        if (model.invMass[c.j] == 0.0 && carries(c.normal))
+            ground(c.i);
+        scratch.neighbourStart[std::size_t(c.i) + 1] += 1;
+        scratch.neighbourStart[std::size_t(c.j) + 1] += 1;
+    }
+    for (int p = 0; p < n; ++p)
+        scratch.neighbourStart[std::size_t(p) + 1] += scratch.neighbourStart[std::size_t(p)];
+    scratch.neighbours.resize(std::size_t(scratch.neighbourStart[std::size_t(n)]));
+    std::vector<int> &fill = scratch.levelStart;  // borrowed as the fill cursor
+    fill.assign(scratch.neighbourStart.begin(), scratch.neighbourStart.end() - 1);
+    for (const Contact &c : scratch.contacts)
+        if (!c.withCollider()) {
+            scratch.neighbours[std::size_t(fill[std::size_t(c.i)]++)] = c.j;
+            scratch.neighbours[std::size_t(fill[std::size_t(c.j)]++)] = c.i;
+        }
+
+    // breadth first from the ground, through free particles only
+    for (std::size_t head = 0; head < scratch.queue.size(); ++head) {
+        const int p = scratch.queue[head];
+        const int next = scratch.level[std::size_t(p)] + 1;
+        for (int e = scratch.neighbourStart[std::size_t(p)]; e < scratch.neighbourStart[std::size_t(p) + 1]; ++e) {
+            const int q = scratch.neighbours[std::size_t(e)];
+            if (model.invMass[q] != 0.0 && scratch.level[std::size_t(q)] == kUnreached) {
+                scratch.level[std::size_t(q)] = next;
+                scratch.queue.push_back(q);
+            }
+        }
+    }
+
+    // the contacts by level, stable: colliders and pinned partners first, then upwards; contacts
+    // out of reach of the ground last
+    int top = 0;
+    for (Contact &c : scratch.contacts) {
+        const int li = scratch.level[std::size_t(c.i)];
+        const int lj = c.withCollider() || model.invMass[c.j] == 0.0 ? -1 : scratch.level[std::size_t(c.j)];
+        const int low = std::min(li, lj);
+        c.order = low == kUnreached ? -2 : low + 1;  // -2: marks "unreached" until the sort below
+        top = std::max(top, c.order);
+    }
+    const int unreached = top + 1;
+    for (Contact &c : scratch.contacts)
+        if (c.order == -2)
+            c.order = unreached;
+    scratch.levelStart.assign(std::size_t(unreached) + 2, 0);
+    for (const Contact &c : scratch.contacts)
+        scratch.levelStart[std::size_t(c.order) + 1] += 1;
+    for (std::size_t l = 1; l < scratch.levelStart.size(); ++l)
+        scratch.levelStart[l] += scratch.levelStart[l - 1];
+    scratch.sorted.resize(scratch.contacts.size());
+    for (const Contact &c : scratch.contacts)
+        scratch.sorted[std::size_t(scratch.levelStart[std::size_t(c.order)]++)] = c;
+}
+
+// the inverse masses of a contact's two sides in this iteration: in the last, the side nearer the
+// ground stands still
+struct Weights {
+    double i = 0.0, j = 0.0;
+    double sum() const { return i + j; }
+};
+Weights weights(const Model &model, const ContactScratch &scratch, const Contact &c, bool shock)
+{
+    Weights w{model.invMass[c.i], c.withCollider() ? 0.0 : model.invMass[c.j]};
+    if (shock && w.j != 0.0) {
+        const int li = scratch.level[std::size_t(c.i)];
+        const int lj = scratch.level[std::size_t(c.j)];
+        if (li < lj)
+            w.i = 0.0;
+        else if (lj < li)
+            w.j = 0.0;
+    }
+    return w;
+}
+
+void applyImpulse(State &state, const Contact &c, const Weights &w, const Eigen::Vector3d &impulse)
+{
+    state.velocity.col(c.i) += w.i * impulse;
+    if (!c.withCollider())
+        state.velocity.col(c.j) -= w.j * impulse;
+}
+
+Eigen::Vector3d relativeVelocity(const State &state, const Contact &c)
+{
+    return c.withCollider() ? Eigen::Vector3d(state.velocity.col(c.i))
+                            : Eigen::Vector3d(state.velocity.col(c.i) - state.velocity.col(c.j));
+}
+
+// sequential impulses: the normal impulse towards the target speed, then friction within the cone
+void solveVelocities(const Model &model, State &state, ContactScratch &scratch)
+{
+    for (int iteration = 0; iteration < kVelocityIterations; ++iteration) {
+        const bool shock = iteration == kVelocityIterations - 1;
+        for (Contact &c : scratch.sorted) {
+            const Weights w = weights(model, scratch, c, shock);
+            if (!(w.sum() > 0.0))
+                continue;
+            const double speed = c.normal.dot(relativeVelocity(state, c));
+            const double total = std::max(c.normalImpulse + (c.targetSpeed - speed) / w.sum(), 0.0);
+            applyImpulse(state, c, w, (total - c.normalImpulse) * c.normal);
+            c.normalImpulse = total;
+
+            const Eigen::Vector3d v = relativeVelocity(state, c);
+            const Eigen::Vector3d slip = v - c.normal.dot(v) * c.normal;
+            Eigen::Vector3d accumulated = c.frictionImpulse - slip / w.sum();
+            const double size = accumulated.norm();
+            if (size > c.staticFriction * c.normalImpulse)
+                accumulated *= c.friction * c.normalImpulse / size;  // sliding: kinetic friction
+            applyImpulse(state, c, w, accumulated - c.frictionImpulse);
+            c.frictionImpulse = accumulated;
+        }
+    }
+}
+
+// how far i lies into the surface of the contact's other side, along the current normal
+double overlapOf(const Model &model, const State &state, Contact &c)
+{
+    if (c.withCollider()) {
+        const Separation s = separation(model.colliders[std::size_t(c.collider())], state.position.col(c.i), c.side);
+        c.normal = s.normal;
+        return model.radius[c.i] - s.distance;
+    }
+    const Eigen::Vector3d d = state.position.col(c.i) - state.position.col(c.j);
+    const double distance = d.norm();
+    if (apart(distance))
+        c.normal = d / distance;
+    return model.radius[c.i] + model.radius[c.j] - distance;
+}
+
+// the overlaps pushed out, weighted by inverse mass, each followed by friction on the contact's
+// displacement along its surface since the sub-step began: while that is within μs times the push
+// it is undone (the contact sticks), else it is held back by μk times the push (it slides). Both are
+// accumulated and clamped like the impulses, so the iterations converge on one answer
+void solvePositions(const Model &model, State &state, ContactScratch &scratch)
+{
+    for (int iteration = 0; iteration < kPositionIterations; ++iteration) {
+        const bool shock = iteration == kPositionIterations - 1;
+        for (Contact &c : scratch.sorted) {
+            const Weights w = weights(model, scratch, c, shock);
+            if (!(w.sum() > 0.0))
+                continue;
+            const double overlap = overlapOf(model, state, c);
+            if (overlap > 0.0) {
+                const double push = overlap / w.sum();
+                state.position.col(c.i) += (w.i * push) * c.normal;
+                if (!c.withCollider())
+                    state.position.col(c.j) -= (w.j * push) * c.normal;
+                c.pushed += push;
+            }
+            if (!(c.pushed > 0.0))
+                continue;
+            Eigen::Vector3d moved = state.position.col(c.i) - scratch.startPosition.col(c.i);
+            if (!c.withCollider())
+                moved -= state.position.col(c.j) - scratch.startPosition.col(c.j);
+            const Eigen::Vector3d slide = moved - c.normal.dot(moved) * c.normal;
+            Eigen::Vector3d held = c.heldBack + slide / w.sum();
+            const double size = held.norm();
+            c.stuck = !(size > c.staticFriction * c.pushed);
+            if (!c.stuck)
+                held *= c.friction * c.pushed / size;
+            const Eigen::Vector3d correction = held - c.heldBack;
+            state.position.col(c.i) -= w.i * correction;
+            if (!c.withCollider())
+                state.position.col(c.j) += w.j * correction;
+            c.heldBack = held;
+        }
+    }
+}
+
+// the colliders have the last word: a particle the solve moved (a pair may push it into a collider
+// it was clear of when the contacts were gathered) is put back on every collider's surface, so a
+// wall or a floor is never crossed, however the pairs are packed (they may overlap a little)
+void keepOutOfColliders(const Model &model, State &state, ContactScratch &scratch)
+{
+    const auto keepOut = [&](int p) {
+        for (const Collider &collider : model.colliders) {
+            const Separation s =
+                separation(collider, state.position.col(p), sideOf(collider, scratch.startPosition.col(p)));
+            if (s.distance < model.radius[p])
+                state.position.col(p) += (model.radius[p] - s.distance) * s.normal;
+        }
+    };
+    for (const Contact &c : scratch.sorted) {
+        keepOut(c.i);
+        if (!c.withCollider() && model.invMass[c.j] != 0.0)
+            keepOut(c.j);
+    }
+}
+
+// a contact whose position stuck moves as one along its surface: the slip left in the velocities
+// (the velocity solve's cone is set by the impulses, which a pile's weight need not reach) is taken
+// out, so that what stays put also stands still
+void stopStuckSlip(const Model &model, State &state, ContactScratch &scratch)
+{
+    for (const Contact &c : scratch.sorted) {
+        if (!c.stuck)
+            continue;
+        const Weights w = weights(model, scratch, c, false);
+        if (!(w.sum() > 0.0))
+            continue;
+        const Eigen::Vector3d v = relativeVelocity(state, c);
+        const Eigen::Vector3d slip = v - c.normal.dot(v) * c.normal;
+        applyImpulse(state, c, w, -slip / w.sum());
+    }
+}
+
+}  // namespace
+
+void solveRestingContacts(const Model &model, State &state, Workspace &work, double h)
+{
+    ContactScratch &scratch = work.contactSolver;
+    gather(model, state, work, h);
+    if (scratch.contacts.empty())
+        return;
+    sortByLevel(model, scratch);
+    solveVelocities(model, state, scratch);
+    solvePositions(model, state, scratch);
+    keepOutOfColliders(model, state, scratch);
+    stopStuckSlip(model, state, scratch);
+    scratch.contactsSolved += scratch.sorted.size();
+}
+
+}  // namespace core

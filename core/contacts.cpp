@@ -1,0 +1,62 @@
+// The iterative contact solver, the default (settings.contactSolver "iterative"; the handout's
+// passes are plane_collisions.cpp and particle_collisions.cpp). Per sub-step, after the integrator:
+//   1. impacts located in time along the particles' paths (contact_impacts.cpp);
+//   2. the resting contacts solved together, velocities then positions, with Coulomb friction
+//      (contact_solve.cpp).
+// docs/physics.md, "Contacts", gives the model and the reasons for it.
+
+#include "passes.h"
+
+#include <cmath>
+
+namespace core {
+
+double restingThreshold(const Model &model, const Eigen::Vector3d &normal)
+{
+    // twice what gravity adds to the speed along the normal in one sub-step: a contact slower than
+    // this is a particle settling under its weight, not an impact
+    return 2.0 * std::abs(model.gravity.dot(normal)) * model.subStep();
+}
+
+void rememberSubStepStart(const Model &model, const State &state, Workspace &work)
+{
+    if (!model.plan.contactSolver)
+        return;
+    work.contactSolver.startPosition = state.position;
+    work.contactSolver.startVelocity = state.velocity;
+}
+
+namespace {
+
+// room for a dense packing's contacts (about six per particle, and each free particle on every
+// collider), so that a sub-step allocates nothing once the first has run
+void reserve(const Model &model, ContactScratch &scratch)
+{
+    const std::size_t n = std::size_t(model.particleCount());
+    const std::size_t contacts = 6 * n + model.freeParticles.size() * model.colliders.size();
+    if (scratch.contacts.capacity() >= contacts)
+        return;
+    scratch.contacts.reserve(contacts);
+    scratch.sorted.reserve(contacts);
+    scratch.impacts.reserve(contacts);
+    scratch.neighbours.reserve(2 * contacts);
+    scratch.neighbourStart.reserve(n + 1);
+    scratch.level.reserve(n);
+    scratch.queue.reserve(n);
+    scratch.levelStart.reserve(n + 3);
+    scratch.impacted.reserve(n);
+}
+
+}  // namespace
+
+void solveContacts(const Model &model, State &state, Workspace &work)
+{
+    if (!model.plan.contactSolver)
+        return;
+    reserve(model, work.contactSolver);
+    const double h = model.subStep();
+    resolveImpacts(model, state, work, h);
+    solveRestingContacts(model, state, work, h);
+}
+
+}  // namespace core
