@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace core {
@@ -85,49 +86,72 @@ void collidersAlongPaths(const Model &model, const State &state, ContactScratch 
     }
 }
 
-// the impacts of pairs: candidates from the broad phase over swept spheres, each particle's whole
-// path inside a sphere about its midpoint
+// one candidate pair: an impact if the two were apart at the start, their chords come within reach
+// of each other, and conservative advancement along their paths finds them touching faster than a
+// resting contact
+void pairAlongPaths(const Model &model, const State &state, ContactScratch &scratch, int i, int j, double h)
+{
+    if (model.invMass[i] == 0.0 && model.invMass[j] == 0.0)
+        return;
+    const double contact = model.radius[i] + model.radius[j];
+    const Eigen::Vector3d d0 = scratch.startPosition.col(i) - scratch.startPosition.col(j);
+    if (!(d0.norm() > contact))
+        return;  // touching from the start: a resting contact (or not finite)
+    // the chords of the two paths: clear of each other all along them by more than the paths can
+    // bulge, they cannot meet
+    const Eigen::Vector3d d1 = state.position.col(i) - state.position.col(j);
+    const Eigen::Vector3d chord = d1 - d0;
+    const double along = chord.squaredNorm() > 0.0 ? std::clamp(-d0.dot(chord) / chord.squaredNorm(), 0.0, 1.0) : 0.0;
+    if (!((d0 + along * chord).norm() <= contact + bulge(model, state, scratch, i, h) + bulge(model, state, scratch, j, h)))
+        return;
+    const ParticlePath a = pathOf(model, state, scratch, i, h);
+    const ParticlePath b = pathOf(model, state, scratch, j, h);
+    const auto gap = [&](double t) { return (a.position(t) - b.position(t)).norm() - contact; };
+    const std::optional<double> t = firstTouch(gap, a.speedBound() + b.speedBound(), h, contact);
+    if (!t)
+        return;
+    const Eigen::Vector3d normal = (a.position(*t) - b.position(*t)).normalized();
+    if (-normal.dot(a.velocity(*t) - b.velocity(*t)) > restingThreshold(model, normal))
+        scratch.impacts.push_back({*t, i, j});
+}
+
+// the impacts of pairs. A particle that moves less than a few radii in the sub-step goes into the
+// broad phase as a sphere about its path's midpoint holding the whole path; a faster one stays out
+// of it (its sphere would make every particle its neighbour, and the grid quadratic) and has its
+// chord checked against every particle instead, which stores nothing
 void pairsAlongPaths(const Model &model, const State &state, Workspace &work, double h)
 {
+    constexpr double kFast = 4.0;  // radii moved in a sub-step past which a particle is fast
     ContactScratch &scratch = work.contactSolver;
     const int n = model.particleCount();
     scratch.sweptCentre.resize(3, n);
     scratch.sweptRadius.resize(n);
+    scratch.fast.clear();
+    scratch.isFast.assign(std::size_t(n), 0);
     for (int i = 0; i < n; ++i) {
         const auto x0 = scratch.startPosition.col(i);
         const auto x1 = state.position.col(i);
-        scratch.sweptCentre.col(i) = 0.5 * (x0 + x1);
-        scratch.sweptRadius[i] = model.radius[i] + 0.5 * (x1 - x0).norm() + bulge(model, state, scratch, i, h);
+        const double sweep = 0.5 * (x1 - x0).norm() + bulge(model, state, scratch, i, h);
+        if (sweep > kFast * model.radius[i]) {
+            scratch.fast.push_back(i);
+            scratch.isFast[std::size_t(i)] = 1;
+            scratch.sweptCentre.col(i).setConstant(std::numeric_limits<double>::quiet_NaN());  // out of the grid
+        } else {
+            scratch.sweptCentre.col(i) = 0.5 * (x0 + x1);
+        }
+        scratch.sweptRadius[i] = model.radius[i] + sweep;
     }
     ContactGrid &grid = work.contacts;
     if (grid.bruteForce)
         findContactsBruteForce(model, scratch.sweptCentre, scratch.sweptRadius, grid.pairs);
     else
         findContacts(model, scratch.sweptCentre, scratch.sweptRadius, grid);
-
-    for (const ContactPair &pair : grid.pairs) {
-        const int i = pair.i, j = pair.j;
-        const double contact = model.radius[i] + model.radius[j];
-        if (!((scratch.startPosition.col(i) - scratch.startPosition.col(j)).norm() > contact))
-            continue;  // touching from the start: a resting contact
-        // the chords of the two paths: clear of each other all along them by more than the paths
-        // can bulge, they cannot meet
-        const Eigen::Vector3d d0 = scratch.startPosition.col(i) - scratch.startPosition.col(j);
-        const Eigen::Vector3d d1 = state.position.col(i) - state.position.col(j);
-        const Eigen::Vector3d chord = d1 - d0;
-        const double along = chord.squaredNorm() > 0.0 ? std::clamp(-d0.dot(chord) / chord.squaredNorm(), 0.0, 1.0) : 0.0;
-        if ((d0 + along * chord).norm() > contact + bulge(model, state, scratch, i, h) + bulge(model, state, scratch, j, h))
-            continue;
-        const ParticlePath a = pathOf(model, state, scratch, i, h);
-        const ParticlePath b = pathOf(model, state, scratch, j, h);
-        const auto gap = [&](double t) { return (a.position(t) - b.position(t)).norm() - contact; };
-        const std::optional<double> t = firstTouch(gap, a.speedBound() + b.speedBound(), h, contact);
-        if (!t)
-            continue;
-        const Eigen::Vector3d normal = (a.position(*t) - b.position(*t)).normalized();
-        if (-normal.dot(a.velocity(*t) - b.velocity(*t)) > restingThreshold(model, normal))
-            scratch.impacts.push_back({*t, i, j});
-    }
+    for (const ContactPair &pair : grid.pairs)
+        pairAlongPaths(model, state, scratch, pair.i, pair.j, h);
+    for (int i : scratch.fast)
+        for (int j = 0; j < n; ++j)
+            if (j != i && !(scratch.isFast[std::size_t(j)] && j < i))
+                pairAlongPaths(model, state, scratch, std::min(i, j), std::max(i, j), h);
 }
 
 // the impulse of one impact at its time: restitution along the normal, Coulomb friction across it

@@ -53,6 +53,8 @@ struct ContactScratch {
     Eigen::Matrix3Xd startVelocity;  // m/s
     Eigen::Matrix3Xd sweptCentre;    // m, the middle of each particle's move through the sub-step
     Eigen::VectorXd sweptRadius;     // m, a sphere about it holding the particle all along its path
+    std::vector<int> fast;               // the particles that move too far for the grid this sub-step
+    std::vector<std::uint8_t> isFast;    // per particle
 
     std::vector<Impact> impacts;
     std::vector<std::uint8_t> impacted;  // per particle: it took part in an impact this sub-step

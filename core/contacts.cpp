@@ -45,6 +45,8 @@ void reserve(const Model &model, ContactScratch &scratch)
     scratch.queue.reserve(n);
     scratch.levelStart.reserve(n + 3);
     scratch.impacted.reserve(n);
+    scratch.isFast.reserve(n);
+    scratch.fast.reserve(n);
 }
 
 }  // namespace
