@@ -13,6 +13,7 @@
 #include "scene_file.h"
 
 #include "json_scan.h"
+#include "safe_write.h"
 
 #include "core/solver_names.h"
 #include "core/validate.h"
@@ -825,6 +826,9 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
 SaveResult saveScene(const QString &path, const core::SceneDesc &scene)
 {
     const QString shown = QDir::toNativeSeparators(path);
+    // a device node or a FIFO is refused before anything is written: the rename would replace it
+    if (const QString refused = refuseToReplace(path); !refused.isEmpty())
+        return {shown + u": cannot save: "_s + refused};
     const QByteArray json = sceneToJson(scene);
 
     // QSaveFile writes a temporary file and renames it over the old one only once all is written

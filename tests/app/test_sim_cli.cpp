@@ -17,6 +17,8 @@
 #include <charconv>
 #include <cstdint>
 
+#include <sys/stat.h>
+
 using namespace Qt::Literals::StringLiterals;
 
 namespace {
@@ -120,6 +122,7 @@ private slots:
     void durationRoundsToSteps_data();
     void durationRoundsToSteps();
     void overridesReachTheOutput();
+    void outputRefusesWhatIsNotAFile();
     void resumeEqualsUninterrupted_data();
     void resumeEqualsUninterrupted();
     void replayRunsARecordingToItsBits();
@@ -332,6 +335,26 @@ void TestSimCli::overridesReachTheOutput()
     QVERIFY(result.scene->settings.contactSolver == core::ContactSolver::Handout);
     QCOMPARE(result.scene->settings.viscosity, testScene().settings.viscosity);
     QVERIFY(result.scene->particles[1].position != testScene().particles[1].position);
+}
+
+void TestSimCli::outputRefusesWhatIsNotAFile()
+{
+    // a FIFO as --output: exit 2 naming it and what it is, before the run; it is still a FIFO after
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString fifo = dir.filePath(u"final.json"_s);
+    QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    const Run run = sim({path(u"scene.json"_s), u"--steps"_s, u"5"_s, u"--output"_s, fifo});
+    QVERIFY2(run.exitCode == 2, run.err.constData());
+    const QString expected =
+        QDir::toNativeSeparators(fifo) + u": cannot save: it is a named pipe (FIFO), not a regular file"_s;
+    QVERIFY2(QString::fromUtf8(run.err).contains(expected), run.err.constData());
+    QVERIFY(run.out.isEmpty());
+    struct stat status {};
+    QCOMPARE(::lstat(QFile::encodeName(fifo).constData(), &status), 0);
+    QVERIFY(S_ISFIFO(status.st_mode));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::System),
+             QStringList{u"final.json"_s});
 }
 
 void TestSimCli::resumeEqualsUninterrupted_data()
