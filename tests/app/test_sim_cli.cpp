@@ -123,6 +123,7 @@ private slots:
     void durationRoundsToSteps();
     void overridesReachTheOutput();
     void outputRefusesWhatIsNotAFile();
+    void outputOntoAFullDiskFails();
     void resumeEqualsUninterrupted_data();
     void resumeEqualsUninterrupted();
     void replayRunsARecordingToItsBits();
@@ -353,6 +354,33 @@ void TestSimCli::outputRefusesWhatIsNotAFile()
     struct stat status {};
     QCOMPARE(::lstat(QFile::encodeName(fifo).constData(), &status), 0);
     QVERIFY(S_ISFIFO(status.st_mode));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::System),
+             QStringList{u"final.json"_s});
+}
+
+void TestSimCli::outputOntoAFullDiskFails()
+{
+    // an old final state, and a scene whose final state is small (Qt buffers up to 16 KiB before
+    // it writes anything) but larger than the disk's room: every file is limited to 512 bytes
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString output = dir.filePath(u"final.json"_s);
+    QVERIFY(io::saveScene(output, explodingScene()).ok());
+    const QByteArray before = readAll(output);
+    constexpr int kLimit = 512;
+    const qsizetype size = io::sceneToJson(testScene()).size();
+    QVERIFY2(size > kLimit && size < 16384, qPrintable(QString::number(size)));
+
+    // exit 2 naming the file and why; the old file whole, no temporary file beside it
+    const Run run = test::runProgram(QStringLiteral(SPRINGLAB_WITH_FILE_LIMIT),
+                                     {QString::number(kLimit), QStringLiteral(SPRINGLAB_SIM), path(u"scene.json"_s),
+                                      u"--steps"_s, u"5"_s, u"--output"_s, output},
+                                     120000);
+    QVERIFY2(run.exitCode == 2, run.err.constData());
+    const QString expected = QDir::toNativeSeparators(output) + u": cannot save: File too large"_s;
+    QVERIFY2(QString::fromUtf8(run.err).contains(expected), run.err.constData());
+    QVERIFY(!run.out.contains("output"));
+    QCOMPARE(readAll(output), before);
     QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::System),
              QStringList{u"final.json"_s});
 }
