@@ -3,13 +3,14 @@
 //                 [--integrator NAME] [--tolerance TOL] [--contact-solver NAME] [--output FINAL.json]
 //                 [--trace TRACE.csv [--every K]] [--render DIR [--fps F] [--size WxH]] [--quiet]
 //        springlab-sim --replay SESSION.json [--output FINAL.json] [--quiet]
-// Exit code 0 done, 2 bad file or argument (or --render with no display), 3 the simulation blew up,
-// 4 a replay did not end with the recorded state.
+// Exit code 0 done, 2 bad file or argument (or --render with no display, or an --output that is not
+// a regular file), 3 the simulation blew up, 4 a replay did not end with the recorded state.
 
 #include "sim_options.h"
 #include "sim_render.h"
 
 #include "core/diagnostics.h"
+#include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
 #include "core/io/trace_writer.h"
 #include "core/model.h"
@@ -21,6 +22,7 @@
 #include "session/session_file.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QTextStream>
 
@@ -106,6 +108,11 @@ int main(int argc, char *argv[])
     if (!parsed.options)
         return failWith(parsed.error + u"\n  (springlab-sim --help lists the options)"_s);
     const app::SimOptions &options = *parsed.options;
+
+    // an --output that is a device or a FIFO is refused before the run, not after it
+    if (!options.outputPath.isEmpty())
+        if (const QString refused = io::refuseToReplace(options.outputPath); !refused.isEmpty())
+            return failWith(QDir::toNativeSeparators(options.outputPath) + u": cannot save: "_s + refused);
     if (options.replay)
         return replaySession(options);
 

@@ -1,12 +1,12 @@
 #include "session_file.h"
 
+#include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
 
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 
 #include <charconv>
 #include <variant>
@@ -392,10 +392,8 @@ RecordingLoad loadRecording(const QString &path)
 
 QString saveRecording(const QString &path, const SessionRecording &recording)
 {
-    QSaveFile file(path);
-    const QByteArray json = recordingToJson(recording);
-    if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit())
-        return path + u": cannot save: "_s + file.errorString();
+    if (const QString failure = io::writeFileAtomically(path, recordingToJson(recording)); !failure.isEmpty())
+        return path + u": cannot save: "_s + failure;
     return {};
 }
 

@@ -13,6 +13,7 @@
 #include "scene_file.h"
 
 #include "json_scan.h"
+#include "safe_write.h"
 
 #include "core/solver_names.h"
 #include "core/validate.h"
@@ -25,7 +26,6 @@
 #include <QJsonObject>
 #include <QJsonParseError>
 #include <QLocale>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <array>
@@ -562,32 +562,6 @@ QString syntaxError(const QByteArray &json, const QJsonParseError &error, const 
     return path.isEmpty() ? source + u": "_s + reason : source + u": "_s + path + u": "_s + reason;
 }
 
-// why a file could not be read or written, in words; errno, when set, is the last resort
-QString explainFailure(const QString &path, bool writing, int savedErrno, const QString &qtReason)
-{
-    const QFileInfo info(path);
-    const QFileInfo folder(info.absolutePath());
-    if (path.isEmpty())
-        return QStringLiteral("no file name given");
-    if (info.isDir())
-        return QStringLiteral("it is a folder, not a file");
-    if (!writing && !info.exists())
-        return QStringLiteral("no such file");
-    if (writing && !folder.exists())
-        return u"the folder "_s + QDir::toNativeSeparators(folder.filePath()) + u" does not exist"_s;
-    if (writing && !folder.isDir())
-        return QDir::toNativeSeparators(folder.filePath()) + u" is not a folder"_s;
-    if (!writing && !info.isReadable())
-        return QStringLiteral("permission denied: the file is not readable");
-    if (writing && info.exists() && !info.isWritable())
-        return QStringLiteral("permission denied: the file is read-only");
-    if (writing && !folder.isWritable())
-        return u"permission denied: cannot create files in "_s + QDir::toNativeSeparators(folder.filePath());
-    if (savedErrno != 0)
-        return QString::fromStdString(std::generic_category().message(savedErrno));
-    return qtReason;
-}
-
 void appendVector(QByteArray &out, const Eigen::Vector3d &v)
 {
     out += '[' + formatNumber(v.x()) + ", " + formatNumber(v.y()) + ", " + formatNumber(v.z()) + ']';
@@ -825,22 +799,9 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
 SaveResult saveScene(const QString &path, const core::SceneDesc &scene)
 {
     const QString shown = QDir::toNativeSeparators(path);
-    const QByteArray json = sceneToJson(scene);
-
-    // QSaveFile writes a temporary file and renames it over the old one only once all is written
-    QSaveFile file(path);
-    errno = 0;
-    if (!file.open(QIODevice::WriteOnly))
-        return {shown + u": cannot save: "_s + explainFailure(path, true, errno, file.errorString())};
-    errno = 0;
-    if (file.write(json) != json.size()) {
-        const int savedErrno = errno;
-        file.cancelWriting();
-        return {shown + u": cannot save: "_s + explainFailure(path, true, savedErrno, file.errorString())};
-    }
-    errno = 0;
-    if (!file.commit())
-        return {shown + u": cannot save: "_s + explainFailure(path, true, errno, file.errorString())};
+    // atomic, flushed and synced (core/io/safe_write.h); a FIFO or a device is refused untouched
+    if (const QString failure = writeFileAtomically(path, sceneToJson(scene)); !failure.isEmpty())
+        return {shown + u": cannot save: "_s + failure};
     return {};
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Scene files: JSON (format "springlab-scene", version 1), documented in docs/scene-format.md.
 // Loading validates everything and either gives a whole scene or one message naming the file, the
-// JSON path and the reason; nothing is half-loaded. Saving is atomic (QSaveFile) and writes
+// JSON path and the reason; nothing is half-loaded. Saving is atomic (safe_write.h) and writes
 // doubles so that loading gives back the same bits.
 
 #include "core/scene.h"

@@ -17,6 +17,8 @@
 #include <charconv>
 #include <cstdint>
 
+#include <sys/stat.h>
+
 using namespace Qt::Literals::StringLiterals;
 
 namespace {
@@ -120,6 +122,8 @@ private slots:
     void durationRoundsToSteps_data();
     void durationRoundsToSteps();
     void overridesReachTheOutput();
+    void outputRefusesWhatIsNotAFile();
+    void outputOntoAFullDiskFails();
     void resumeEqualsUninterrupted_data();
     void resumeEqualsUninterrupted();
     void replayRunsARecordingToItsBits();
@@ -332,6 +336,53 @@ void TestSimCli::overridesReachTheOutput()
     QVERIFY(result.scene->settings.contactSolver == core::ContactSolver::Handout);
     QCOMPARE(result.scene->settings.viscosity, testScene().settings.viscosity);
     QVERIFY(result.scene->particles[1].position != testScene().particles[1].position);
+}
+
+void TestSimCli::outputRefusesWhatIsNotAFile()
+{
+    // a FIFO as --output: exit 2 naming it and what it is, before the run; it is still a FIFO after
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString fifo = dir.filePath(u"final.json"_s);
+    QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    const Run run = sim({path(u"scene.json"_s), u"--steps"_s, u"5"_s, u"--output"_s, fifo});
+    QVERIFY2(run.exitCode == 2, run.err.constData());
+    const QString expected =
+        QDir::toNativeSeparators(fifo) + u": cannot save: it is a named pipe (FIFO), not a regular file"_s;
+    QVERIFY2(QString::fromUtf8(run.err).contains(expected), run.err.constData());
+    QVERIFY(run.out.isEmpty());
+    struct stat status {};
+    QCOMPARE(::lstat(QFile::encodeName(fifo).constData(), &status), 0);
+    QVERIFY(S_ISFIFO(status.st_mode));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::System),
+             QStringList{u"final.json"_s});
+}
+
+void TestSimCli::outputOntoAFullDiskFails()
+{
+    // an old final state, and a scene whose final state is small (Qt buffers up to 16 KiB before
+    // it writes anything) but larger than the disk's room: every file is limited to 512 bytes
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString output = dir.filePath(u"final.json"_s);
+    QVERIFY(io::saveScene(output, explodingScene()).ok());
+    const QByteArray before = readAll(output);
+    constexpr int kLimit = 512;
+    const qsizetype size = io::sceneToJson(testScene()).size();
+    QVERIFY2(size > kLimit && size < 16384, qPrintable(QString::number(size)));
+
+    // exit 2 naming the file and why; the old file whole, no temporary file beside it
+    const Run run = test::runProgram(QStringLiteral(SPRINGLAB_WITH_FILE_LIMIT),
+                                     {QString::number(kLimit), QStringLiteral(SPRINGLAB_SIM), path(u"scene.json"_s),
+                                      u"--steps"_s, u"5"_s, u"--output"_s, output},
+                                     120000);
+    QVERIFY2(run.exitCode == 2, run.err.constData());
+    const QString expected = QDir::toNativeSeparators(output) + u": cannot save: File too large"_s;
+    QVERIFY2(QString::fromUtf8(run.err).contains(expected), run.err.constData());
+    QVERIFY(!run.out.contains("output"));
+    QCOMPARE(readAll(output), before);
+    QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::System),
+             QStringList{u"final.json"_s});
 }
 
 void TestSimCli::resumeEqualsUninterrupted_data()

@@ -5,6 +5,7 @@
 // atomic; files past a size, count or nesting limit are refused with the limit named, files at
 // the limits load.
 
+#include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
 #include "core/validate.h"
 
@@ -18,6 +19,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+
+#include <sys/stat.h>
 
 using namespace Qt::Literals::StringLiterals;
 
@@ -277,6 +280,7 @@ private slots:
     void saveWritesEveryKey();
     void saveFailureKeepsOldFile_data();
     void saveFailureKeepsOldFile();
+    void saveRefusesWhatIsNotAFile();
     void limits_data();
     void limits();
     void oversizedFileNotRead();
@@ -977,6 +981,47 @@ void TestSceneFile::saveFailureKeepsOldFile()
         QCOMPARE(readAll(path), old);
     if (QFileInfo(path).absoluteDir().exists())
         QCOMPARE(QDir(QFileInfo(path).absolutePath()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot), before);
+}
+
+void TestSceneFile::saveRefusesWhatIsNotAFile()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+
+    // a FIFO stays a FIFO: the save is refused before a temporary file is made, so nothing is renamed
+    // over it and nothing is left beside it
+    const QString fifo = dir.filePath(u"pipe.json"_s);
+    QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    const io::SaveResult refused = io::saveScene(fifo, awkwardScene());
+    QVERIFY(!refused.ok());
+    QCOMPARE(refused.error,
+             QDir::toNativeSeparators(fifo) + u": cannot save: it is a named pipe (FIFO), not a regular file"_s);
+    struct stat status {};
+    QCOMPARE(::lstat(QFile::encodeName(fifo).constData(), &status), 0);
+    QVERIFY(S_ISFIFO(status.st_mode));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::System),
+             QStringList{u"pipe.json"_s});
+
+    // a device is named as one; only the check runs here, which reads and never writes
+    if (QFileInfo::exists(u"/dev/null"_s))
+        QCOMPARE(io::refuseToReplace(u"/dev/null"_s), u"it is a character device, not a regular file"_s);
+
+    // a symbolic link to a regular file is saved through, and stays a link
+    const QString target = dir.filePath(u"target.json"_s);
+    const QString link = dir.filePath(u"link.json"_s);
+    QVERIFY(writeAll(target, "old contents\n"));
+    QVERIFY(QFile::link(target, link));
+    QCOMPARE(io::refuseToReplace(link), QString());
+    const io::SaveResult saved = io::saveScene(link, awkwardScene());
+    QVERIFY2(saved.ok(), qPrintable(saved.error));
+    QVERIFY(QFileInfo(link).isSymLink());
+    const io::LoadResult loaded = io::loadScene(target);
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+    QVERIFY(*loaded.scene == awkwardScene());
+
+    // nothing there yet, or a regular file: a save may go ahead
+    QCOMPARE(io::refuseToReplace(dir.filePath(u"new.json"_s)), QString());
+    QCOMPARE(io::refuseToReplace(target), QString());
 }
 
 void TestSceneFile::limits_data()

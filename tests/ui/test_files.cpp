@@ -135,6 +135,7 @@ private slots:
     void revertReloadsTheSavedFile();
     void corruptFileShowsTheErrorAndKeepsTheDocument();
     void saveIntoAReadOnlyFolderFailsAndKeepsTheChanges();
+    void saveOntoAFullDiskFailsAndKeepsTheOldFile_data();
     void saveOntoAFullDiskFailsAndKeepsTheOldFile();
     void unsavedChangesAreAskedAbout();
     void autosaveWritesARecoveryFileAndRemovesIt();
@@ -454,19 +455,32 @@ void TestFiles::saveIntoAReadOnlyFolderFailsAndKeepsTheChanges()
     QVERIFY(readAll(path) != before);
 }
 
+void TestFiles::saveOntoAFullDiskFailsAndKeepsTheOldFile_data()
+{
+    QTest::addColumn<QString>("example");
+    QTest::addColumn<int>("limit");  // bytes no file may grow past
+    // a scene over Qt's 16 KiB write buffer fails as it is written; one under it fails only when
+    // the buffer is flushed, which QSaveFile::commit() of Qt 6.4 did not report
+    QTest::newRow("large scene") << QStringLiteral("cloth") << 4096;
+    QTest::newRow("small scene") << QStringLiteral("pool") << 512;
+}
+
 void TestFiles::saveOntoAFullDiskFailsAndKeepsTheOldFile()
 {
-    // a large scene saved, then changed; the disk then fills: no file may grow past 4 KiB
+    QFETCH(QString, example);
+    QFETCH(int, limit);
+
+    // a scene saved, then changed; the disk then fills: no file may grow past the limit
     QString error;
-    QVERIFY2(m_window->files()->openExample(QStringLiteral("cloth"), &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(example, &error), qPrintable(error));
     const QString path = m_files.filePath(QStringLiteral("full.json"));
     QVERIFY2(m_window->files()->saveTo(path, &error), qPrintable(error));
     const QByteArray before = readAll(path);
-    QVERIFY(before.size() > 4096);
+    QVERIFY(before.size() > limit);
     edit();
     m_questions.clear();
     {
-        const FileSizeLimit full(4096);
+        const FileSizeLimit full(static_cast<rlim_t>(limit));
         QVERIFY(full.active());
         press(Qt::Key_S, Qt::ControlModifier);
     }

@@ -2,13 +2,13 @@
 
 #include "scene_document.h"
 
+#include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QLockFile>
-#include <QSaveFile>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTimer>
@@ -122,9 +122,9 @@ bool Autosave::saveNow(QString *error)
     const io::SaveResult written = io::saveScene(recoveryPath(), m_document.scene());
     if (!written.ok())
         return fail(tr("Autosave: %1").arg(written.error));
-    QSaveFile source(filePath(kSourceSuffix));
-    if (!source.open(QIODevice::WriteOnly) || source.write(m_document.filePath().toUtf8()) < 0 || !source.commit())
-        return fail(tr("Autosave: cannot write %1").arg(QDir::toNativeSeparators(filePath(kSourceSuffix))));
+    if (const QString failure = io::writeFileAtomically(filePath(kSourceSuffix), m_document.filePath().toUtf8());
+        !failure.isEmpty())
+        return fail(tr("Autosave: cannot write %1: %2").arg(QDir::toNativeSeparators(filePath(kSourceSuffix)), failure));
     m_pending = false;
     emit saved(recoveryPath());
     return true;

@@ -1,14 +1,15 @@
 #include "plots_widget.h"
 
 #include "plot_canvas.h"
+#include "core/io/safe_write.h"
 #include "session/simulation_frame.h"
 
 #include <QAction>
+#include <QBuffer>
 #include <QComboBox>
 #include <QDir>
 #include <QHBoxLayout>
 #include <QImage>
-#include <QSaveFile>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -207,11 +208,12 @@ bool PlotsWidget::savePng(const QString &path, QString *error) const
 {
     // the canvas as drawn now, written atomically
     const QImage image = m_canvas->grab().toImage();
-    QSaveFile file(path);
-    if (image.isNull() || !file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit()) {
-        const QString reason = image.isNull() ? tr("no image") : file.errorString();
-        return failWith(error, tr("Export PNG: cannot write %1: %2").arg(QDir::toNativeSeparators(path), reason));
-    }
+    QByteArray png;
+    QBuffer buffer(&png);
+    if (image.isNull() || !buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG"))
+        return failWith(error, tr("Export PNG: cannot write %1: %2").arg(QDir::toNativeSeparators(path), tr("no image")));
+    if (const QString failure = io::writeFileAtomically(path, png); !failure.isEmpty())
+        return failWith(error, tr("Export PNG: cannot write %1: %2").arg(QDir::toNativeSeparators(path), failure));
     return true;
 }
 
@@ -219,11 +221,9 @@ bool PlotsWidget::saveCsv(const QString &path, QString *error) const
 {
     // the shown series' samples, written atomically
     const std::string text = shownSeries().csv();
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) ||
-        file.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()) || !file.commit())
-        return failWith(error,
-                        tr("Export CSV: cannot write %1: %2").arg(QDir::toNativeSeparators(path), file.errorString()));
+    const QByteArray bytes(text.data(), static_cast<qsizetype>(text.size()));
+    if (const QString failure = io::writeFileAtomically(path, bytes); !failure.isEmpty())
+        return failWith(error, tr("Export CSV: cannot write %1: %2").arg(QDir::toNativeSeparators(path), failure));
     return true;
 }
 
