@@ -33,4 +33,25 @@ QString nameOf(core::Integrator integrator)
     return QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
 }
 
+double loadAverage()
+{
+    QFile file(QStringLiteral("/proc/loadavg"));
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return -1.0;
+    bool ok = false;
+    const double load = file.readLine().split(' ').value(0).toDouble(&ok);
+    return ok ? load : -1.0;
+}
+
+QString loadText()
+{
+    const double load = loadAverage();
+    if (load < 0.0)
+        return QStringLiteral("unknown");
+    QString text = QString::number(load, 'f', 2);
+    if (load > 0.5 * QThread::idealThreadCount())
+        text += QStringLiteral(" (busy: other work competes for the cores, so the times are pessimistic)");
+    return text;
+}
+
 }  // namespace bench

@@ -1,6 +1,6 @@
 #pragma once
-// Small things every benchmark mode needs: the machine it ran on, process CPU time, and an
-// integrator's name as scene files spell it.
+// Small things every benchmark mode needs: the machine it ran on and how busy it was, process CPU
+// time, and an integrator's name as scene files spell it.
 
 #include "core/integrator.h"
 
@@ -14,5 +14,10 @@ QString machineDescription();
 double cpuSeconds();
 // an integrator's name as scene files spell it
 QString nameOf(core::Integrator integrator);
+// the load average over the last minute (/proc/loadavg), or -1 where it cannot be read: other work
+// on the machine slows every figure, so a run records it at its start and its end
+double loadAverage();
+// the load average as a run prints it, with a warning when the machine is busy
+QString loadText();
 
 }  // namespace bench

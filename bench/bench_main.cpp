@@ -3,12 +3,15 @@
 //   springlab-bench stability [--out DIR] [--quick]  largest stable time step against theory
 //   springlab-bench throughput [--out DIR] [--quick] run time per step against references and the
 //                                                    memory bandwidth bound
+//   springlab-bench contacts [--out DIR] [--quick]   stacks, piles and a heap beside Bullet's rigid
+//                                                    spheres: what stands, what settles, the cost
 //   springlab-bench write-references DIR             the reference problems as scene files
 //
 // The plots are painted into images, which needs a QGuiApplication for the fonts but no display:
 // the program picks Qt's offscreen platform unless QT_QPA_PLATFORM says otherwise.
 
 #include "accuracy.h"
+#include "contacts.h"
 #include "reference_problems.h"
 #include "stability.h"
 #include "throughput.h"
@@ -30,6 +33,7 @@ const char *const kUsage =
     "usage: springlab-bench accuracy [--out DIR] [--quick]\n"
     "       springlab-bench stability [--out DIR] [--quick]\n"
     "       springlab-bench throughput [--out DIR] [--quick]\n"
+    "       springlab-bench contacts [--out DIR] [--quick]\n"
     "       springlab-bench write-references DIR\n";
 
 int badArguments(QTextStream &err, const QString &message)
@@ -90,6 +94,16 @@ int throughput(const QStringList &arguments, QTextStream &out, QTextStream &err)
         [&](const QString &dir, bool quick) { return bench::runThroughput({dir, quick}, out); });
 }
 
+int contacts(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    return sweepMode(
+        arguments, out, err, QStringLiteral("contacts"),
+        QStringLiteral("A column, a pyramid, piles and a heap of balls in the core and beside Bullet's rigid spheres."),
+        QStringLiteral("Folder for the CSV and plot (default: .)."),
+        QStringLiteral("Short runs and a small heap: a smoke test only."),
+        [&](const QString &dir, bool quick) { return bench::runContacts({dir, quick}, out); });
+}
+
 // every reference problem's scene, saved as DIR/<name>.json
 int writeReferences(const QStringList &arguments, QTextStream &out, QTextStream &err)
 {
@@ -133,6 +147,8 @@ int main(int argc, char *argv[])
         return stability(arguments, out, err);
     if (name == QStringLiteral("throughput"))
         return throughput(arguments, out, err);
+    if (name == QStringLiteral("contacts"))
+        return contacts(arguments, out, err);
     if (name == QStringLiteral("write-references"))
         return writeReferences(arguments, out, err);
     if (name == QStringLiteral("--help") || name == QStringLiteral("-h")) {

@@ -125,29 +125,6 @@ std::vector<int> threadCounts()
 }
 
 
-// the load average over the last minute (/proc/loadavg), or -1 where it cannot be read: other work
-// on the machine slows every figure, so the run records it at its start and its end
-double loadAverage()
-{
-    QFile file(QStringLiteral("/proc/loadavg"));
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
-        return -1.0;
-    bool ok = false;
-    const double load = file.readLine().split(' ').value(0).toDouble(&ok);
-    return ok ? load : -1.0;
-}
-
-QString loadText()
-{
-    const double load = loadAverage();
-    if (load < 0.0)
-        return QStringLiteral("unknown");
-    QString text = QString::number(load, 'f', 2);
-    if (load > 0.5 * QThread::idealThreadCount())
-        text += QStringLiteral(" (busy: other work competes for the cores, so the times are pessimistic)");
-    return text;
-}
-
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
