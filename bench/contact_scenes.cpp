@@ -1,5 +1,7 @@
 #include "contact_scenes.h"
 
+#include "core/generators.h"
+
 #include <cmath>
 #include <cstdint>
 
@@ -49,8 +51,7 @@ ContactScene contactColumn(double duration)
 {
     // resting on the floor and on each other: centres 2r apart from r up
     core::SceneDesc scene = ballScene("column");
-    for (int i = 0; i < 30; ++i)
-        scene.particles.push_back(ball({0.0, kBallRadius + 2.0 * kBallRadius * i, 0.0}, kBallMass));
+    scene.particles = core::ballColumn(30, kBallRadius, kBallMass, Eigen::Vector3d::Zero());
     return {"column", scene, duration, ContactCheck::Column, 0.0};
 }
 
@@ -58,10 +59,7 @@ ContactScene contactPyramid(double duration)
 {
     // row k rests in the hollows of row k - 1: r across, √3 r up
     core::SceneDesc scene = ballScene("pyramid");
-    const double r = kBallRadius;
-    for (int row = 0; row < 20; ++row)
-        for (int i = 0; i < 20 - row; ++i)
-            scene.particles.push_back(ball({(2 * i + row) * r, r + row * std::sqrt(3.0) * r, 0.0}, kBallMass));
+    scene.particles = core::ballPyramid(20, kBallRadius, kBallMass, Eigen::Vector3d::Zero());
     return {"pyramid", scene, duration, ContactCheck::Pyramid, 0.0};
 }
 

@@ -83,6 +83,26 @@ SceneDesc makeCloth(const ClothOptions &o)
     return scene;
 }
 
+std::vector<ParticleDesc> ballColumn(int count, double radius, double mass, const Eigen::Vector3d &foot)
+{
+    std::vector<ParticleDesc> balls;
+    for (int i = 0; i < count; ++i)
+        balls.push_back(ParticleDesc{foot + Eigen::Vector3d(0.0, radius + 2.0 * radius * i, 0.0),
+                                     Eigen::Vector3d::Zero(), mass, radius, false});
+    return balls;
+}
+
+std::vector<ParticleDesc> ballPyramid(int base, double radius, double mass, const Eigen::Vector3d &foot)
+{
+    std::vector<ParticleDesc> balls;
+    for (int row = 0; row < base; ++row)
+        for (int i = 0; i < base - row; ++i)
+            balls.push_back(ParticleDesc{
+                foot + Eigen::Vector3d((2 * i + row) * radius, radius + row * std::sqrt(3.0) * radius, 0.0),
+                Eigen::Vector3d::Zero(), mass, radius, false});
+    return balls;
+}
+
 SceneDesc makeChain(const ChainOptions &o)
 {
     SceneDesc scene;

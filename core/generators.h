@@ -134,6 +134,13 @@ std::optional<std::string> checkOptions(const BlockOptions &options);
 std::optional<std::string> checkOptions(const BallOptions &options);
 std::optional<std::string> checkOptions(const SoftBallOptions &options);
 
+// balls of one radius and mass resting on each other on the floor y = 0, touching, at rest: a
+// column of `count` straight up from `foot`, or a pyramid on a base of `base` in the plane through
+// `foot` parallel to z = 0, each row in the hollows of the row below (r across, √3 r up), its first
+// ball at `foot`
+std::vector<ParticleDesc> ballColumn(int count, double radius, double mass, const Eigen::Vector3d &foot);
+std::vector<ParticleDesc> ballPyramid(int base, double radius, double mass, const Eigen::Vector3d &foot);
+
 // joins particles a and b with a spring whose rest length is their current distance
 void addSpring(SceneDesc &scene, int a, int b, double stiffness, double damping);
 

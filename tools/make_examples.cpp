@@ -101,13 +101,9 @@ core::SceneDesc stackScene()
     scene.name = "stack";
     scene.settings.restitution = 0.5;
     scene.settings.friction = 0.5;
-    constexpr double r = 0.1;  // m
-    for (int i = 0; i < 12; ++i)
-        scene.particles.push_back(ParticleDesc{Vector3d(-1.5, r + 2 * r * i, 0.0), Vector3d::Zero(), 1.0, r, false});
-    for (int row = 0; row < 10; ++row)
-        for (int i = 0; i < 10 - row; ++i)
-            scene.particles.push_back(ParticleDesc{Vector3d((2 * i + row) * r - 0.3, r + row * std::sqrt(3.0) * r, 0.0),
-                                                   Vector3d::Zero(), 1.0, r, false});
+    scene.particles = core::ballColumn(12, 0.1, 1.0, Vector3d(-1.5, 0.0, 0.0));
+    const std::vector<ParticleDesc> pyramid = core::ballPyramid(10, 0.1, 1.0, Vector3d(-0.3, 0.0, 0.0));
+    scene.particles.insert(scene.particles.end(), pyramid.begin(), pyramid.end());
     scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
     return scene;
 }

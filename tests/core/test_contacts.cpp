@@ -2,6 +2,7 @@
 // impacts located in time, nothing passing through anything, stacks that stand, piles that settle,
 // two-sided planes and rectangles, and the handout's passes still selectable.
 
+#include "core/generators.h"
 #include "core/integrator.h"
 #include "core/reference.h"
 #include "core/state_hash.h"
@@ -214,8 +215,7 @@ void TestContacts::columnOfThirtyStands()
     scene.settings.restitution = 0.5;
     scene.settings.friction = 0.5;
     scene.planes = {core::PlaneDesc{{0.0, 1.0, 0.0}, 0.0}};
-    for (int i = 0; i < 30; ++i)
-        scene.particles.push_back(test::particle({0.0, 0.05 + 0.1 * i, 0.0}, Eigen::Vector3d::Zero(), 1.0, 0.05));
+    scene.particles = core::ballColumn(30, 0.05, 1.0, Eigen::Vector3d::Zero());
     test::Sim sim = test::compile(scene);
     const Eigen::Vector3d top = sim.state.position.col(29);
     double worst = 0.0;
@@ -235,11 +235,7 @@ void TestContacts::pyramidOfTwentyStands()
         scene.settings.restitution = 0.5;
         scene.settings.friction = friction;
         scene.planes = {core::PlaneDesc{{0.0, 1.0, 0.0}, 0.0}};
-        const double r = 0.05;
-        for (int row = 0; row < 20; ++row)
-            for (int i = 0; i < 20 - row; ++i)
-                scene.particles.push_back(test::particle({(2 * i + row) * r, r + row * std::sqrt(3.0) * r, 0.0},
-                                                         Eigen::Vector3d::Zero(), 1.0, r));
+        scene.particles = core::ballPyramid(20, 0.05, 1.0, Eigen::Vector3d::Zero());
         return scene;
     };
     for (double friction : {0.5, 0.0}) {
