@@ -69,8 +69,7 @@ struct ContactScratch {
     std::vector<int> queue;
     std::vector<int> levelStart;  // counting sort of the contacts by level
 
-    std::uint64_t impactsResolved = 0;  // counters for the tests and the benchmark
-    std::uint64_t contactsSolved = 0;
+    std::uint64_t impactsResolved = 0;  // impacts resolved so far, for the tests
 };
 
 }  // namespace core

@@ -344,7 +344,6 @@ void solveRestingContacts(const Model &model, State &state, Workspace &work, dou
     solvePositions(model, state, scratch);
     keepOutOfColliders(model, state, scratch);
     stopStuckSlip(model, state, scratch);
-    scratch.contactsSolved += scratch.sorted.size();
 }
 
 }  // namespace core
