@@ -90,6 +90,11 @@ void adaptiveRk45(const Model &model, State &state, Workspace &work, double h)
             work.blowup = Blowup{-1, Blowup::Quantity::StepSize, dt, 0, 0.0};
             return;
         }
+        // a stiff scene may take many trials: a long step stops among them when asked
+        if (interruptRequested(work)) {
+            work.interrupted = true;
+            return;
+        }
         const bool last = dt >= h - covered;
         const double trial = last ? h - covered : dt;
         x0 = state.position;

@@ -34,6 +34,7 @@ std::optional<LocalError> StepDoubling::estimateLocalError(const std::shared_ptr
     m_two = state;
     m_oneWork.blowup.reset();
     m_twoWork.blowup.reset();
+    m_oneWork.interrupted = m_twoWork.interrupted = false;
     if (!step(m_single, m_one, m_oneWork) || !step(m_double, m_two, m_twoWork))
         return std::nullopt;
     // the differences, scaled from "h against h/2" to the error of the h step

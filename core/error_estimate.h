@@ -8,6 +8,7 @@
 #include "state.h"
 #include "workspace.h"
 
+#include <atomic>
 #include <memory>
 #include <optional>
 
@@ -22,11 +23,20 @@ struct LocalError {
 class StepDoubling {
 public:
     // the estimated local position error of one sub-step (m, the largest component), or nullopt
-    // if either trial blew up
+    // if either trial blew up or was interrupted
     std::optional<double> estimate(const std::shared_ptr<const Model> &model, const State &state);
 
     // the same estimate for the positions and the velocities
     std::optional<LocalError> estimateLocalError(const std::shared_ptr<const Model> &model, const State &state);
+
+    // a flag that stops the trial steps between sub-steps (null: never); interrupted() then says
+    // why the estimate is missing
+    void setInterrupt(const std::atomic<bool> *flag)
+    {
+        m_oneWork.interrupt = flag;
+        m_twoWork.interrupt = flag;
+    }
+    bool interrupted() const { return m_oneWork.interrupted || m_twoWork.interrupted; }
 
 private:
     void prepare(const std::shared_ptr<const Model> &model);

@@ -15,10 +15,18 @@ bool stopped(const State &state, Workspace &work)
     return false;
 }
 
+// asked to stop: the step is not taken (the caller restores where it began)
+bool interrupted(Workspace &work)
+{
+    work.interrupted = true;
+    return false;
+}
+
 }  // namespace
 
 bool step(const Model &model, State &state, Workspace &work)
 {
+    work.interrupted = false;
     if (work.blowup)
         return false;
     const StepPlan &plan = model.plan;
@@ -26,6 +34,8 @@ bool step(const Model &model, State &state, Workspace &work)
     const double h = model.subStep();
 
     for (int sub = 0; sub < model.substeps; ++sub) {
+        if (interruptRequested(work))
+            return interrupted(work);
         // 1 and 2. forces at (x, v) and integration of every free particle, by the path the plan
         // chose when the model was compiled
         bool freeChecked = false;  // whether the update checked the free particles' new values
@@ -41,6 +51,8 @@ bool step(const Model &model, State &state, Workspace &work)
             timed(profile, Stage::Integrate, true, [&] { freeChecked = integrate(model, state, work, h); });
             if (work.blowup)  // an adaptive integrator that could not cover the sub-step
                 return stopped(state, work);
+            if (work.interrupted)  // an adaptive integrator asked to stop among its trials
+                return false;
             break;
         }
 

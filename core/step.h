@@ -12,7 +12,8 @@ inline constexpr double kBlowupBound = 1.0e10;
 
 // advances the state by model.timeStep in model.substeps equal sub-steps; returns false (and sets
 // work.blowup) if a value stopped being finite or bounded, in which case the state is not stepped
-// again until work.blowup is cleared
+// again until work.blowup is cleared. Also false, with work.interrupted set, when work.interrupt
+// was raised before a sub-step: the state is then half-way and must be restored by the caller.
 bool step(const Model &model, State &state, Workspace &work);
 
 }  // namespace core

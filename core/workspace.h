@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <atomic>
 #include <optional>
 #include <vector>
 
@@ -33,6 +34,18 @@ struct Workspace {
     // set by the step that stopped being finite or bounded; step() refuses to go on until it is
     // cleared (a restored state clears it)
     std::optional<Blowup> blowup;
+
+    // Raised from another thread to stop a long step between two sub-steps (null: a step always
+    // runs to its end). The step then returns false with `interrupted` set and the state half-way
+    // through: the caller restores the state it began from, so that a step is whole or not taken.
+    const std::atomic<bool> *interrupt = nullptr;
+    bool interrupted = false;
 };
+
+// whether the step should stop where it is (a relaxed load: the flag orders nothing else)
+inline bool interruptRequested(const Workspace &work)
+{
+    return work.interrupt && work.interrupt->load(std::memory_order_relaxed);
+}
 
 }  // namespace core

@@ -6,6 +6,7 @@ std::uint64_t MessageQueue::push(Message message)
 {
     std::lock_guard lock(m_mutex);
     m_pending.push_back(std::move(message));
+    m_waiting.store(true, std::memory_order_relaxed);
     return ++m_pushed;
 }
 
@@ -14,6 +15,7 @@ MessageQueue::Batch MessageQueue::drain()
     Batch batch;
     std::lock_guard lock(m_mutex);
     batch.messages.swap(m_pending);
+    m_waiting.store(false, std::memory_order_relaxed);
     batch.lastSequence = m_pushed;
     return batch;
 }

@@ -10,6 +10,7 @@
 #include "core/scene.h"
 
 #include <Eigen/Core>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -105,7 +106,12 @@ public:
 
     bool empty() const;
 
+    // raised while messages wait to be drained: a long step polls it between sub-steps
+    // (core::Workspace::interrupt) and stops, so that they need not wait for its end
+    const std::atomic<bool> &waiting() const { return m_waiting; }
+
 private:
+    std::atomic<bool> m_waiting{false};
     mutable std::mutex m_mutex;
     std::vector<Message> m_pending;
     std::uint64_t m_pushed = 0;

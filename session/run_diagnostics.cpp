@@ -67,7 +67,13 @@ void RunDiagnostics::estimate(bool counted, const std::shared_ptr<const core::Mo
     if (!model)
         return;
     const auto start = Clock::now();
-    m_localError = m_doubling.estimate(model, state);
+    const std::optional<double> error = m_doubling.estimate(model, state);
+    if (m_doubling.interrupted()) {
+        // messages wait: they go first, and the estimate is made again after them
+        m_estimateStale = true;
+        return;
+    }
+    m_localError = error;
     m_localErrorStep = state.step;
     const double seconds = secondsSince(start);
     m_lastEstimateSeconds = seconds;

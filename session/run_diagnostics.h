@@ -16,6 +16,7 @@
 #include "core/state.h"
 #include "core/workspace.h"
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -31,9 +32,13 @@ public:
     static constexpr double kEstimateInterval = 0.25;
     static constexpr double kEstimateShare = 0.05;
 
+    // a flag raised when messages wait: an estimate in progress stops and is made again later
+    void setInterrupt(const std::atomic<bool> *flag) { m_doubling.setInterrupt(flag); }
     // what changed in the run: the state (estimate again), or the model too (and analyse the
     // stability limit again)
     void stateChanged() { m_estimateStale = true; }
+    // whether the estimate waits to be made again (a change, or an estimate cut short)
+    bool estimateStale() const { return m_estimateStale; }
     void modelChanged();
     // another scene: its costs start afresh
     void resetCosts();

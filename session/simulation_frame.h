@@ -41,6 +41,9 @@ struct SimulationFrame {
     std::shared_ptr<const core::SceneDesc> scene;  // the scene that model was compiled from
     std::uint64_t appliedMessage = 0;  // sequence number of the newest message applied before this frame
     bool running = false;
+    // steps asked for (Step) that later messages cut short and that are still to come: the
+    // snapshot is not yet the step asked for
+    std::uint64_t stepsOwed = 0;
 
     // measured over the last second or so of running; 0 while paused or not yet measured
     double realTimeFactor = 0.0;  // simulated seconds per wall-clock second

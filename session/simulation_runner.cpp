@@ -6,6 +6,7 @@
 
 #include "core/step.h"
 
+#include <algorithm>
 #include <chrono>
 #include <random>
 #include <utility>
@@ -62,10 +63,23 @@ bool startsAKeyframe(const Message &message)
            std::holds_alternative<GrabEdit>(message);
 }
 
+// the messages after which a step asked for and cut short is no longer wanted: Pause, Play (the
+// run takes over), Reset, another scene, and moving through the timeline
+bool stopsOwedSteps(const Message &message)
+{
+    if (const auto *edit = std::get_if<SetSceneEdit>(&message))
+        return edit->change == SceneChange::Replace;
+    return std::holds_alternative<Pause>(message) || std::holds_alternative<Play>(message) ||
+           std::holds_alternative<Reset>(message) || std::holds_alternative<Scrub>(message) ||
+           std::holds_alternative<StepBack>(message);
+}
+
 }  // namespace
 
 void SimulationRunner::apply(const Message &message)
 {
+    if (stopsOwedSteps(message))
+        m_stepsOwed = 0;
     if (m_scrubber.isScrubbing() && changesTheRun(message))
         resumeFromScrub();
 
@@ -101,6 +115,11 @@ void SimulationRunner::apply(const Message &message)
 void SimulationRunner::stepOnceMessage()
 {
     m_running = false;
+    // behind a step cut short: one more owed, taken in order after it
+    if (m_stepsOwed > 0) {
+        ++m_stepsOwed;
+        return;
+    }
     // inside the recording: one step on through it; at its end, a new step
     const std::optional<std::uint64_t> shown = m_scrubber.scrubStep();
     if (shown && *shown < m_scrubber.timeline().lastStep()) {
@@ -111,10 +130,51 @@ void SimulationRunner::stepOnceMessage()
         resumeFromScrub();
     if (hasScene()) {
         m_lastGood = m_state;
-        if (stepOnce())
+        if (interruptibleStep(m_lastGood))
             ++m_stepsTaken;
+        else if (m_work.interrupted)
+            m_stepsOwed = 1;
         m_diagnostics.stateChanged();
     }
+}
+
+void SimulationRunner::setInterrupt(const std::atomic<bool> *flag)
+{
+    m_interrupt = flag;
+    m_diagnostics.setInterrupt(flag);
+}
+
+bool SimulationRunner::takeOwedSteps()
+{
+    bool taken = false;
+    while (m_stepsOwed > 0 && hasScene()) {
+        m_lastGood = m_state;
+        if (!interruptibleStep(m_lastGood)) {
+            if (!m_work.interrupted)
+                m_stepsOwed = 0;  // blown up: the run stops there
+            break;
+        }
+        --m_stepsOwed;
+        ++m_stepsTaken;
+        taken = true;
+        m_diagnostics.stateChanged();
+    }
+    return taken;
+}
+
+bool SimulationRunner::interruptibleStep(const core::State &start)
+{
+    const auto began = Clock::now();
+    m_work.interrupt = m_interrupt;
+    const bool taken = stepOnce();
+    m_work.interrupt = nullptr;
+    m_lastStepSeconds = secondsSince(began);
+    if (!taken && m_work.interrupted) {
+        m_state = start;
+        // cut short: whatever it took so far, it is slow enough to be cut again when retaken
+        m_lastStepSeconds = std::max(m_lastStepSeconds, kInterruptibleStepSeconds);
+    }
+    return taken;
 }
 
 HeldForces SimulationRunner::heldForces() const
@@ -265,6 +325,8 @@ bool SimulationRunner::stepOnce()
         m_scrubber.timeline().afterStep(m_model, m_scene, m_state, heldForces());
         return true;
     }
+    if (m_work.interrupted)
+        return false;  // not taken: the caller goes back to where it began
     // blown up: stop, keep the report, and go back to the last good state
     m_diagnostics.blewUp(std::exchange(m_work.blowup, std::nullopt));
     m_running = false;
@@ -289,8 +351,17 @@ SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double b
     m_lastGood = m_state;
     const auto start = Clock::now();
     bool blewUp = false;
+    const core::State *stepStart = &m_lastGood;  // null: the next step cannot be cut short
     while (m_owed >= h) {
-        if (!stepOnce()) {
+        const auto stepBegan = Clock::now();
+        if (!(stepStart ? interruptibleStep(*stepStart) : stepOnce())) {
+            if (m_work.interrupted) {
+                // messages wait: they go first, and the step is taken again after them
+                result.interrupted = true;
+                result.droppedSeconds = m_owed - h;
+                m_owed = h;
+                break;
+            }
             blewUp = true;
             m_stepsTaken -= static_cast<std::uint64_t>(result.steps);  // back at the tick's start
             break;
@@ -303,6 +374,12 @@ SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double b
             result.droppedSeconds = m_owed;
             m_owed = 0.0;
             break;
+        }
+        stepStart = nullptr;
+        m_lastStepSeconds = secondsSince(stepBegan);
+        if (m_interrupt && stepsAreSlow()) {
+            m_stepStart = m_state;
+            stepStart = &m_stepStart;
         }
     }
     m_diagnostics.afterSteps(secondsSince(start), blewUp, m_model, m_state);

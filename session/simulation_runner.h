@@ -14,6 +14,14 @@
 // history, no branches). RunDiagnostics (run_diagnostics.h) keeps the live error estimate, the
 // energies the drift is measured from, the stability limit, the pair speed warning, the
 // explanation of a blow-up, and makes the accuracy plans.
+//
+// A long step yields to the messages. Given a flag raised while messages wait (setInterrupt), a
+// step stops between two sub-steps when it is raised and is not taken: the state goes back to
+// where the step began, so every step is whole and its bits do not depend on when it was cut.
+// While running, the steps owed are simply taken in a later tick. A step asked for by StepOnce
+// becomes owed (stepsOwed), and is taken after the messages that cut it short unless one of
+// them stops it (Pause, Play, Reset, another scene, a scrub). Where a step begins is copied only
+// when it is slow, so that fast scenes pay nothing for this.
 
 #include "messages.h"
 #include "replies.h"
@@ -26,6 +34,7 @@
 #include "core/state.h"
 #include "core/workspace.h"
 
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,7 +48,23 @@ public:
     struct Advance {
         int steps = 0;                // steps taken
         double droppedSeconds = 0.0;  // s of wall time left unsimulated (the run fell behind)
+        bool interrupted = false;     // a step stopped for waiting messages
     };
+
+    // steps slower than this (s) are worth a copy of where the next one begins, so that it can be
+    // cut short: the copy then costs a small share of the step
+    static constexpr double kInterruptibleStepSeconds = 0.01;
+
+    // the flag that stops a long step for waiting messages (MessageQueue::waiting); null: never
+    void setInterrupt(const std::atomic<bool> *flag);
+    // steps asked for by StepOnce and cut short, still to take
+    std::uint64_t stepsOwed() const { return m_stepsOwed; }
+    // takes the owed steps, each of which may be cut short again; true if one was taken
+    bool takeOwedSteps();
+    // whether the latest step took kInterruptibleStepSeconds or more (or was cut short)
+    bool stepsAreSlow() const { return m_lastStepSeconds >= kInterruptibleStepSeconds; }
+    // whether there is work to come back to without a message: owed steps, a missing estimate
+    bool hasWorkLeft() const { return m_stepsOwed > 0 || m_diagnostics.estimateStale(); }
 
     // applies one message between two steps
     void apply(const Message &message);
@@ -107,6 +132,9 @@ private:
     void grab(const GrabEdit &edit);
     void applyGrab();
     bool stepOnce();
+    // one step that the interrupt flag may cut short, from m_state == start; true if taken (false:
+    // blown up, or cut short with m_state back at start and m_work.interrupted set)
+    bool interruptibleStep(const core::State &start);
     void captureState(const CaptureState &request);
 
     // the timeline
@@ -123,6 +151,10 @@ private:
     Scrubber m_scrubber;
     RunDiagnostics m_diagnostics;
     core::State m_lastGood;  // the state before the latest steps, restored if they blow up
+    const std::atomic<bool> *m_interrupt = nullptr;
+    core::State m_stepStart;      // where the step in progress began, when it is slow (see above)
+    std::uint64_t m_stepsOwed = 0;  // StepOnce steps cut short, still to take
+    double m_lastStepSeconds = 0.0;  // computing time of the latest step, s (a cut one: so far)
     bool m_running = false;
     double m_owed = 0.0;  // s of simulated time not yet covered by a whole step
     std::vector<Reply> m_replies;  // not yet taken

@@ -5,6 +5,7 @@
 #include "scene_builder.h"
 
 #include <QtTest>
+#include <atomic>
 
 Q_DECLARE_METATYPE(core::Integrator)
 
@@ -15,6 +16,7 @@ private slots:
     void withinAFactorOfThree_data();
     void withinAFactorOfThree();
     void leavesTheStateAlone();
+    void stopsWhenInterrupted();
 };
 
 void TestErrorEstimate::withinAFactorOfThree_data()
@@ -64,6 +66,24 @@ void TestErrorEstimate::leavesTheStateAlone()
     QVERIFY(doubling.estimate(model, state).value() > 0.0);
     QVERIFY(state.position == before);
     QCOMPARE(state.step, std::uint64_t(0));
+}
+
+void TestErrorEstimate::stopsWhenInterrupted()
+{
+    // a raised flag: no estimate, and it says why; lowered: the same estimate as without one
+    core::SceneDesc scene = core::makeOscillator({});
+    auto model = core::compileModel(scene);
+    const core::State state = core::makeState(*model, scene);
+    std::atomic<bool> waiting{true};
+    core::StepDoubling cut;
+    cut.setInterrupt(&waiting);
+    QVERIFY(!cut.estimate(model, state));
+    QVERIFY(cut.interrupted());
+    waiting = false;
+    const std::optional<double> estimate = cut.estimate(model, state);
+    QVERIFY(!cut.interrupted());
+    core::StepDoubling plain;
+    QVERIFY(estimate && *estimate == plain.estimate(model, state).value());
 }
 
 QTEST_APPLESS_MAIN(TestErrorEstimate)

@@ -1,9 +1,11 @@
 // The step: order of passes, sub-steps, passes the plan skips, blow-up detection, determinism.
 #include "core/generators.h"
+#include "core/integrator.h"
 #include "core/step.h"
 #include "scene_builder.h"
 
 #include <QtTest>
+#include <atomic>
 #include <cstring>
 
 class TestStep : public QObject {
@@ -19,6 +21,8 @@ private slots:
     void checkSeesEveryParticle();
     void appliedForcePushes();
     void sameSceneSameBits();
+    void interruptStopsBeforeASubStep_data();
+    void interruptStopsBeforeASubStep();
 };
 
 namespace {
@@ -211,6 +215,44 @@ void TestStep::sameSceneSameBits()
     QVERIFY(std::memcmp(a.state.position.data(), b.state.position.data(), sizeof(double) * 3 * 64) == 0);
     QVERIFY(std::memcmp(a.state.velocity.data(), b.state.velocity.data(), sizeof(double) * 3 * 64) == 0);
     QVERIFY(a.state.position(1, 20) < 1.0);  // and it moved
+}
+
+void TestStep::interruptStopsBeforeASubStep_data()
+{
+    QTest::addColumn<QString>("integrator");
+    for (const char *name : {"symplectic-euler", "rk4", "implicit-euler", "adaptive-rk45"})
+        QTest::newRow(name) << QString::fromLatin1(name);
+}
+
+void TestStep::interruptStopsBeforeASubStep()
+{
+    // a raised flag: the step stops before its first sub-step, says so, and is not a blow-up;
+    // a lowered one changes nothing, to the bit
+    QFETCH(QString, integrator);
+    core::ClothOptions options;
+    options.rows = options.cols = 6;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.settings.integrator = *core::integratorFromName(integrator.toStdString());
+    QVERIFY(scene.settings.substeps > 1);  // a stop between sub-steps is possible
+    scene.planes = {core::PlaneDesc{{0, 1, 0}, 0.5}};
+    test::Sim cut = test::compile(scene);
+    test::Sim plain = test::compile(scene);
+    std::atomic<bool> waiting{true};
+    cut.work.interrupt = &waiting;
+    const core::State before = cut.state;
+    QVERIFY(!cut.step());
+    QVERIFY(cut.work.interrupted);
+    QVERIFY(!cut.work.blowup);
+    QVERIFY(cut.state.position == before.position && cut.state.step == 0);
+
+    waiting = false;
+    for (int i = 0; i < 20; ++i) {
+        QVERIFY(cut.step());
+        QVERIFY(!cut.work.interrupted);
+        QVERIFY(plain.step());
+    }
+    QVERIFY(cut.state.position == plain.state.position && cut.state.velocity == plain.state.velocity);
+    QCOMPARE(cut.state.step, 20u);
 }
 
 QTEST_APPLESS_MAIN(TestStep)

@@ -1,7 +1,8 @@
 // SimulationRunner, the worker's Qt-free half, driven one edit and one advance at a time: whole
 // steps from wall time, edits between steps, reset to the exact initial state, the seeded tilt,
 // the steering force, the stop at a blow-up, the live error estimate and energy drift (and what
-// the estimate costs on the cloth example), and the accuracy plan.
+// the estimate costs on the cloth example), the accuracy plan, and long steps cut short by
+// waiting messages.
 
 #include "session/simulation_runner.h"
 
@@ -11,6 +12,9 @@
 
 #include <QRegularExpression>
 #include <QtTest>
+#include <atomic>
+#include <chrono>
+#include <thread>
 
 namespace {
 
@@ -74,6 +78,10 @@ private slots:
     void driftIsMeasuredFromTheLastReset();
     void errorEstimateIsCheapOnTheCloth();
     void accuracyPlanIsMadeFromTheRunnersState();
+    void raisedInterruptCutsTheStepShort();
+    void cutStepOnceIsOwedAndTakenAfter();
+    void pauseDropsTheOwedSteps();
+    void slowStepStopsMidway();
 };
 
 void TestSimulationRunner::startsPausedAtTheInitialState()
@@ -548,6 +556,120 @@ void TestSimulationRunner::accuracyPlanIsMadeFromTheRunnersState()
     QVERIFY(plan->secondsPerEvaluation > 0.0);
     QVERIFY(plan->pick()->localError <= 1e-6);
     QCOMPARE(runner.state().step, 1u);
+}
+
+namespace {
+
+bool sameMotion(const core::State &a, const core::State &b)
+{
+    return a.step == b.step && a.position == b.position && a.velocity == b.velocity;
+}
+
+}  // namespace
+
+void TestSimulationRunner::raisedInterruptCutsTheStepShort()
+{
+    // waiting messages: no step is taken, the state is as it was, one step stays owed
+    std::atomic<bool> waiting{true};
+    ui::SimulationRunner runner = runnerWith(springScene());
+    runner.setInterrupt(&waiting);
+    runner.apply(ui::Play{});
+    const core::State before = runner.state();
+    const ui::SimulationRunner::Advance cut = runner.advance(1.0, kNoBudgetLimit);
+    QVERIFY(cut.interrupted);
+    QCOMPARE(cut.steps, 0);
+    QCOMPARE(cut.droppedSeconds, 0.75);
+    QVERIFY(sameMotion(runner.state(), before));
+    QVERIFY(runner.isRunning());
+
+    // once they are drained, the owed step is taken, to the bit of a run never cut short
+    waiting = false;
+    const ui::SimulationRunner::Advance taken = runner.advance(0.0, kNoBudgetLimit);
+    QVERIFY(!taken.interrupted);
+    QCOMPARE(taken.steps, 1);
+    ui::SimulationRunner plain = runnerWith(springScene());
+    plain.apply(ui::Play{});
+    QCOMPARE(plain.advance(0.25, kNoBudgetLimit).steps, 1);
+    QVERIFY(sameMotion(runner.state(), plain.state()));
+    QCOMPARE(runner.stepsTaken(), plain.stepsTaken());
+}
+
+void TestSimulationRunner::cutStepOnceIsOwedAndTakenAfter()
+{
+    // two Steps cut short are owed, in order; an edit that lands meanwhile applies before them
+    std::atomic<bool> waiting{true};
+    const auto scene = springScene(100.0, 0.01);
+    ui::SimulationRunner runner = runnerWith(scene);
+    runner.setInterrupt(&waiting);
+    runner.apply(ui::StepOnce{});
+    runner.apply(ui::StepOnce{});
+    QCOMPARE(runner.stepsOwed(), 2u);
+    QCOMPARE(runner.state().step, 0u);
+    QCOMPARE(runner.snapshot()->step, 0u);
+    auto stiffer = std::make_shared<core::SceneDesc>(*scene);
+    stiffer->springs[0].stiffness = 300.0;
+    runner.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
+    QCOMPARE(runner.stepsOwed(), 2u);
+    QVERIFY(!runner.takeOwedSteps());  // still waiting
+    QCOMPARE(runner.stepsOwed(), 2u);
+    waiting = false;
+    QVERIFY(runner.takeOwedSteps());
+    QCOMPARE(runner.stepsOwed(), 0u);
+    QVERIFY(!runner.isRunning());
+
+    ui::SimulationRunner plain = runnerWith(scene);
+    plain.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
+    plain.apply(ui::StepOnce{});
+    plain.apply(ui::StepOnce{});
+    QVERIFY(sameMotion(runner.state(), plain.state()));
+    QCOMPARE(runner.stepsTaken(), 2u);
+}
+
+void TestSimulationRunner::pauseDropsTheOwedSteps()
+{
+    // Pause, Reset, another scene: the Step asked for before is not wanted any more
+    std::atomic<bool> waiting{true};
+    for (int stop = 0; stop < 3; ++stop) {
+        ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
+        runner.setInterrupt(&waiting);
+        waiting = true;
+        runner.apply(ui::StepOnce{});
+        QCOMPARE(runner.stepsOwed(), 1u);
+        if (stop == 0)
+            runner.apply(ui::Pause{});
+        else if (stop == 1)
+            runner.apply(ui::Reset{});
+        else
+            runner.apply(ui::SetSceneEdit{springScene(50.0, 0.01), ui::SceneChange::Replace});
+        QCOMPARE(runner.stepsOwed(), 0u);
+        waiting = false;
+        QVERIFY(!runner.takeOwedSteps());
+        QCOMPARE(runner.state().step, 0u);
+    }
+}
+
+void TestSimulationRunner::slowStepStopsMidway()
+{
+    // the cloth example at a time step of 1 s in 20 000 sub-steps takes seconds a step; a message
+    // that arrives 50 ms in stops it between two sub-steps, and the state is where it began
+    io::LoadResult loaded = io::loadScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/cloth.json"));
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+    auto scene = std::make_shared<core::SceneDesc>(*loaded.scene);
+    scene->settings.timeStep = 1.0;
+    scene->settings.substeps = 20000;
+    std::atomic<bool> waiting{false};
+    ui::SimulationRunner runner = runnerWith(scene);
+    runner.setInterrupt(&waiting);
+    const core::State before = runner.state();
+    std::thread message([&waiting] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        waiting = true;
+    });
+    runner.apply(ui::StepOnce{});
+    message.join();
+    QCOMPARE(runner.stepsOwed(), 1u);
+    QVERIFY(sameMotion(runner.state(), before));
+    QVERIFY(runner.state().springBroken == before.springBroken);
 }
 
 QTEST_APPLESS_MAIN(TestSimulationRunner)

@@ -15,7 +15,10 @@
 #include "ui/document/scene_document.h"
 #include "ui/viewport/viewport.h"
 
+#include "core/integrator.h"
+#include "core/solver_names.h"
 #include "core/validate.h"
+#include "ui/export/exporter.h"
 
 #include <QAbstractSlider>
 #include <QAbstractSpinBox>
@@ -77,6 +80,27 @@ QString whereTheyPart(const QStringList &first, const QStringList &second)
         if (first[e] != second[e])
             return QStringLiteral("they part after\n  %1\n  %2").arg(first[e], second[e]);
     return QStringLiteral("their traces are the same");
+}
+
+QString text(std::string_view name)
+{
+    return QString::fromUtf8(name.data(), qsizetype(name.size()));
+}
+
+// what the editor held and did when the worker stopped answering, for the failure message
+QString whatItWasDoing(const ui::MainWindow &window)
+{
+    const core::SceneDesc &scene = window.document()->scene();
+    const auto last = window.controller()->frame();
+    return QStringLiteral("%1 particles, %2 springs, %3 planes; time step %4 s, %5 sub-steps, %6, contacts %7; "
+                          "running %8, exporting %9; last frame: step %10, message %11 of %12 sent")
+        .arg(scene.particles.size()).arg(scene.springs.size()).arg(scene.planes.size())
+        .arg(scene.settings.timeStep).arg(scene.settings.substeps)
+        .arg(text(core::integratorName(scene.settings.integrator)))
+        .arg(text(core::contactSolverName(scene.settings.contactSolver)))
+        .arg(window.controller()->isRunning()).arg(window.exporter()->isExporting())
+        .arg(last && last->snapshot ? qlonglong(last->snapshot->step) : -1)
+        .arg(last ? qlonglong(last->appliedMessage) : -1).arg(qlonglong(window.controller()->sync() - 1));
 }
 
 // F4 and Step run the simulation: the reproducible run leaves them out
@@ -288,7 +312,8 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
     // a minute: under the sanitizers a large scene the monkey generated can take that long to step
     const auto frame = test::settledFrame(*window->controller(), 60000);
     if (!frame)
-        outcome.failure = QStringLiteral("seed %1: no frame from the worker after the events").arg(seed);
+        outcome.failure = QStringLiteral("seed %1: no frame from the worker after the events (%2)")
+                              .arg(seed).arg(whatItWasDoing(*window));
     else if (const auto problem = core::findProblem(outcome.scene))
         outcome.failure = QStringLiteral("seed %1: the scene is not valid: %2").arg(seed).arg(QString::fromStdString(problem->message));
     return outcome;

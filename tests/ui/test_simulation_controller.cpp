@@ -52,6 +52,7 @@ private slots:
     void followedDocumentReachesTheWorker();
     void blowupPausesAndIsReported();
     void shutDownWhileRunningEndsTheThread();
+    void pauseCutsALongStepShort();
 };
 
 void TestSimulationController::publishesTheSceneItIsGiven()
@@ -212,6 +213,38 @@ void TestSimulationController::shutDownWhileRunningEndsTheThread()
     QVERIFY(controller.isShutDown());
     QVERIFY(!controller.isRunning());
     controller.shutDown();  // twice is harmless
+}
+
+void TestSimulationController::pauseCutsALongStepShort()
+{
+    // a step of a second or more: a 32 × 32 cloth at a time step of 1 s in 20 000 sub-steps
+    core::ClothOptions options;
+    options.rows = options.cols = 32;
+    auto scene = std::make_shared<core::SceneDesc>(core::makeCloth(options));
+    scene->settings.timeStep = 1.0;
+    scene->settings.substeps = 20000;
+    ui::SimulationController controller;
+    QVERIFY(frameAfter(controller, controller.setScene(scene, ui::SceneChange::Replace)));
+
+    // Pause, sent once the worker has taken the Step and is stepping, is answered at once with
+    // the step not taken (it would show step 1 had the step run to its end first)
+    controller.stepOnce();
+    QVERIFY(QTest::qWaitFor([&] { return !controller.messagesWaiting(); }, 10000));
+    const auto paused = frameAfter(controller, controller.pause(), 60000);
+    QVERIFY(paused);
+    QCOMPARE(paused->snapshot->step, 0u);
+    QCOMPARE(paused->stepsOwed, 0u);
+    QVERIFY(!paused->running);
+
+    // a Sync instead of a Pause: the step is owed, then taken once the messages are through
+    controller.stepOnce();
+    QVERIFY(QTest::qWaitFor([&] { return !controller.messagesWaiting(); }, 10000));
+    const auto synced = frameAfter(controller, controller.sync(), 60000);
+    QVERIFY(synced);
+    QCOMPARE(synced->snapshot->step, 0u);
+    QCOMPARE(synced->stepsOwed, 1u);
+    QTRY_VERIFY_WITH_TIMEOUT(controller.frame()->snapshot->step == 1u, 120000);
+    QCOMPARE(controller.frame()->stepsOwed, 0u);
 }
 
 QTEST_GUILESS_MAIN(TestSimulationController)

@@ -40,7 +40,7 @@ void ExportRun::cancel()
 void ExportRun::frameChanged()
 {
     const auto frame = m_controller.frame();
-    if (!m_active || !frame || frame->appliedMessage < m_awaited)
+    if (!m_active || !frame || frame->appliedMessage < m_awaited || frame->stepsOwed > 0)
         return;
     if (!frame->snapshot) {
         finish(Outcome::Failed, tr("there is no scene to export"));

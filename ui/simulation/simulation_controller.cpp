@@ -63,6 +63,8 @@ void SimulationController::shutDown()
     disconnect(m_repliesConnection);
     // the worker's event loop ends, its timer stops with it, and the worker is deleted on its thread
     handOverRelease(m_worker);
+    // a message raises the flag that stops a long step, so that the thread can end now
+    m_messages.push(Pause{});
     m_thread->quit();
     m_thread->wait();
     handOverAcquire(&m_mailbox);

@@ -81,6 +81,8 @@ public:
     // stops the worker thread and waits for it; called by the destructor, safe to call twice
     void shutDown();
     bool isShutDown() const { return m_shutDown; }
+    // whether messages wait for the worker to take them (it is busy, or about to wake)
+    bool messagesWaiting() const { return m_messages.waiting().load(std::memory_order_relaxed); }
     QThread *workerThread() const { return m_thread; }
 
 signals:

@@ -25,6 +25,8 @@ SimulationWorker::SimulationWorker(MessageQueue &messages, ReplyQueue &replies, 
     m_timer->setTimerType(Qt::PreciseTimer);
     m_timer->setInterval(kTickIntervalMs);
     connect(m_timer, &QTimer::timeout, this, &SimulationWorker::tick);
+    // a long step stops for the messages that arrive while it runs
+    m_runner.setInterrupt(&m_messages.waiting());
 }
 
 SimulationWorker::~SimulationWorker()
@@ -62,6 +64,7 @@ void SimulationWorker::wake()
 void SimulationWorker::tick()
 {
     const bool wasRunning = m_runner.isRunning();
+    const std::uint64_t owedBefore = m_runner.stepsOwed();
 
     // messages first: they land between two steps
     MessageQueue::Batch batch = m_messages.drain();
@@ -77,6 +80,15 @@ void SimulationWorker::tick()
             emit repliesReady();
         }
     m_appliedMessage = batch.lastSequence;
+
+    // slow steps come next: the messages are answered first, not a step later
+    if (changed && m_runner.stepsAreSlow()) {
+        publish();
+        changed = false;
+    }
+
+    // the steps asked for that earlier messages cut short
+    changed = m_runner.takeOwedSteps() || changed;
 
     // then the steps that the wall time elapsed since the last tick asks for
     if (m_runner.isRunning()) {
@@ -123,13 +135,14 @@ void SimulationWorker::tick()
         emit blewUp(QString::fromStdString(*message));
     }
 
-    // the timer runs only while the simulation does
-    if (m_runner.isRunning() && !m_timer->isActive())
+    // the timer runs only while the simulation does, or work cut short by messages waits
+    const bool busy = m_runner.isRunning() || m_runner.hasWorkLeft();
+    if (busy && !m_timer->isActive())
         m_timer->start();
-    else if (!m_runner.isRunning() && m_timer->isActive())
+    else if (!busy && m_timer->isActive())
         m_timer->stop();
 
-    if (changed || m_runner.isRunning() != wasRunning)
+    if (changed || m_runner.isRunning() != wasRunning || m_runner.stepsOwed() != owedBefore)
         publish();
 }
 
@@ -142,6 +155,7 @@ void SimulationWorker::publish()
     frame->scene = m_runner.shownScene();
     frame->appliedMessage = m_appliedMessage;
     frame->running = m_runner.isRunning();
+    frame->stepsOwed = m_runner.stepsOwed();
     frame->realTimeFactor = m_realTimeFactor;
     frame->stepsPerSecond = m_stepsPerSecond;
     const RunDiagnostics &diagnostics = m_runner.diagnostics();
