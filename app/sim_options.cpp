@@ -6,6 +6,8 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
 #include <QRegularExpression>
 
 #include <cmath>
@@ -15,6 +17,15 @@ namespace app {
 using namespace Qt::Literals::StringLiterals;
 
 namespace {
+
+// whether two paths name one file: through links where the file is there, else as written
+bool samePath(const QString &a, const QString &b)
+{
+    const QFileInfo first(a), second(b);
+    if (first.exists() && second.exists())
+        return first.canonicalFilePath() == second.canonicalFilePath();
+    return QDir::cleanPath(first.absoluteFilePath()) == QDir::cleanPath(second.absoluteFilePath());
+}
 
 // more steps than this cannot be counted exactly in a double, nor run in a lifetime
 constexpr double kMaxSteps = 9007199254740992.0;  // 2^53
@@ -235,6 +246,25 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
 
 }  // namespace
 
+QString clashingPaths(const SimOptions &options)
+{
+    // what the run reads, then what it writes, each named by its option
+    const std::pair<const char *, QString> inputs[] = {{options.replay ? "the recording's" : "the scene's", options.scenePath}};
+    const std::pair<const char *, QString> outputs[] = {{"--output", options.outputPath}, {"--trace", options.tracePath}};
+    for (const auto &[name, written] : outputs) {
+        if (written.isEmpty())
+            continue;
+        for (const auto &[inputName, read] : inputs)
+            if (samePath(written, read))
+                return u"%1 %2 names %3 file: the run would overwrite what it reads"_s
+                    .arg(QString::fromLatin1(name), QDir::toNativeSeparators(written), QString::fromLatin1(inputName));
+    }
+    if (!options.outputPath.isEmpty() && !options.tracePath.isEmpty() && samePath(options.outputPath, options.tracePath))
+        return u"--output and --trace name one file, %1: one would overwrite the other"_s
+            .arg(QDir::toNativeSeparators(options.outputPath));
+    return QString();
+}
+
 ParsedOptions parseSimOptions(const QStringList &arguments)
 {
     // the options, as --help lists them
@@ -284,8 +314,11 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
         return parsed;
     }
     SimOptions options;
-    if (readOptions(parser, options, parsed.error))
-        parsed.options = options;
+    if (readOptions(parser, options, parsed.error)) {
+        parsed.error = clashingPaths(options);
+        if (parsed.error.isEmpty())
+            parsed.options = options;
+    }
     return parsed;
 }
 

@@ -46,6 +46,10 @@ struct ParsedOptions {
 // arguments as main() gets them, the program name first
 ParsedOptions parseSimOptions(const QStringList &arguments);
 
+// why the files options name cannot be used together (empty: they can): an output that names
+// the file read, or --output and --trace that name one file
+QString clashingPaths(const SimOptions &options);
+
 // the command line's settings written over the file's; empty on success, else the message
 QString applyOverrides(const SimOptions &options, core::SceneDesc &scene);
 

@@ -9,6 +9,11 @@
 
 namespace core {
 
+// the largest position component (m) and velocity component (m/s) a scene may hold: the file's
+// range, and the bound past which a run counts as blown up (step.h), so that any state a run
+// reaches can be saved and loaded again
+inline constexpr double kStateLimit = 1.0e9;
+
 enum class Parameter {
     TimeStep,
     Substeps,

@@ -26,6 +26,9 @@ struct Settings {
     bool autoSubsteps = false;
     Integrator integrator = Integrator::SymplecticEuler;
     double tolerance = 1e-6;  // m and m/s, the local error per step adaptive-rk45 aims for
+    // adaptive-rk45: the step size a run saved from was about to try (s), so that the run resumed
+    // from its file goes on as it would have; unset, the first step chooses (State::adaptiveStep)
+    std::optional<double> adaptiveStep{};
     Eigen::Vector3d gravity{0.0, -9.81, 0.0};  // m/s², y is up
     double viscosity = 0.0;                    // kg/s, drag force -c v on every particle
     double restitution = 1.0;                  // 1 elastic .. 0 fully inelastic, for every contact

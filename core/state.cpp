@@ -18,6 +18,7 @@ State makeState(const Model &model, const SceneDesc &scene)
         // a pinned particle has infinite mass: it is at rest, whatever the file says
         state.velocity.col(i) = p.pinned ? Eigen::Vector3d::Zero() : p.velocity;
     }
+    state.adaptiveStep = scene.settings.adaptiveStep.value_or(0.0);
     return state;
 }
 
@@ -58,6 +59,10 @@ void storeState(const State &state, SceneDesc &scene)
         scene.particles[i].position = state.position.col(column);
         scene.particles[i].velocity = state.velocity.col(column);
     }
+    // the adaptive step size goes with the state it was chosen for
+    scene.settings.adaptiveStep.reset();
+    if (state.adaptiveStep > 0.0)
+        scene.settings.adaptiveStep = state.adaptiveStep;
     if (state.breaks.empty())
         return;
     assert(state.springBroken.size() == scene.springs.size());

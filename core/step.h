@@ -2,13 +2,15 @@
 // One step of the simulation: forces, integration, collisions, checks (see step.cpp).
 
 #include "model.h"
+#include "parameters.h"
 #include "state.h"
 #include "workspace.h"
 
 namespace core {
 
-// the largest position or velocity component the checks let through (m, m/s)
-inline constexpr double kBlowupBound = 1.0e10;
+// the largest position or velocity component the checks let through (m, m/s): a scene file's
+// range, so that a run never reaches a state its file could not hold
+inline constexpr double kBlowupBound = kStateLimit;
 
 // advances the state by model.timeStep in model.substeps equal sub-steps; returns false (and sets
 // work.blowup) if a value stopped being finite or bounded, in which case the state is not stepped

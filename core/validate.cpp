@@ -52,6 +52,7 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
     if (!check(Parameter::TimeStep, s.timeStep, "settings.timeStep", problem) ||
         !check(Parameter::Substeps, s.substeps, "settings.substeps", problem) ||
         !check(Parameter::Tolerance, s.tolerance, "settings.tolerance", problem) ||
+        (s.adaptiveStep && !check(Parameter::TimeStep, *s.adaptiveStep, "settings.adaptiveStep", problem)) ||
         !checkVector(Parameter::Gravity, s.gravity, "settings.gravity", problem) ||
         !check(Parameter::Viscosity, s.viscosity, "settings.viscosity", problem) ||
         !check(Parameter::Restitution, s.restitution, "settings.restitution", problem) ||

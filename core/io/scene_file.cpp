@@ -289,11 +289,14 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
     QString contactSolver = QString::fromUtf8(defaultSolver.data(), static_cast<qsizetype>(defaultSolver.size()));
     double staticFriction = 0.0;
     bool hasStaticFriction = false;
+    double adaptiveStep = 0.0;
+    bool hasAdaptiveStep = false;
     if (!member(object, path, QLatin1String("timeStep"), Need::Optional, settings.timeStep) ||
         !member(object, path, QLatin1String("substeps"), Need::Optional, settings.substeps) ||
         !member(object, path, QLatin1String("autoSubsteps"), Need::Optional, settings.autoSubsteps) ||
         !member(object, path, QLatin1String("integrator"), Need::Optional, integrator) ||
         !member(object, path, QLatin1String("tolerance"), Need::Optional, settings.tolerance) ||
+        !member(object, path, QLatin1String("adaptiveStep"), Need::Optional, adaptiveStep, &hasAdaptiveStep) ||
         !member(object, path, QLatin1String("gravity"), Need::Optional, settings.gravity) ||
         !member(object, path, QLatin1String("viscosity"), Need::Optional, settings.viscosity) ||
         !member(object, path, QLatin1String("restitution"), Need::Optional, settings.restitution) ||
@@ -319,11 +322,13 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
     settings.contactSolver = *solver;
     if (hasStaticFriction)
         settings.staticFriction = staticFriction;
+    if (hasAdaptiveStep)
+        settings.adaptiveStep = adaptiveStep;
 
     warnUnknownKeys(object, path,
                     {QLatin1String("timeStep"), QLatin1String("substeps"), QLatin1String("autoSubsteps"),
                      QLatin1String("integrator"),
-                     QLatin1String("tolerance"), QLatin1String("gravity"), QLatin1String("viscosity"), QLatin1String("restitution"),
+                     QLatin1String("tolerance"), QLatin1String("adaptiveStep"), QLatin1String("gravity"), QLatin1String("viscosity"), QLatin1String("restitution"),
                      QLatin1String("contactSolver"), QLatin1String("friction"), QLatin1String("staticFriction"),
                      QLatin1String("planeCollisions"), QLatin1String("particleCollisions")});
     return true;
@@ -754,6 +759,9 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
     out += "        \"integrator\": ";
     appendString(out, integrator);
     out += ",\n        \"tolerance\": " + formatNumber(s.tolerance);
+    // only with a state that adaptive-rk45 stepped: the step size it was about to try
+    if (s.adaptiveStep)
+        out += ",\n        \"adaptiveStep\": " + formatNumber(*s.adaptiveStep);
     out += ",\n        \"gravity\": ";
     appendVector(out, s.gravity);
     out += ",\n        \"viscosity\": " + formatNumber(s.viscosity) + ",\n";

@@ -124,6 +124,8 @@ private slots:
     void overridesReachTheOutput();
     void outputRefusesWhatIsNotAFile();
     void outputOntoAFullDiskFails();
+    void runLeavingTheFileRangeBlowsUp();
+    void outputsMustNotNameTheInputOrEachOther();
     void resumeEqualsUninterrupted_data();
     void resumeEqualsUninterrupted();
     void replayRunsARecordingToItsBits();
@@ -385,6 +387,55 @@ void TestSimCli::outputOntoAFullDiskFails()
              QStringList{u"final.json"_s});
 }
 
+void TestSimCli::runLeavingTheFileRangeBlowsUp()
+{
+    // a particle falling freely for 15 000 s passes 1e9 m, past what a scene file may hold: the
+    // run stops there as a blow-up (exit 3) and writes no --output, rather than a file that the
+    // loader refuses
+    const QString output = path(u"fell-too-far.json"_s);
+    const Run run = test::runProgram(QStringLiteral(SPRINGLAB_SIM),
+                                     {QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/particles.json"),
+                                      u"--time-step"_s, u"0.1"_s, u"--duration"_s, u"15000"_s, u"--output"_s, output},
+                                     120000);
+    QVERIFY2(run.exitCode == 3, run.err.constData());
+    QVERIFY2(run.err.contains("(no --output written)"), run.err.constData());
+    QVERIFY(!QFileInfo::exists(output));
+
+    // 14 000 s stays inside the range: the output is written, and it loads
+    const Run within = test::runProgram(QStringLiteral(SPRINGLAB_SIM),
+                                        {QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/particles.json"),
+                                         u"--time-step"_s, u"0.1"_s, u"--duration"_s, u"14000"_s, u"--output"_s, output},
+                                        120000);
+    QVERIFY2(within.exitCode == 0, within.err.constData());
+    const io::LoadResult loaded = io::loadScene(output);
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+}
+
+void TestSimCli::outputsMustNotNameTheInputOrEachOther()
+{
+    // --trace or --output onto the scene file (also by another spelling of its path), or --trace
+    // and --output onto one file: exit 2 before the run, naming the clash, and every file as it was
+    const QString scene = path(u"scene.json"_s);
+    const QByteArray before = readAll(scene);
+    const QString otherSpelling = m_dir.path() + u"/./scene.json"_s;
+    const QString both = path(u"both.out"_s);
+    const struct {
+        QStringList arguments;
+        QString says;
+    } cases[] = {
+        {{scene, u"--trace"_s, scene}, u"overwrite what it reads"_s},
+        {{scene, u"--output"_s, otherSpelling}, u"overwrite what it reads"_s},
+        {{scene, u"--output"_s, both, u"--trace"_s, both}, u"one would overwrite the other"_s},
+    };
+    for (const auto &[arguments, says] : cases) {
+        const Run run = test::runProgram(QStringLiteral(SPRINGLAB_SIM), arguments + QStringList{u"--steps"_s, u"5"_s}, 60000);
+        QVERIFY2(run.exitCode == 2, run.err.constData());
+        QVERIFY2(QString::fromUtf8(run.err).contains(says), run.err.constData());
+        QCOMPARE(readAll(scene), before);
+        QVERIFY(!QFileInfo::exists(both));
+    }
+}
+
 void TestSimCli::resumeEqualsUninterrupted_data()
 {
     QTest::addColumn<QString>("scene");  // "" for the test scene
@@ -398,6 +449,10 @@ void TestSimCli::resumeEqualsUninterrupted_data()
         << QString() << 20 << 20 << QStringList{u"--integrator"_s, u"explicit-euler"_s};
     for (const QString &file : exampleFiles())
         QTest::newRow(qPrintable(QFileInfo(file).fileName())) << file << 60 << 90 << QStringList();
+    // the adaptive step size goes on from where it was (settings.adaptiveStep)
+    QTest::newRow("tearable-cloth, adaptive-rk45")
+        << QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/tearable-cloth.json") << 300 << 200
+        << QStringList{u"--integrator"_s, u"adaptive-rk45"_s};
 }
 
 void TestSimCli::resumeEqualsUninterrupted()

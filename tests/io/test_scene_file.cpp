@@ -104,7 +104,8 @@ QString bitDifference(const core::SceneDesc &a, const core::SceneDesc &b)
         !sameBits(s.viscosity, t.viscosity, QStringLiteral("viscosity"), d) ||
         !sameBits(s.restitution, t.restitution, QStringLiteral("restitution"), d) ||
         !sameBits(s.friction, t.friction, QStringLiteral("friction"), d) ||
-        !sameBits(s.staticFriction, t.staticFriction, QStringLiteral("staticFriction"), d))
+        !sameBits(s.staticFriction, t.staticFriction, QStringLiteral("staticFriction"), d) ||
+        !sameBits(s.adaptiveStep, t.adaptiveStep, QStringLiteral("adaptiveStep"), d))
         return d;
     if (a.particles.size() != b.particles.size() || a.springs.size() != b.springs.size() ||
         a.planes.size() != b.planes.size())
@@ -162,6 +163,7 @@ core::SceneDesc awkwardScene()
     scene.settings.contactSolver = core::ContactSolver::Handout;
     scene.settings.friction = denormal;
     scene.settings.staticFriction = 1.0 / 3.0;
+    scene.settings.adaptiveStep = 1.0 / 7.0;
     scene.settings.planeCollisions = false;
     scene.settings.particleCollisions = true;
 
@@ -508,6 +510,9 @@ void TestSceneFile::badFile_data()
     QTest::newRow("friction above 10")
         << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"friction\": 10.5,")
         << QStringLiteral("settings.friction") << QStringLiteral("must be at most 10 (got 10.5)");
+    QTest::newRow("adaptive step of 0")
+        << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"adaptiveStep\": 0,")
+        << QStringLiteral("settings.adaptiveStep") << QStringLiteral("must be greater than 0 s (got 0");
     QTest::newRow("negative static friction")
         << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"staticFriction\": -0.1,")
         << QStringLiteral("settings.staticFriction") << QStringLiteral("must be at least 0 (got -0.1)");
