@@ -1,5 +1,6 @@
 #include "session_file.h"
 
+#include "core/io/json_scan.h"
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
 
@@ -128,7 +129,13 @@ QByteArray messageJson(const Message &message)
 // reads one recording, stopping at the first problem with its JSON path
 class Reader {
 public:
-    explicit Reader(QString source) : m_source(std::move(source)) {}
+    Reader(QString source, const QByteArray &json) : m_source(std::move(source))
+    {
+        // Qt's parser reads "-0" as +0: the scan says which numbers were negative zeros, so that
+        // a recorded state keeps every bit (only a file with a "-0" in it can hold one)
+        if (json.contains("-0"))
+            m_negativeZeros = io::scanJson(json).negativeZeros;
+    }
     QString error;
 
     bool fail(const QString &path, const QString &reason)
@@ -142,6 +149,8 @@ public:
         if (!value.isDouble())
             return fail(path, u"expected a number"_s);
         out = value.toDouble();
+        if (out == 0.0 && m_negativeZeros.contains(path))
+            out = -0.0;
         return true;
     }
     bool count(const QJsonValue &value, const QString &path, std::uint64_t &out)
@@ -303,6 +312,7 @@ public:
 
 private:
     QString m_source;
+    QSet<QString> m_negativeZeros;  // JSON paths of the numbers written as a negative zero
 };
 
 }  // namespace
@@ -327,7 +337,7 @@ RecordingLoad parseRecording(const QByteArray &json, const QString &sourceName)
     RecordingLoad result;
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
-    Reader reader(sourceName);
+    Reader reader(sourceName, json);
     if (document.isNull()) {
         result.error = sourceName + u": not JSON: "_s + parseError.errorString();
         return result;
@@ -382,12 +392,12 @@ RecordingLoad parseRecording(const QByteArray &json, const QString &sourceName)
     return result;
 }
 
-RecordingLoad loadRecording(const QString &path)
+RecordingLoad loadRecording(const QString &path, qint64 limitBytes)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return {nullptr, path + u": cannot open: "_s + file.errorString()};
-    return parseRecording(file.readAll(), path);
+    QByteArray json;
+    if (const QString failure = io::readFileWithin(path, limitBytes, json); !failure.isEmpty())
+        return {nullptr, failure};
+    return parseRecording(json, path);
 }
 
 QString saveRecording(const QString &path, const SessionRecording &recording)

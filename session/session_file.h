@@ -6,6 +6,8 @@
 
 #include "session_recording.h"
 
+#include "core/io/scene_file.h"
+
 #include <QByteArray>
 #include <QString>
 
@@ -18,7 +20,8 @@ struct RecordingLoad {
     QString error;                                       // "FILE: edits[3].particle: ..." on failure
 };
 RecordingLoad parseRecording(const QByteArray &json, const QString &sourceName);
-RecordingLoad loadRecording(const QString &path);
+// reads a recording file of at most limitBytes (the scene files' limit unless told)
+RecordingLoad loadRecording(const QString &path, qint64 limitBytes = io::kMaxSceneFileBytes);
 
 // writes atomically (QSaveFile); empty on success, else why not
 QString saveRecording(const QString &path, const SessionRecording &recording);

@@ -690,49 +690,48 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
     return result;
 }
 
-LoadResult loadScene(const QString &path, const LoadLimits &limits)
+QString readFileWithin(const QString &path, qint64 limitBytes, QByteArray &bytes)
 {
     const QString shown = QDir::toNativeSeparators(path);
     QFile file(path);
     errno = 0;
-    if (!file.open(QIODevice::ReadOnly)) {
-        LoadResult result;
-        result.error = shown + u": cannot open: "_s + explainFailure(path, false, errno, file.errorString());
-        return result;
-    }
+    if (!file.open(QIODevice::ReadOnly))
+        return shown + u": cannot open: "_s + explainFailure(path, false, errno, file.errorString());
 
     // a file over the size limit is refused unread
-    if (!file.isSequential() && file.size() > limits.fileBytes) {
-        LoadResult result;
-        result.error = tooLarge(shown, file.size(), limits.fileBytes);
-        return result;
-    }
+    if (!file.isSequential() && file.size() > limitBytes)
+        return tooLarge(shown, file.size(), limitBytes);
 
     // a device with no size (a pipe, /dev/zero) is read in pieces, stopping one byte past the limit
     errno = 0;
-    QByteArray json;
+    bytes.clear();
     if (file.isSequential()) {
         constexpr qint64 kPiece = 1 << 16;
-        while (json.size() <= limits.fileBytes) {
-            const QByteArray piece = file.read(std::min(kPiece, limits.fileBytes + 1 - json.size()));
+        while (bytes.size() <= limitBytes) {
+            const QByteArray piece = file.read(std::min(kPiece, limitBytes + 1 - bytes.size()));
             if (piece.isEmpty())
                 break;
-            json += piece;
+            bytes += piece;
         }
     } else {
-        json = file.readAll();
+        bytes = file.readAll();
     }
-    if (file.error() != QFileDevice::NoError) {
+    if (file.error() != QFileDevice::NoError)
+        return shown + u": cannot read: "_s + explainFailure(path, false, errno, file.errorString());
+    if (file.isSequential() && bytes.size() > limitBytes)
+        return shown + u": the file is too large: more than the limit of "_s + byteCount(limitBytes);
+    return QString();
+}
+
+LoadResult loadScene(const QString &path, const LoadLimits &limits)
+{
+    QByteArray json;
+    if (QString failure = readFileWithin(path, limits.fileBytes, json); !failure.isEmpty()) {
         LoadResult result;
-        result.error = shown + u": cannot read: "_s + explainFailure(path, false, errno, file.errorString());
+        result.error = std::move(failure);
         return result;
     }
-    if (file.isSequential() && json.size() > limits.fileBytes) {
-        LoadResult result;
-        result.error = shown + u": the file is too large: more than the limit of "_s + byteCount(limits.fileBytes);
-        return result;
-    }
-    return parseScene(json, shown, limits);
+    return parseScene(json, QDir::toNativeSeparators(path), limits);
 }
 
 QByteArray sceneToJson(const core::SceneDesc &scene)

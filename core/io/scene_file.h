@@ -44,6 +44,11 @@ struct SaveResult {
     bool ok() const { return error.isEmpty(); }
 };
 
+// reads a whole file of at most limitBytes into bytes; a device with no size (a pipe, /dev/zero)
+// is read in pieces and refused one byte past the limit. Empty on success, else the message:
+// "FILE: cannot open: ...", "FILE: the file is too large: ..."
+QString readFileWithin(const QString &path, qint64 limitBytes, QByteArray &bytes);
+
 // reads and validates a scene file
 LoadResult loadScene(const QString &path, const LoadLimits &limits = {});
 

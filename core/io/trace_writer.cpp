@@ -1,6 +1,10 @@
 #include "trace_writer.h"
 
+#include "safe_write.h"
+
 #include <QDir>
+
+#include <cerrno>
 
 #include <array>
 #include <charconv>
@@ -78,19 +82,33 @@ void TraceWriter::writeRows(const core::Snapshot &snapshot)
 
 bool TraceWriter::flush()
 {
+    errno = 0;
     if (!m_failed && m_file.write(m_buffer) != m_buffer.size())
-        m_failed = true;
+        fail(errno);
     m_buffer.clear();
     return !m_failed;
 }
 
+void TraceWriter::fail(int savedErrno)
+{
+    if (m_failed)
+        return;
+    m_failed = true;
+    m_reason = explainFailure(m_file.fileName(), true, savedErrno, m_file.errorString());
+}
+
 QString TraceWriter::close()
 {
-    const bool written = flush() && m_file.flush();
-    const QString reason = m_file.errorString();
+    // the rows, then whatever Qt still buffers: a full disk may show only here
+    flush();
+    while (!m_failed && m_file.bytesToWrite() > 0) {
+        errno = 0;
+        if (!m_file.flush())
+            fail(errno);
+    }
     m_file.close();
-    if (!written)
-        return QDir::toNativeSeparators(m_file.fileName()) + u": cannot write the trace: "_s + reason;
+    if (m_failed)
+        return QDir::toNativeSeparators(m_file.fileName()) + u": cannot write the trace: "_s + m_reason;
     return {};
 }
 

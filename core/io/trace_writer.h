@@ -36,11 +36,15 @@ private:
     void writeRow(std::uint64_t step, double time, std::uint64_t particle, const Value *position,
                   const Value *velocity);
     bool flush();
+    // the first failure, with the system's reason taken where it happened ("No space left on
+    // device"), since Qt's own string has lost it by the time the trace is closed
+    void fail(int savedErrno);
 
     QFile m_file;
     QByteArray m_buffer;
     std::uint64_t m_rows = 0;
     bool m_failed = false;
+    QString m_reason;  // why, once m_failed
 };
 
 }  // namespace io

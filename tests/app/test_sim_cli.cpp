@@ -124,6 +124,7 @@ private slots:
     void overridesReachTheOutput();
     void outputRefusesWhatIsNotAFile();
     void outputOntoAFullDiskFails();
+    void traceOntoAFullDiskSaysWhy();
     void runLeavingTheFileRangeBlowsUp();
     void outputsMustNotNameTheInputOrEachOther();
     void resumeEqualsUninterrupted_data();
@@ -385,6 +386,20 @@ void TestSimCli::outputOntoAFullDiskFails()
     QCOMPARE(readAll(output), before);
     QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::System),
              QStringList{u"final.json"_s});
+}
+
+void TestSimCli::traceOntoAFullDiskSaysWhy()
+{
+    // a trace that outgrows the room on the disk (every file limited to 4096 bytes) stops the run
+    // with exit 2 and the system's reason, not "Unknown error"
+    const QString trace = path(u"full.csv"_s);
+    const Run run = test::runProgram(QStringLiteral(SPRINGLAB_WITH_FILE_LIMIT),
+                                     {u"4096"_s, QStringLiteral(SPRINGLAB_SIM), path(u"scene.json"_s), u"--steps"_s,
+                                      u"200"_s, u"--trace"_s, trace},
+                                     120000);
+    QVERIFY2(run.exitCode == 2, run.err.constData());
+    const QString expected = QDir::toNativeSeparators(trace) + u": cannot write the trace: File too large"_s;
+    QVERIFY2(QString::fromUtf8(run.err).contains(expected), run.err.constData());
 }
 
 void TestSimCli::runLeavingTheFileRangeBlowsUp()
