@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <dlfcn.h>
 
 namespace app {
 
@@ -28,6 +29,38 @@ bool asksToRender(int argc, char *argv[])
     return false;
 }
 
+namespace {
+
+// Whether an X server answers at DISPLAY. Qt's xcb platform aborts the program when none does, so
+// the connection is tried first, with the library that platform loads anyway (libxcb), opened at
+// run time so that building needs no X headers. Empty when it answers, else why not.
+QString displayProblem()
+{
+    void *xcb = dlopen("libxcb.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (!xcb)
+        return u"libxcb.so.1, which Qt's xcb platform draws through, cannot be loaded"_s;
+    using Connect = void *(*)(const char *, int *);
+    using HasError = int (*)(void *);
+    using Disconnect = void (*)(void *);
+    const auto connect = reinterpret_cast<Connect>(dlsym(xcb, "xcb_connect"));
+    const auto hasError = reinterpret_cast<HasError>(dlsym(xcb, "xcb_connection_has_error"));
+    const auto disconnect = reinterpret_cast<Disconnect>(dlsym(xcb, "xcb_disconnect"));
+    QString problem;
+    if (!connect || !hasError || !disconnect) {
+        problem = u"libxcb.so.1 lacks xcb_connect"_s;
+    } else {
+        // (a connection that failed is still an object to disconnect)
+        void *connection = connect(nullptr, nullptr);
+        if (hasError(connection) != 0)
+            problem = u"no X server answers at DISPLAY=%1"_s.arg(qEnvironmentVariable("DISPLAY"));
+        disconnect(connection);
+    }
+    dlclose(xcb);
+    return problem;
+}
+
+}  // namespace
+
 std::unique_ptr<QCoreApplication> makeApplication(int &argc, char *argv[], bool render, QString *error)
 {
     if (!render)
@@ -38,6 +71,11 @@ std::unique_ptr<QCoreApplication> makeApplication(int &argc, char *argv[], bool 
     if (qEnvironmentVariableIsEmpty("DISPLAY")) {
         *error = u"--render draws with OpenGL and needs an X display, but DISPLAY is not set; run it under a "
                  "virtual X server: xvfb-run -a springlab-sim SCENE.json --render DIR"_s;
+        return nullptr;
+    }
+    if (const QString problem = displayProblem(); !problem.isEmpty()) {
+        *error = u"--render draws with OpenGL and needs an X display, but "_s + problem +
+                 u"; run it under a virtual X server: xvfb-run -a springlab-sim SCENE.json --render DIR"_s;
         return nullptr;
     }
     qputenv("QT_QPA_PLATFORM", "xcb");

@@ -143,6 +143,13 @@ void TestSimRender::withoutADisplaySaysToUseXvfbRun()
     // the other modes still run there
     const test::ProgramRun plain = sim({scene(), u"--steps"_s, u"10"_s, u"--quiet"_s}, environment);
     QVERIFY2(plain.exitCode == 0, plain.err.constData());
+
+    // a DISPLAY where no X server answers: the same, where Qt's xcb platform would abort (134)
+    environment.insert(u"DISPLAY"_s, u":9876"_s);
+    const test::ProgramRun unreachable = sim({scene(), u"--render"_s, folder}, environment);
+    QCOMPARE(unreachable.exitCode, 2);
+    QVERIFY2(unreachable.err.contains("no X server answers at DISPLAY=:9876"), unreachable.err.constData());
+    QVERIFY(!QFile::exists(folder));
 }
 
 QTEST_GUILESS_MAIN(TestSimRender)
