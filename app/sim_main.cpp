@@ -26,6 +26,10 @@
 #include <QElapsedTimer>
 #include <QTextStream>
 
+#include <cerrno>
+#include <cstdio>
+#include <system_error>
+
 #include <algorithm>
 #include <memory>
 
@@ -38,10 +42,39 @@ constexpr int kExitBadInput = 2;
 constexpr int kExitBlewUp = 3;
 constexpr int kExitReplayDiffers = 4;
 
+// text that came from a file, made safe for a terminal: a control character (an escape sequence
+// in a name could recolour or rewrite the screen) is shown as \u001b; line breaks and tabs stay
+QString printable(const QString &text)
+{
+    QString out;
+    out.reserve(text.size());
+    for (const QChar c : text) {
+        const char16_t u = c.unicode();
+        if ((u < 0x20 && u != u'\n' && u != u'\t') || (u >= 0x7f && u <= 0x9f))
+            out += u"\\u%1"_s.arg(int(u), 4, 16, QLatin1Char('0'));
+        else
+            out += c;
+    }
+    return out;
+}
+
 int failWith(const QString &message)
 {
-    QTextStream(stderr) << "springlab-sim: " << message << '\n';
+    QTextStream(stderr) << "springlab-sim: " << printable(message) << '\n';
     return kExitBadInput;
+}
+
+// the exit code, once what was printed has reached stdout: a summary that could not be written
+// (a full disk, a closed pipe) is a failure, not a success
+int finish(int code)
+{
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        const int savedErrno = errno;
+        QTextStream(stderr) << "springlab-sim: cannot write to the standard output: "
+                            << QString::fromStdString(std::generic_category().message(savedErrno)) << '\n';
+        return code == kExitOk ? kExitBadInput : code;
+    }
+    return code;
 }
 
 // "1 spring", "2 springs"
@@ -83,7 +116,7 @@ int replaySession(const app::SimOptions &options)
         out << (same ? u""_s : u"springlab-sim: "_s) << options.scenePath << u": "_s << recording.entries.size()
             << u" edits over "_s << recording.steps << u" steps replayed in "_s << clock.elapsed() << u" ms; final state "_s
             << hex(replayed.hash) << (same ? u", as recorded\n"_s : u", but the recording ended with "_s + hex(recording.finalHash) + u'\n');
-    return same ? kExitOk : kExitReplayDiffers;
+    return finish(same ? kExitOk : kExitReplayDiffers);
 }
 
 }  // namespace
@@ -122,7 +155,7 @@ int main(int argc, char *argv[])
         return failWith(loaded.error);
     if (!options.quiet)
         for (const QString &warning : loaded.warnings)
-            QTextStream(stderr) << "springlab-sim: warning: " << warning << '\n';
+            QTextStream(stderr) << "springlab-sim: warning: " << printable(warning) << '\n';
     core::SceneDesc scene = *loaded.scene;
     if (const QString problem = app::applyOverrides(options, scene); !problem.isEmpty())
         return failWith(problem);
@@ -199,7 +232,7 @@ int main(int argc, char *argv[])
     if (!options.quiet) {
         const double seconds = static_cast<double>(nanoseconds) * 1e-9;
         QTextStream out(stdout);
-        out << "springlab-sim: " << options.scenePath << " (\"" << QString::fromStdString(scene.name)
+        out << "springlab-sim: " << options.scenePath << " (\"" << printable(QString::fromStdString(scene.name))
             << "\"): " << counted(scene.particles.size(), "particle") << ", " << counted(scene.springs.size(), "spring")
             << ", " << counted(scene.planes.size(), "plane") << '\n';
         out << QString::asprintf("  settings   time step %.9g s, ", scene.settings.timeStep)
@@ -242,5 +275,5 @@ int main(int argc, char *argv[])
                             << QString::fromStdString(core::explainBlowup(*model, *work.blowup,
                                                                           core::stabilityLimit(*model, initial)))
                             << (options.outputPath.isEmpty() ? "" : "\n  (no --output written)") << '\n';
-    return blewUp ? kExitBlewUp : kExitOk;
+    return finish(blewUp ? kExitBlewUp : kExitOk);
 }

@@ -40,7 +40,11 @@ Eigen::Vector3d unitNormal(const Eigen::Vector3d &normal)
     const double squared = normal.squaredNorm();
     if (std::abs(squared - 1.0) <= 4.0 * std::numeric_limits<double>::epsilon())
         return normal;
-    return normal / std::sqrt(squared);
+    if (squared >= std::numeric_limits<double>::min())
+        return normal / std::sqrt(squared);
+    // so short that its square underflows (1e-200): scaled up first, it still has a direction
+    const Eigen::Vector3d scaled = normal / normal.cwiseAbs().maxCoeff();
+    return scaled / scaled.norm();
 }
 
 std::optional<SceneProblem> findProblem(const SceneDesc &scene)
@@ -101,7 +105,7 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
         if (!checkVector(Parameter::Coordinate, plane.normal, indexed("planes", i, "normal"), problem) ||
             !check(Parameter::Coordinate, plane.offset, indexed("planes", i, "offset"), problem))
             return problem;
-        if (!(plane.normal.squaredNorm() > 1e-24))
+        if (!(plane.normal.cwiseAbs().maxCoeff() > 0.0))
             return SceneProblem{indexed("planes", i, "normal"), "is zero: a plane needs a direction"};
         if ((plane.friction && !check(Parameter::Friction, *plane.friction, indexed("planes", i, "friction"), problem)) ||
             !check(Parameter::Extent, plane.size[0], indexed("planes", i, "size") + "[0]", problem) ||

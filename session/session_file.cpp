@@ -222,7 +222,8 @@ public:
                 !number(b.value(u"time"_s), at + u".time"_s, entry.time))
                 return false;
             if (spring >= springs)
-                return fail(at + u".spring"_s, u"expected a spring of the scene (0 to %1)"_s.arg(qlonglong(springs) - 1));
+                return fail(at + u".spring"_s, springs == 0 ? u"expected a spring of the scene, which has none"_s
+                                                            : u"expected a spring of the scene (0 to %1)"_s.arg(qlonglong(springs) - 1));
             if (out.springBroken[spring] != 0)
                 return fail(at + u".spring"_s, u"spring %1 broke twice"_s.arg(spring));
             out.springBroken[spring] = 1;
@@ -250,7 +251,9 @@ public:
         if (!number(value, path, d))
             return false;
         if (!(d >= -1.0 && d < double(scene.particles.size()) && d == std::floor(d)))
-            return fail(path, u"expected -1 or a particle of the scene (0 to %1)"_s.arg(scene.particles.size() - 1));
+            return fail(path, scene.particles.empty()
+                                  ? u"expected -1: the scene has no particles"_s
+                                  : u"expected -1 or a particle of the scene (0 to %1)"_s.arg(qlonglong(scene.particles.size()) - 1));
         out = int(d);
         return true;
     }
@@ -338,8 +341,12 @@ RecordingLoad parseRecording(const QByteArray &json, const QString &sourceName)
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     Reader reader(sourceName, json);
-    if (document.isNull()) {
-        result.error = sourceName + u": not JSON: "_s + parseError.errorString();
+    if (parseError.error != QJsonParseError::NoError) {
+        result.error = io::jsonSyntaxError(json, parseError, sourceName);
+        return result;
+    }
+    if (!document.isObject()) {
+        result.error = sourceName + u": expected a JSON object at the top level, got an array"_s;
         return result;
     }
     const QJsonObject root = document.object();
@@ -347,9 +354,13 @@ RecordingLoad parseRecording(const QByteArray &json, const QString &sourceName)
         result.error = sourceName + u": not a Springlab replay (format must be \"springlab-replay\")"_s;
         return result;
     }
-    if (root.value(u"version"_s).toInt() != kVersion) {
-        result.error = sourceName + u": version %1 is not supported (this Springlab reads %2)"_s
-                                        .arg(root.value(u"version"_s).toInt())
+    // the version as written: 1.5 is not version 1, nor version 0
+    const QJsonValue version = root.value(u"version"_s);
+    if (!version.isDouble() || version.toDouble() != kVersion) {
+        const QString written = version.isDouble() ? QString::number(version.toDouble(), 'g', 17)
+                                                   : QStringLiteral("missing or not a number");
+        result.error = sourceName + u": version %1 is not supported (this Springlab reads version %2)"_s
+                                        .arg(written)
                                         .arg(kVersion);
         return result;
     }

@@ -14,6 +14,7 @@ struct Frame {
     QString key;            // objects: the member being read
     bool haveKey = false;   // objects: a key has been read since '{' or ','
     bool expectKey = true;  // objects: the next string is a key
+    std::vector<QString> keys;  // objects: the keys read so far (an object has few)
 };
 
 bool isSpace(char c)
@@ -104,6 +105,13 @@ QString pathOf(const std::vector<Frame> &stack)
 
 QString memberPath(const QString &parent, const QString &key)
 {
+    const bool plain = !key.isEmpty() && !key.contains(u'.') && !key.contains(u'[') && !key.contains(u']') &&
+                       !key.contains(u'"');
+    if (!plain) {
+        QString quoted = key;
+        quoted.replace(u'\\', QStringLiteral("\\\\")).replace(u'"', QStringLiteral("\\\""));
+        return parent + QStringLiteral("[\"") + quoted + QStringLiteral("\"]");
+    }
     return parent.isEmpty() ? key : parent + u'.' + key;
 }
 
@@ -161,6 +169,12 @@ JsonScan scanJson(const QByteArray &json, qsizetype stopOffset)
                 top.key = text;
                 top.haveKey = true;
                 top.expectKey = false;
+                if (std::find(top.keys.begin(), top.keys.end(), text) != top.keys.end()) {
+                    if (scan.duplicateKey.isNull())
+                        scan.duplicateKey = pathOf(stack);
+                } else {
+                    top.keys.push_back(text);
+                }
             }
         } else if (isNumberChar(c)) {
             const qsizetype start = pos;

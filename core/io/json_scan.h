@@ -1,8 +1,9 @@
 #pragma once
-// A light pass over JSON text for the two things QJsonDocument does not tell: where in the
-// document a parse error happened (as a JSON path, "particles[3].mass"), and which number
-// literals were a negative zero (Qt's parser turns "-0" and "-0.0" into +0, which would break
-// bit-exact round trips). It only tokenizes; QJsonDocument stays the parser of record.
+// A light pass over JSON text for the three things QJsonDocument does not tell: where in the
+// document a parse error happened (as a JSON path, "particles[3].mass"), which number literals
+// were a negative zero (Qt's parser turns "-0" and "-0.0" into +0, which would break bit-exact
+// round trips), and which key came twice in one object (Qt keeps the last without a word). It
+// only tokenizes; QJsonDocument stays the parser of record.
 
 #include <QByteArray>
 #include <QSet>
@@ -10,7 +11,9 @@
 
 namespace io {
 
-// "settings" + "timeStep" -> "settings.timeStep"; "" + "format" -> "format"
+// "settings" + "timeStep" -> "settings.timeStep"; "" + "format" -> "format". A key that could be
+// read as a path ("particles[1].velocity", one with a '.', '[', ']' or '"', or an empty one) is
+// quoted, ["particles[1].velocity"], so that no key can name another member's path
 QString memberPath(const QString &parent, const QString &key);
 
 // "particles" + 3 -> "particles[3]"
@@ -18,6 +21,7 @@ QString elementPath(const QString &parent, qsizetype index);
 
 struct JsonScan {
     QSet<QString> negativeZeros;  // paths of the number literals that are a negative zero
+    QString duplicateKey;         // path of the first member whose key came before in its object
     QString pathAtStop;           // path of the value being read at stopOffset ("" at top level)
     int openAtStop = 0;           // objects and arrays still open there (or an unterminated string)
 };

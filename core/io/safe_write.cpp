@@ -102,8 +102,10 @@ QString explainFailure(const QString &path, bool writing, int savedErrno, const 
         return QStringLiteral("no file name given");
     if (info.isDir())
         return QStringLiteral("it is a folder, not a file");
+    // (a link that leads in a circle does not exist either, but is not missing)
     if (!writing && !info.exists())
-        return QStringLiteral("no such file");
+        return savedErrno != 0 && savedErrno != ENOENT ? QString::fromStdString(std::generic_category().message(savedErrno))
+                                                       : QStringLiteral("no such file");
     if (writing && !folder.exists())
         return u"the folder "_s + QDir::toNativeSeparators(folder.filePath()) + u" does not exist"_s;
     if (writing && !folder.isDir())

@@ -98,9 +98,10 @@ public:
     Reader(const QString &source, const QByteArray &json, const LoadLimits &limits)
         : m_source(source), m_limits(limits)
     {
-        // only a file with a "-0" in it can hold a negative zero
-        if (json.contains("-0"))
-            m_negativeZeros = scanJson(json).negativeZeros;
+        // negative zeros, and a key that comes twice in one object (Qt keeps the last)
+        JsonScan scan = scanJson(json);
+        m_negativeZeros = std::move(scan.negativeZeros);
+        m_duplicateKey = std::move(scan.duplicateKey);
     }
 
     QString error() const { return m_error; }
@@ -246,6 +247,7 @@ private:
     QString m_error;
     QStringList m_warnings;
     QSet<QString> m_negativeZeros;
+    QString m_duplicateKey;  // the first member whose key came before in its object (null: none)
 };
 
 bool Reader::readHeader(const QJsonObject &root)
@@ -438,7 +440,12 @@ bool Reader::readScene(const QJsonObject &root, core::SceneDesc &scene)
 {
     // structure and types, in file order
     QString name;
-    if (!readHeader(root) || !member(root, {}, QLatin1String("name"), Need::Required, name) ||
+    if (!readHeader(root))
+        return false;
+    // which of two values for one key was meant cannot be known: neither is taken
+    if (!m_duplicateKey.isNull())
+        return fail(m_duplicateKey, QStringLiteral("this key comes twice in its object: keep one"));
+    if (!member(root, {}, QLatin1String("name"), Need::Required, name) ||
         !readSettings(root, scene.settings) || !readParticles(root, scene.particles) || !readSprings(root, scene) ||
         !readPlanes(root, scene.planes) ||
         !member(root, {}, QLatin1String("steerable"), Need::Optional, scene.steerable))
@@ -517,10 +524,25 @@ QString tooLarge(const QString &source, qint64 size, qint64 limit)
 }
 
 // the message for text QJsonDocument could not parse, with the JSON path it broke off in
-QString syntaxError(const QByteArray &json, const QJsonParseError &error, const QString &source)
+QString syntaxErrorOf(const QByteArray &json, const QJsonParseError &error, const QString &source)
 {
     if (json.trimmed().isEmpty())
         return source + u": the file is empty (expected a JSON object)"_s;
+    // a byte order mark alone, or a lone value where the object should be (Qt 6.4 calls both an
+    // illegal value at byte 1)
+    const QByteArray text = (json.startsWith("\xEF\xBB\xBF") ? json.mid(3) : json).trimmed();
+    if (text.isEmpty())
+        return source + u": the file is empty: it holds only a byte order mark (expected a JSON object)"_s;
+    const char first = text[0];
+    if (first != '{' && first != '[') {
+        const char *got = first == '"'                                        ? "a string"
+                          : text.startsWith("true") || text.startsWith("false") ? "true or false"
+                          : text.startsWith("null")                          ? "null"
+                          : (first == '-' || std::isdigit(static_cast<unsigned char>(first))) ? "a number"
+                                                                                             : nullptr;
+        if (got)
+            return source + u": expected a JSON object at the top level, got "_s + QString::fromLatin1(got);
+    }
 
     const qsizetype offset = std::clamp<qsizetype>(error.offset, 0, json.size());
     const QString where = error.errorString() + u' ' + location(json, offset);
@@ -669,7 +691,7 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
     QJsonParseError parseError{};
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
-        result.error = syntaxError(json, parseError, sourceName);
+        result.error = syntaxErrorOf(json, parseError, sourceName);
         return result;
     }
     if (!document.isObject()) {
@@ -688,6 +710,11 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
     else
         result.error = reader.error();
     return result;
+}
+
+QString jsonSyntaxError(const QByteArray &json, const QJsonParseError &error, const QString &sourceName)
+{
+    return syntaxErrorOf(json, error, sourceName);
 }
 
 QString readFileWithin(const QString &path, qint64 limitBytes, QByteArray &bytes)

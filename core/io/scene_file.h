@@ -9,6 +9,8 @@
 #include <QByteArray>
 #include <QString>
 #include <QStringList>
+
+struct QJsonParseError;
 #include <optional>
 
 namespace io {
@@ -43,6 +45,11 @@ struct SaveResult {
     QString error;  // empty on success
     bool ok() const { return error.isEmpty(); }
 };
+
+// why json is not a JSON object, in the words of a scene file's messages ("the file is empty",
+// "expected a JSON object at the top level, got a number", "not valid JSON (... at byte N, line L,
+// column C)"), for other files of JSON (recordings)
+QString jsonSyntaxError(const QByteArray &json, const QJsonParseError &error, const QString &sourceName);
 
 // reads a whole file of at most limitBytes into bytes; a device with no size (a pipe, /dev/zero)
 // is read in pieces and refused one byte past the limit. Empty on success, else the message:

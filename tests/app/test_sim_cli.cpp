@@ -125,6 +125,9 @@ private slots:
     void outputRefusesWhatIsNotAFile();
     void outputOntoAFullDiskFails();
     void traceOntoAFullDiskSaysWhy();
+    void printsWhatIsSafeForATerminal();
+    void summaryThatCannotBeWrittenFails();
+    void linkLoopIsNamed();
     void runLeavingTheFileRangeBlowsUp();
     void outputsMustNotNameTheInputOrEachOther();
     void resumeEqualsUninterrupted_data();
@@ -400,6 +403,44 @@ void TestSimCli::traceOntoAFullDiskSaysWhy()
     QVERIFY2(run.exitCode == 2, run.err.constData());
     const QString expected = QDir::toNativeSeparators(trace) + u": cannot write the trace: File too large"_s;
     QVERIFY2(QString::fromUtf8(run.err).contains(expected), run.err.constData());
+}
+
+void TestSimCli::printsWhatIsSafeForATerminal()
+{
+    // a name with escape sequences (which could recolour or rewrite a terminal) is printed with
+    // them shown, \u001b, not sent
+    core::SceneDesc scene = testScene();
+    scene.name = "\x1b[31mred\x1b[0m\x07";
+    const QString file = path(u"escapes.json"_s);
+    QVERIFY(io::saveScene(file, scene).ok());
+    const Run run = sim({file, u"--steps"_s, u"2"_s});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY2(run.out.contains("(\"\\u001b[31mred\\u001b[0m\\u0007\")"), run.out.constData());
+    QVERIFY(!run.out.contains('\x1b') && !run.out.contains('\x07'));
+}
+
+void TestSimCli::summaryThatCannotBeWrittenFails()
+{
+    // stdout on a full device: the summary is lost, so the run is not a success
+    if (!QFileInfo::exists(u"/dev/full"_s))
+        QSKIP("no /dev/full here");
+    const Run run = test::runProgram(u"/bin/sh"_s,
+                                     {u"-c"_s, u"exec \"$0\" \"$@\" > /dev/full"_s, QStringLiteral(SPRINGLAB_SIM),
+                                      path(u"scene.json"_s), u"--steps"_s, u"2"_s},
+                                     60000);
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.contains("cannot write to the standard output: No space left on device"), run.err.constData());
+}
+
+void TestSimCli::linkLoopIsNamed()
+{
+    // two links that lead to each other are not "no such file"
+    const QString first = path(u"loop-a.json"_s), second = path(u"loop-b.json"_s);
+    QVERIFY(QFile::link(second, first));
+    QVERIFY(QFile::link(first, second));
+    const Run run = sim({first});
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.contains("cannot open: Too many levels of symbolic links"), run.err.constData());
 }
 
 void TestSimCli::runLeavingTheFileRangeBlowsUp()

@@ -274,6 +274,8 @@ private slots:
     void negativeZeroLiterals();
     void normalsNormalised_data();
     void normalsNormalised();
+    void tinyNormalHasADirection();
+    void keyLikeAPathNamesNoOtherMember();
     void roundTripAwkward();
     void roundTripRandomBits();
     void examplesExist();
@@ -324,6 +326,18 @@ void TestSceneFile::badFile_data()
                                       << QStringLiteral("garbage at the end of the document");
     QTest::newRow("not an object") << QByteArray() << QByteArray("[1, 2]") << QString()
                                    << QStringLiteral("expected a JSON object at the top level, got an array");
+    QTest::newRow("a number at the top") << QByteArray() << QByteArray(" 7\n") << QString()
+                                         << QStringLiteral("expected a JSON object at the top level, got a number");
+    QTest::newRow("a string at the top") << QByteArray() << QByteArray("\"scene\"") << QString()
+                                         << QStringLiteral("expected a JSON object at the top level, got a string");
+    QTest::newRow("only a byte order mark") << QByteArray() << QByteArray("\xEF\xBB\xBF\n") << QString()
+                                            << QStringLiteral("the file is empty: it holds only a byte order mark");
+
+    // a key twice in one object: Qt keeps the last, silently; Springlab takes neither
+    QTest::newRow("particles twice") << QByteArray("\"particles\": [\n") << QByteArray("\"particles\": [], \"particles\": [\n")
+                                     << QStringLiteral("particles") << QStringLiteral("this key comes twice in its object");
+    QTest::newRow("mass twice") << QByteArray("\"mass\": 2,") << QByteArray("\"mass\": 2, \"mass\": 5,")
+                                << QStringLiteral("particles[1].mass") << QStringLiteral("this key comes twice in its object");
 
     // huge numbers and NaN, which JSON cannot hold
     QTest::newRow("1e999") << QByteArray("\"mass\": 3") << QByteArray("\"mass\": 1e999")
@@ -792,6 +806,35 @@ void TestSceneFile::negativeZeroLiterals()
     // only that one
     QVERIFY(!std::signbit(result.scene->particles[0].velocity.z()));
     QVERIFY(!std::signbit(result.scene->planes[0].offset));
+}
+
+void TestSceneFile::tinyNormalHasADirection()
+{
+    // [1e-200, 0, 0] is not zero, though its square underflows: it points along x
+    const QByteArray json = QByteArray(kBase).replace("\"normal\": [0, 1, 0]", "\"normal\": [1e-200, 0, -1e-200]");
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("plane.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    const Eigen::Vector3d normal = result.scene->planes[0].normal;
+    QVERIFY((normal - Eigen::Vector3d(1.0, 0.0, -1.0) / std::sqrt(2.0)).norm() < 1e-15);
+
+    // and only an exact zero is refused
+    const io::LoadResult zero = io::parseScene(QByteArray(kBase).replace("\"normal\": [0, 1, 0]", "\"normal\": [0, 0, -0]"),
+                                               QStringLiteral("plane.json"));
+    QVERIFY(!zero.ok());
+    QVERIFY2(zero.error.contains(u"planes[0].normal: is zero"_s), qPrintable(zero.error));
+}
+
+void TestSceneFile::keyLikeAPathNamesNoOtherMember()
+{
+    // an unknown key spelt like the path of a real member: its -0 must not reach that member, and
+    // the warning names it so that it cannot be taken for the member
+    const QByteArray json = QByteArray(kBase).replace(
+        "\"name\": \"base\",", "\"name\": \"base\", \"particles[1].velocity\": [-0, -0, -0],");
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("keys.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    const Eigen::Vector3d velocity = result.scene->particles[1].velocity;
+    QVERIFY(!std::signbit(velocity.x()) && !std::signbit(velocity.y()) && !std::signbit(velocity.z()));
+    QCOMPARE(result.warnings, QStringList{u"keys.json: [\"particles[1].velocity\"]: unknown key, ignored"_s});
 }
 
 void TestSceneFile::normalsNormalised_data()

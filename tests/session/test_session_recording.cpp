@@ -102,6 +102,7 @@ private slots:
     void replayThroughAFileToo();
     void aRecordingChangedByOneStepNoLongerMatches();
     void damagedFilesAreRefusedWithTheirPath();
+    void indexIntoAnEmptySceneIsNamed();
     void nothingIsRecordedWithoutAStart();
     void replayAfterSpringsBroke();
     void damagedBreaksAreRefused();
@@ -178,12 +179,33 @@ void TestSessionRecording::damagedFilesAreRefusedWithTheirPath()
         }
         return true;
     };
-    QVERIFY(refused(good.left(good.size() / 2), "not JSON"));
+    QVERIFY(refused(good.left(good.size() / 2), "the file ends too early: is it truncated?"));
+    QVERIFY(refused(QByteArray(), "the file is empty"));
+    QVERIFY(refused(QByteArray(good).replace("\"version\": 1", "\"version\": 1.5"), "version 1.5 is not supported"));
     QVERIFY(refused(QByteArray(good).replace("springlab-replay", "springlab-scene"), "not a Springlab replay"));
     QVERIFY(refused(QByteArray(good).replace("\"edit\": \"tilt\"", "\"edit\": \"twist\""), "unknown edit \"twist\""));
     QVERIFY(refused(QByteArray(good).replace("\"particle\": 7", "\"particle\": 700"), "expected -1 or a particle"));
     QVERIFY(refused(QByteArray(good).replace("\"hash\": \"", "\"hash\": \"zz"), "hash"));
     QVERIFY(refused(QByteArray(good).replace("\"positions\": [", "\"positions\": [1, "), "start.positions"));
+}
+
+void TestSessionRecording::indexIntoAnEmptySceneIsNamed()
+{
+    // a scene with no particles: the range "(0 to -1)" (or 2^64 - 1) would mean nothing
+    auto empty = std::make_shared<core::SceneDesc>();
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{empty, ui::SceneChange::Replace});
+    runner.apply(ui::StartRecording{});
+    runner.apply(ui::SteerEdit{-1, Eigen::Vector3d::Zero()});
+    runner.apply(ui::StopRecording{1});
+    const auto recording = stoppedRecording(runner);
+    QVERIFY(recording);
+    const QByteArray json = ui::recordingToJson(*recording);
+    QVERIFY(json.contains("\"particle\": -1"));
+    const ui::RecordingLoad loaded = ui::parseRecording(QByteArray(json).replace("\"particle\": -1", "\"particle\": 3"),
+                                                        QStringLiteral("s.json"));
+    QVERIFY(!loaded.recording);
+    QVERIFY2(loaded.error.contains(QStringLiteral("expected -1: the scene has no particles")), qPrintable(loaded.error));
 }
 
 void TestSessionRecording::nothingIsRecordedWithoutAStart()
