@@ -50,15 +50,20 @@ bool isNegativeZero(const char *begin, const char *end)
 }
 
 // reads the string starting at the quote json[pos]; returns the position after its closing quote,
-// or -1 when the text ends first
-qsizetype readString(const QByteArray &json, qsizetype pos, QString &out)
+// or -1 when the text ends first. loneSurrogate: set when a \u escape is half of a UTF-16 pair
+// without its other half (which Qt turns into a replacement character without a word)
+qsizetype readString(const QByteArray &json, qsizetype pos, QString &out, bool &loneSurrogate)
 {
     out.clear();
+    loneSurrogate = false;
+    bool highPending = false;  // the last thing read was a \u escape of a high surrogate
     const qsizetype size = json.size();
     qsizetype runStart = ++pos;
     auto flushRun = [&](qsizetype runEnd) { out += QString::fromUtf8(json.constData() + runStart, runEnd - runStart); };
     while (pos < size && json[pos] != '"') {
         if (json[pos] != '\\') {
+            loneSurrogate = loneSurrogate || highPending;
+            highPending = false;
             ++pos;
             continue;
         }
@@ -79,13 +84,22 @@ qsizetype readString(const QByteArray &json, qsizetype pos, QString &out)
             for (int digit = 0; digit < 4 && pos < size; ++digit, ++pos)
                 unit = static_cast<char16_t>(unit * 16 + std::max(0, hexValue(json[pos])));
             out += QChar(unit);
+            const bool high = QChar::isHighSurrogate(unit);
+            const bool low = QChar::isLowSurrogate(unit);
+            loneSurrogate = loneSurrogate || (highPending && !low) || (!highPending && low);
+            highPending = high;
             break;
         }
-        default: out += QLatin1Char(kind); break;  // \" \\ \/
+        default:
+            out += QLatin1Char(kind);  // \" \\ \/
+            loneSurrogate = loneSurrogate || highPending;
+            highPending = false;
+            break;
         }
         runStart = pos;
     }
     flushRun(pos);
+    loneSurrogate = loneSurrogate || highPending;
     return pos < size ? pos + 1 : -1;
 }
 
@@ -159,11 +173,15 @@ JsonScan scanJson(const QByteArray &json, qsizetype stopOffset)
         } else if (c == ':') {
             ++pos;
         } else if (c == '"') {
-            pos = readString(json, pos, text);
+            bool lone = false;
+            pos = readString(json, pos, text, lone);
             if (pos < 0) {
                 unterminatedString = true;
                 break;
             }
+            // (a key's path is its parent's: the key itself is what is wrong)
+            if (lone && scan.loneSurrogate.isNull())
+                scan.loneSurrogate = pathOf(stack);
             if (!stack.empty() && !stack.back().array && stack.back().expectKey) {
                 Frame &top = stack.back();
                 top.key = text;

@@ -22,6 +22,7 @@ QString elementPath(const QString &parent, qsizetype index);
 struct JsonScan {
     QSet<QString> negativeZeros;  // paths of the number literals that are a negative zero
     QString duplicateKey;         // path of the first member whose key came before in its object
+    QString loneSurrogate;        // path of the first string with half a UTF-16 pair, \ud800 alone
     QString pathAtStop;           // path of the value being read at stopOffset ("" at top level)
     int openAtStop = 0;           // objects and arrays still open there (or an unterminated string)
 };

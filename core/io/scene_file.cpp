@@ -102,6 +102,7 @@ public:
         JsonScan scan = scanJson(json);
         m_negativeZeros = std::move(scan.negativeZeros);
         m_duplicateKey = std::move(scan.duplicateKey);
+        m_loneSurrogate = std::move(scan.loneSurrogate);
     }
 
     QString error() const { return m_error; }
@@ -248,6 +249,8 @@ private:
     QStringList m_warnings;
     QSet<QString> m_negativeZeros;
     QString m_duplicateKey;  // the first member whose key came before in its object (null: none)
+    QString m_loneSurrogate;  // the first string with half a UTF-16 pair (null: none)
+    QSet<QString> m_derivedRestLengths;  // paths of the rest lengths taken from the particles' distance
 };
 
 bool Reader::readHeader(const QJsonObject &root)
@@ -395,10 +398,12 @@ bool Reader::readSprings(const QJsonObject &root, core::SceneDesc &scene)
 
         // no rest length: the spring rests at its initial length
         const auto count = static_cast<int>(scene.particles.size());
-        if (!hasRestLength && spring.a >= 0 && spring.a < count && spring.b >= 0 && spring.b < count)
+        if (!hasRestLength && spring.a >= 0 && spring.a < count && spring.b >= 0 && spring.b < count) {
             spring.restLength = (scene.particles[static_cast<std::size_t>(spring.a)].position -
                                  scene.particles[static_cast<std::size_t>(spring.b)].position)
                                     .norm();
+            m_derivedRestLengths.insert(memberPath(path, QLatin1String("restLength")));
+        }
     }
     return true;
 }
@@ -445,6 +450,10 @@ bool Reader::readScene(const QJsonObject &root, core::SceneDesc &scene)
     // which of two values for one key was meant cannot be known: neither is taken
     if (!m_duplicateKey.isNull())
         return fail(m_duplicateKey, QStringLiteral("this key comes twice in its object: keep one"));
+    // Qt would read it as a replacement character: the text would change without a word
+    if (!m_loneSurrogate.isNull())
+        return fail(m_loneSurrogate, QStringLiteral("a \\u escape is half of a UTF-16 pair (a lone surrogate), "
+                                                    "which is no character"));
     if (!member(root, {}, QLatin1String("name"), Need::Required, name) ||
         !readSettings(root, scene.settings) || !readParticles(root, scene.particles) || !readSprings(root, scene) ||
         !readPlanes(root, scene.planes) ||
@@ -457,8 +466,14 @@ bool Reader::readScene(const QJsonObject &root, core::SceneDesc &scene)
                      QLatin1String("planes"), QLatin1String("steerable")});
 
     // values: the same checks and messages as the editor's
-    if (const auto problem = core::findProblem(scene))
-        return fail(QString::fromStdString(problem->path), QString::fromStdString(problem->message));
+    if (const auto problem = core::findProblem(scene)) {
+        const QString path = QString::fromStdString(problem->path);
+        // a rest length the file did not give is the distance between the spring's particles
+        const QString why = m_derivedRestLengths.contains(path)
+                                ? u" (the distance between its particles, taken since the spring gives no restLength)"_s
+                                : QString();
+        return fail(path, QString::fromStdString(problem->message) + why);
+    }
 
     // planes are kept with unit normals
     for (core::PlaneDesc &plane : scene.planes)

@@ -276,6 +276,7 @@ private slots:
     void normalsNormalised();
     void tinyNormalHasADirection();
     void keyLikeAPathNamesNoOtherMember();
+    void surrogatePairIsACharacter();
     void roundTripAwkward();
     void roundTripRandomBits();
     void examplesExist();
@@ -336,6 +337,14 @@ void TestSceneFile::badFile_data()
     // a key twice in one object: Qt keeps the last, silently; Springlab takes neither
     QTest::newRow("particles twice") << QByteArray("\"particles\": [\n") << QByteArray("\"particles\": [], \"particles\": [\n")
                                      << QStringLiteral("particles") << QStringLiteral("this key comes twice in its object");
+    QTest::newRow("rest length from far apart particles")
+        << QByteArray("{\"position\": [0.8, 1, 0]") << QByteArray("{\"position\": [0.8, 2e6, 0]")
+        << QStringLiteral("springs[1].restLength")
+        << QStringLiteral("(the distance between its particles, taken since the spring gives no restLength)");
+    QTest::newRow("lone surrogate") << QByteArray("\"name\": \"base\"") << QByteArray("\"name\": \"ba\\ud800se\"")
+                                    << QStringLiteral("name") << QStringLiteral("a lone surrogate");
+    QTest::newRow("lone low surrogate") << QByteArray("\"name\": \"base\"") << QByteArray("\"name\": \"base\\udc00\"")
+                                        << QStringLiteral("name") << QStringLiteral("a lone surrogate");
     QTest::newRow("mass twice") << QByteArray("\"mass\": 2,") << QByteArray("\"mass\": 2, \"mass\": 5,")
                                 << QStringLiteral("particles[1].mass") << QStringLiteral("this key comes twice in its object");
 
@@ -835,6 +844,15 @@ void TestSceneFile::keyLikeAPathNamesNoOtherMember()
     const Eigen::Vector3d velocity = result.scene->particles[1].velocity;
     QVERIFY(!std::signbit(velocity.x()) && !std::signbit(velocity.y()) && !std::signbit(velocity.z()));
     QCOMPARE(result.warnings, QStringList{u"keys.json: [\"particles[1].velocity\"]: unknown key, ignored"_s});
+}
+
+void TestSceneFile::surrogatePairIsACharacter()
+{
+    // both halves of a pair, escaped: one character outside the basic plane, as written
+    const QByteArray json = QByteArray(kBase).replace("\"name\": \"base\"", "\"name\": \"ball \\ud83c\\udfb1\"");
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("pair.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QCOMPARE(QString::fromStdString(result.scene->name), u"ball \U0001F3B1"_s);
 }
 
 void TestSceneFile::normalsNormalised_data()
