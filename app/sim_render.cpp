@@ -11,7 +11,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <chrono>
 #include <dlfcn.h>
+#include <thread>
 
 namespace app {
 
@@ -36,7 +38,9 @@ namespace {
 // run time so that building needs no X headers. Empty when it answers, else why not.
 QString displayProblem()
 {
-    void *xcb = dlopen("libxcb.so.1", RTLD_NOW | RTLD_LOCAL);
+    // (never unloaded: Qt's xcb platform loads the same library next, and unmapping it under
+    // anything it registered made the program crash at exit now and then)
+    void *xcb = dlopen("libxcb.so.1", RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
     if (!xcb)
         return u"libxcb.so.1, which Qt's xcb platform draws through, cannot be loaded"_s;
     using Connect = void *(*)(const char *, int *);
@@ -49,13 +53,23 @@ QString displayProblem()
     if (!connect || !hasError || !disconnect) {
         problem = u"libxcb.so.1 lacks xcb_connect"_s;
     } else {
-        // (a connection that failed is still an object to disconnect)
+        // A connection that answered stays open for the program's life: closing the server's last
+        // client makes an X server reset (Xvfb under xvfb-run does), and Qt's own connection,
+        // made a moment later, then failed now and then and aborted. (A failed connection is
+        // still an object to disconnect.)
+        // A server that is resetting (its last client just left) refuses for a moment: a few
+        // tries, 50 ms apart, before it counts as absent.
         void *connection = connect(nullptr, nullptr);
-        if (hasError(connection) != 0)
+        for (int attempt = 1; attempt < 5 && hasError(connection) != 0; ++attempt) {
+            disconnect(connection);
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            connection = connect(nullptr, nullptr);
+        }
+        if (hasError(connection) != 0) {
             problem = u"no X server answers at DISPLAY=%1"_s.arg(qEnvironmentVariable("DISPLAY"));
-        disconnect(connection);
+            disconnect(connection);
+        }
     }
-    dlclose(xcb);
     return problem;
 }
 
