@@ -1,5 +1,6 @@
 #include "stability.h"
 
+#include "parameters.h"
 #include "spring_jacobian.h"
 
 #include <algorithm>
@@ -26,12 +27,43 @@ void applyScaled(const Model &model, const State &state, const Eigen::VectorXd &
     out = out * rootInvMass.asDiagonal();
 }
 
-std::string format(double value)
+std::string format(double value, int digits = 2)
 {
     std::ostringstream out;
-    out.precision(2);
+    out.precision(digits);
     out << value;
     return out.str();
+}
+
+// the fewest significant digits (at least 2) at which a and b read differently
+int distinctDigits(double a, double b)
+{
+    int digits = 2;
+    while (digits < 17 && format(a, digits) == format(b, digits))
+        ++digits;
+    return digits;
+}
+
+// the largest sub-step at which the drag -c v is stable for the model's explicit integrator: the
+// velocity of the lightest free particle decays at rate c/m, and an explicit step longer than
+// about 2 m/c (2.78 m/c for RK4) overshoots and grows; infinite where nothing limits it
+double dragStepLimit(const Model &model)
+{
+    const double infinity = std::numeric_limits<double>::infinity();
+    double rate = 0.0;
+    for (int i : model.freeParticles)
+        rate = std::max(rate, model.viscosity * model.invMass[i]);
+    if (!(rate > 0.0))
+        return infinity;
+    switch (model.integrator) {
+    case Integrator::SymplecticEuler:
+    case Integrator::ExplicitEuler:
+    case Integrator::VelocityVerlet: return 2.0 / rate;
+    case Integrator::Rk4: return 2.785 / rate;
+    case Integrator::ImplicitEuler:
+    case Integrator::AdaptiveRk45: return infinity;
+    }
+    return infinity;
 }
 
 }  // namespace
@@ -183,17 +215,41 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
         << (std::isfinite(blowup.value) ? "too large (" + format(blowup.value) + ")" : std::string("infinite"))
         << " at t = " << format(blowup.time) << " s (step " << blowup.step << ").";
 
-    // the reason, when the step is past the explicit limit
+    // the reason, when the step is past an explicit limit: the drag's, then the springs'
     const double h = model.subStep();
     const double maxStep = limit.maxSubStep(model.integrator);
     const std::string name(integratorName(model.integrator));
-    if (maxStep < h) {
+    const double most = parameterInfo(Parameter::Substeps).maximum;
+    // "use ≥ N substeps" only where N is allowed; beyond, what else helps
+    const auto advice = [&](double stableStep, const std::string &otherwise) {
+        const double needed = std::ceil(model.timeStep / (kStableShare * stableStep));
+        std::ostringstream text;
+        if (needed <= most)
+            text << "use ≥ " << static_cast<int>(needed) << " substeps or the implicit-euler integrator.";
+        else
+            text << "it would take " << format(needed) << " substeps, more than the " << format(most)
+                 << " allowed: use the implicit-euler integrator" << otherwise << ".";
+        return text.str();
+    };
+    const double dragStep = dragStepLimit(model);
+    if (dragStep < h) {
+        out << " The drag (viscosity " << format(model.viscosity) << " kg/s on a particle of "
+            << format(1.0 / model.invMass.maxCoeff()) << " kg) is too strong for the sub-step: " << name
+            << " needs sub-steps under " << format(dragStep) << " s, and the sub-step is " << format(h) << " s; "
+            << advice(dragStep, ", or a lower viscosity");
+    } else if (maxStep < h) {
         const double stiffest = model.springCount() > 0 ? model.stiffness.maxCoeff() : 0.0;
-        if (maxStep > 0.0) {
-            const int substeps = static_cast<int>(std::ceil(model.timeStep / (kStableShare * maxStep)));
-            out << " The time step " << format(h) << " s is " << format(h / maxStep) << "× the stability limit "
-                << format(maxStep) << " s for stiffness " << format(stiffest) << " N/m with " << name
-                << ": use ≥ " << substeps << " substeps or the implicit-euler integrator.";
+        if (!std::isfinite(limit.omegaMax) || (maxStep == 0.0 && model.integrator != Integrator::ExplicitEuler)) {
+            out << " The springs' stiffest vibration is faster than a double can hold (stiffness up to "
+                << format(stiffest) << " N/m, lightest particle " << format(1.0 / model.invMass.maxCoeff())
+                << " kg): no sub-step is stable; use softer springs or heavier particles.";
+        } else if (maxStep > 0.0) {
+            // enough digits that the step and the limit read differently (0.201 against 0.2)
+            const int digits = distinctDigits(h, maxStep);
+            out << " The time step " << format(h, digits) << " s is "
+                << format(h / maxStep, distinctDigits(h / maxStep, 1.0))
+                << "× the stability limit " << format(maxStep, digits) << " s for stiffness " << format(stiffest)
+                << " N/m with " << name << ": " << advice(maxStep, ", softer springs or heavier particles");
         } else {
             out << " " << name << " is unstable at any step on undamped springs (stiffness up to "
                 << format(stiffest) << " N/m): use symplectic-euler or implicit-euler.";

@@ -19,6 +19,8 @@ private slots:
     void measuredLimitMatchesTheory();
     void implicitAndAdaptiveHaveNoLimit();
     void blowupMessage();
+    void blowupAdviceIsPossible_data();
+    void blowupAdviceIsPossible();
     void adaptiveStopsOnAHopelesslyStiffScene();
     void autoSubstepsKeepTheChainStable();
     void pairSpeedLimit();
@@ -152,6 +154,55 @@ void TestStability::blowupMessage()
     QVERIFY2(text.contains("The time step 0.02 s is 3.2× the stability limit 0.0063 s"), message.c_str());
     QVERIFY2(text.contains("stiffness 1e+05 N/m with symplectic-euler"), message.c_str());
     QVERIFY2(text.contains("use ≥ 4 substeps or the implicit-euler integrator"), message.c_str());
+}
+
+void TestStability::blowupAdviceIsPossible_data()
+{
+    // the scene's oscillator (one free particle of `mass` on a spring of `stiffness`), and what
+    // the message must say, and must not
+    QTest::addColumn<double>("mass");
+    QTest::addColumn<double>("stiffness");
+    QTest::addColumn<double>("viscosity");
+    QTest::addColumn<double>("timeStep");
+    QTest::addColumn<QString>("says");
+    QTest::addColumn<QString>("neverSays");
+    // ω = 3e14 rad/s: 1.8e12 substeps would be needed, past the int range and the 10 000 allowed
+    QTest::newRow("far too many substeps") << 1e-20 << 1e9 << 0.0 << 0.01
+                                           << "it would take 1.8e+12 substeps, more than the 1e+04 allowed: use the "
+                                              "implicit-euler integrator, softer springs or heavier particles"
+                                           << "use ≥ -";
+    QTest::newRow("more than allowed") << 1e-5 << 1e9 << 0.0 << 0.01 << "more than the 1e+04 allowed" << "use ≥ ";
+    // drag 1e6 kg/s on 1e-9 kg: a time constant of 1e-15 s, named as the cause
+    QTest::newRow("drag") << 1e-9 << 1.0 << 1e6 << 0.01
+                          << "The drag (viscosity 1e+06 kg/s on a particle of 1e-09 kg) is too strong for the sub-step"
+                          << "within the springs' stability limit";
+    // ω = 10 rad/s, limit 0.2 s; a step of 0.201 s reads as such, not as "1× the limit 0.2 s"
+    QTest::newRow("just past the limit") << 1.0 << 100.0 << 0.0 << 0.201
+                                         << "The time step 0.201 s is 1.005× the stability limit 0.2 s" << "1× the";
+}
+
+void TestStability::blowupAdviceIsPossible()
+{
+    QFETCH(double, mass);
+    QFETCH(double, stiffness);
+    QFETCH(double, viscosity);
+    QFETCH(double, timeStep);
+    QFETCH(QString, says);
+    QFETCH(QString, neverSays);
+    core::OscillatorOptions options;
+    options.stiffness = stiffness;
+    options.damping = 0.0;
+    core::SceneDesc scene = core::makeOscillator(options);
+    for (core::ParticleDesc &p : scene.particles)
+        p.mass = mass;
+    scene.settings.viscosity = viscosity;
+    scene.settings.timeStep = timeStep;
+    test::Sim sim = test::compile(scene);
+    const core::Blowup blowup{1, core::Blowup::Quantity::Velocity, 1e12, 3, 2.0 * timeStep};
+    const QString text = QString::fromStdString(
+        core::explainBlowup(*sim.model, blowup, core::stabilityLimit(*sim.model, sim.state)));
+    QVERIFY2(text.contains(says), qPrintable(text));
+    QVERIFY2(!text.contains(neverSays), qPrintable(text));
 }
 
 void TestStability::adaptiveStopsOnAHopelesslyStiffScene()
