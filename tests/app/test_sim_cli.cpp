@@ -1,6 +1,7 @@
 // springlab-sim end to end, through QProcess: exit codes, the CSV trace's shape, and that
 // --output then resuming gives the same bits as a run that never stopped.
 
+#include "core/reference.h"
 #include "core/io/scene_file.h"
 #include "program_run.h"
 #include "session/session_file.h"
@@ -128,6 +129,7 @@ private slots:
     void printsWhatIsSafeForATerminal();
     void summaryThatCannotBeWrittenFails();
     void linkLoopIsNamed();
+    void energyGrowthIsAWarning();
     void runLeavingTheFileRangeBlowsUp();
     void outputsMustNotNameTheInputOrEachOther();
     void resumeEqualsUninterrupted_data();
@@ -441,6 +443,30 @@ void TestSimCli::linkLoopIsNamed()
     const Run run = sim({first});
     QCOMPARE(run.exitCode, 2);
     QVERIFY2(run.err.contains("cannot open: Too many levels of symbolic links"), run.err.constData());
+}
+
+void TestSimCli::energyGrowthIsAWarning()
+{
+    // explicit Euler on an undamped spring gains 1 + (hω)² of its energy a step: 7× in 200 steps,
+    // far from a blow-up; the summary must not say "warnings none"
+    core::OscillatorOptions options;
+    options.stiffness = 100.0;
+    options.damping = 0.0;
+    core::SceneDesc scene = core::makeOscillator(options);
+    scene.settings.integrator = core::Integrator::ExplicitEuler;
+    scene.settings.timeStep = 0.01;
+    const QString file = path(u"growing.json"_s);
+    QVERIFY(io::saveScene(file, scene).ok());
+    const Run run = sim({file, u"--steps"_s, u"200"_s});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY2(run.err.contains("explicit-euler is unstable at this step"), run.err.constData());
+    QVERIFY2(run.out.contains("warnings   1 (above)"), run.out.constData());
+
+    // symplectic Euler on the same spring keeps its energy: no warning
+    scene.settings.integrator = core::Integrator::SymplecticEuler;
+    QVERIFY(io::saveScene(file, scene).ok());
+    const Run steady = sim({file, u"--steps"_s, u"200"_s});
+    QVERIFY2(steady.out.contains("warnings   none"), steady.out.constData());
 }
 
 void TestSimCli::runLeavingTheFileRangeBlowsUp()
