@@ -8,7 +8,9 @@
 // it), then counting-sorted by i, so the list comes out in lexicographic order exactly as the
 // brute force makes it. A few particles much larger than the rest would make every cell huge:
 // those above twice the 90th percentile of the radii stay out of the grid and are tested against
-// every particle.
+// every particle. A particle keeps at most kMaxGridPartners pairs of the grid: a crowd of
+// coincident particles would otherwise need memory quadratic in its size (the cap is far above
+// the 12 that equal spheres can touch, so only such a crowd meets it).
 
 #include "broad_phase.h"
 
@@ -221,16 +223,28 @@ bool sortIntoGrid(const Model &model, const Eigen::Matrix3Xd &position, const Ei
 
 // the pairs of grid slot a with the slots [begin, end) that lie in one of `cells` cells along x
 // from `first`
+// from `first`; a particle with kMaxGridPartners pairs already gets no more
 void scanRow(ContactGrid &grid, const GridSlot &a, std::uint64_t first, std::uint64_t cells, int begin, int end)
 {
     constexpr std::uint64_t kStepX = std::uint64_t(1) << (2 * kAxisBits);
-    for (int k = begin; k < end; ++k) {
+    std::uint16_t &partnersOfA = grid.partners[std::size_t(a.particle)];
+    for (int k = begin; k < end && partnersOfA < kMaxGridPartners; ++k) {
         const GridSlot &b = grid.sorted[std::size_t(k)];
         const std::uint64_t offset = b.cell - first;  // wraps to a huge value below `first`
         if (offset % kStepX == 0 && offset / kStepX < cells && !(a.pinned && b.pinned) &&
-            overlapping(a.x, a.y, a.z, a.radius, b.x, b.y, b.z, b.radius))
+            overlapping(a.x, a.y, a.z, a.radius, b.x, b.y, b.z, b.radius)) {
+            std::uint16_t &partnersOfB = grid.partners[std::size_t(b.particle)];
+            if (partnersOfB >= kMaxGridPartners) {
+                grid.crowded = true;
+                continue;
+            }
+            ++partnersOfA;
+            ++partnersOfB;
             grid.found.push_back({std::min(a.particle, b.particle), std::max(a.particle, b.particle)});
+        }
     }
+    if (partnersOfA >= kMaxGridPartners)
+        grid.crowded = true;
 }
 
 // every overlapping pair of the grid, once, in grid order (neighbours in memory are neighbours in
@@ -333,9 +347,11 @@ void findContacts(const Model &model, const Eigen::Matrix3Xd &position, const Ei
 {
     grid.pairs.clear();
     grid.found.clear();
+    grid.crowded = false;
     const int n = model.particleCount();
     if (n < 2)
         return;
+    grid.partners.assign(std::size_t(n), 0);
     // room for the pairs of a dense packing, so that later passes rarely grow it
     if (grid.found.capacity() < 2 * std::size_t(n)) {
         grid.found.reserve(2 * std::size_t(n));

@@ -26,6 +26,11 @@ struct GridSlot {
     bool pinned = false;
 };
 
+// the most pairs the grid keeps for one particle. Equal spheres touch at most 12 others; only a
+// crowd of overlapping particles reaches this, and every pair of n coincident particles would take
+// memory quadratic in n (20 000 of them needed 3 GB, 50 000 aborted the program)
+constexpr int kMaxGridPartners = 64;
+
 struct ContactGrid {
     // the overlapping pairs of the last pass, in lexicographic (i, j) order
     std::vector<ContactPair> pairs;
@@ -44,6 +49,10 @@ struct ContactGrid {
     std::vector<int> big;                 // particles too big for the cells, checked against all
     std::vector<double> radiusSample;     // radii sampled to pick the cell size
     std::vector<ContactPair> found;       // the pairs in the order the grid finds them
+    std::vector<std::uint16_t> partners;  // per particle, the grid pairs found for it so far
+    // whether a particle reached kMaxGridPartners pairs in the last pass, so that pairs of it
+    // may have been left out (a crowd of overlapping particles)
+    bool crowded = false;
     std::vector<int> pairStart;           // per particle i: where its pairs start, while sorting
 };
 

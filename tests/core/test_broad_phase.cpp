@@ -21,6 +21,7 @@ private slots:
     void runEqualsBruteForceRun();
     void stepAllocatesNothingOnceWarm();
     void nonFiniteParticleNeverCollides();
+    void crowdNeedsMemoryInProportion();
 };
 
 namespace {
@@ -145,6 +146,31 @@ void compareWithBruteForce(const test::Sim &sim, core::ContactGrid &grid)
     std::vector<core::ContactPair> reference;
     core::findContactsBruteForce(*sim.model, sim.state.position, reference);
     core::findContacts(*sim.model, sim.state.position, grid);
+    if (grid.crowded) {
+        // a crowd: the grid keeps at most kMaxGridPartners pairs a particle, every one of them a
+        // true pair, and leaves a true pair out only where one of its particles has them all
+        std::vector<int> partners(std::size_t(sim.model->particleCount()), 0);
+        for (const core::ContactPair &pair : grid.pairs) {
+            QVERIFY(std::binary_search(reference.begin(), reference.end(), pair, [](const auto &a, const auto &b) {
+                return a.i < b.i || (a.i == b.i && a.j < b.j);
+            }));
+            ++partners[std::size_t(pair.i)];
+            ++partners[std::size_t(pair.j)];
+        }
+        const bool bigInvolved = !grid.big.empty();  // pairs of the big ones are never capped
+        for (const int count : partners)
+            QVERIFY(bigInvolved || count <= core::kMaxGridPartners);
+        std::size_t k = 0;
+        for (const core::ContactPair &pair : reference) {
+            while (k < grid.pairs.size() && (grid.pairs[k].i < pair.i || (grid.pairs[k].i == pair.i && grid.pairs[k].j < pair.j)))
+                ++k;
+            const bool kept = k < grid.pairs.size() && grid.pairs[k] == pair;
+            QVERIFY2(kept || partners[std::size_t(pair.i)] >= core::kMaxGridPartners ||
+                         partners[std::size_t(pair.j)] >= core::kMaxGridPartners,
+                     qPrintable(QString("pair %1-%2 left out with room on both sides").arg(pair.i).arg(pair.j)));
+        }
+        return;
+    }
     std::size_t first = 0;
     while (first < reference.size() && first < grid.pairs.size() && reference[first] == grid.pairs[first])
         ++first;
@@ -298,6 +324,28 @@ void TestBroadPhase::nonFiniteParticleNeverCollides()
     QCOMPARE(sim.state.position(0, 1), 0.15);
     QVERIFY(std::isnan(sim.state.position(1, 2)));
     QVERIFY(sim.state.position.leftCols(2).allFinite() && sim.state.velocity.allFinite());
+}
+
+void TestBroadPhase::crowdNeedsMemoryInProportion()
+{
+    // 6000 coincident particles: 18 million overlapping pairs, of which the grid keeps at most
+    // kMaxGridPartners / 2 a particle; a step with the contact solver on them ends
+    core::SceneDesc scene = test::quietScene();
+    scene.settings.particleCollisions = true;
+    for (int i = 0; i < 6000; ++i) {
+        core::ParticleDesc p;
+        p.position = {0.25, 0.5, -0.125};
+        p.radius = 0.01;
+        scene.particles.push_back(p);
+    }
+    test::Sim sim = test::compile(scene);
+    core::ContactGrid grid;
+    core::findContacts(*sim.model, sim.state.position, grid);
+    QVERIFY(grid.crowded);
+    QVERIFY(!grid.pairs.empty());
+    QVERIFY2(grid.pairs.size() <= std::size_t(6000 * core::kMaxGridPartners / 2), qPrintable(QString::number(grid.pairs.size())));
+    QVERIFY(sim.step());
+    QVERIFY(sim.work.contacts.pairs.size() <= std::size_t(6000 * core::kMaxGridPartners / 2));
 }
 
 QTEST_APPLESS_MAIN(TestBroadPhase)
