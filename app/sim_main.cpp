@@ -247,6 +247,10 @@ int main(int argc, char *argv[])
     if (!options.outputPath.isEmpty() && !blewUp) {
         core::SceneDesc final = scene;
         core::storeState(state, final);
+        // auto substeps chose its count at the start: the run resumed from here keeps at least
+        // that many, so that it goes on as this one would have
+        if (scene.settings.autoSubsteps)
+            final.settings.substeps = model->substeps;
         if (const io::SaveResult saved = io::saveScene(options.outputPath, final); !saved.ok())
             return failWith(saved.error);
     }
@@ -259,7 +263,10 @@ int main(int argc, char *argv[])
             << "\"): " << counted(scene.particles.size(), "particle") << ", " << counted(scene.springs.size(), "spring")
             << ", " << counted(scene.planes.size(), "plane") << '\n';
         out << QString::asprintf("  settings   time step %.9g s, ", scene.settings.timeStep)
-            << counted(static_cast<std::size_t>(scene.settings.substeps), "substep") << ", "
+            << counted(static_cast<std::size_t>(model->substeps), "substep")
+            << (scene.settings.autoSubsteps ? u" (auto: for the stability limit, at least %1)"_s.arg(scene.settings.substeps)
+                                            : QString())
+            << ", "
             << QString::fromStdString(std::string(core::integratorName(scene.settings.integrator))) << ", "
             << QString::fromStdString(std::string(core::contactSolverName(scene.settings.contactSolver)))
             << " contacts\n";

@@ -109,6 +109,27 @@ double parseDouble(const QByteArray &text, bool &ok)
 
 }  // namespace
 
+namespace {
+
+// a horizontal chain pinned at one end, of alternating masses and stiffnesses, with auto substeps:
+// it swings down, and the count the stability limit asks for falls from 5 at the start to 4
+core::SceneDesc autoSubstepsChain()
+{
+    core::SceneDesc scene;
+    scene.name = "chain";
+    scene.settings.timeStep = 0.01;
+    scene.settings.autoSubsteps = true;
+    scene.settings.planeCollisions = false;
+    scene.settings.particleCollisions = false;
+    for (int i = 0; i < 12; ++i)
+        scene.particles.push_back({{0.1 * i, 1.0, 0.0}, Eigen::Vector3d::Zero(), i % 2 ? 0.1 : 1.0, 0.01, i == 0});
+    for (int i = 0; i + 1 < 12; ++i)
+        scene.springs.push_back({i, i + 1, i % 3 ? 1e4 : 3e4, 0.0, 0.1});
+    return scene;
+}
+
+}  // namespace
+
 class TestSimCli : public QObject {
     Q_OBJECT
 
@@ -130,6 +151,7 @@ private slots:
     void summaryThatCannotBeWrittenFails();
     void linkLoopIsNamed();
     void energyGrowthIsAWarning();
+    void autoSubstepsSaysWhatRan();
     void runLeavingTheFileRangeBlowsUp();
     void outputsMustNotNameTheInputOrEachOther();
     void resumeEqualsUninterrupted_data();
@@ -149,6 +171,7 @@ void TestSimCli::initTestCase()
     QVERIFY(m_dir.isValid());
     QVERIFY(io::saveScene(path(u"scene.json"_s), testScene()).ok());
     QVERIFY(io::saveScene(path(u"boom.json"_s), explodingScene()).ok());
+    QVERIFY(io::saveScene(path(u"chain-auto.json"_s), autoSubstepsChain()).ok());
     QFile bad(path(u"bad.json"_s));
     QVERIFY(bad.open(QIODevice::WriteOnly));
     bad.write("{\"format\": \"springlab-scene\", \"version\": 1, \"particles\": [");
@@ -469,6 +492,19 @@ void TestSimCli::energyGrowthIsAWarning()
     QVERIFY2(steady.out.contains("warnings   none"), steady.out.constData());
 }
 
+void TestSimCli::autoSubstepsSaysWhatRan()
+{
+    // the summary gives the count that ran, and --output keeps it for the run resumed from there
+    const QString half = path(u"chain-half.json"_s);
+    const Run run = sim({path(u"chain-auto.json"_s), u"--steps"_s, u"100"_s, u"--output"_s, half});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY2(run.out.contains("5 substeps (auto: for the stability limit, at least 1)"), run.out.constData());
+    const io::LoadResult loaded = io::loadScene(half);
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+    QCOMPARE(loaded.scene->settings.substeps, 5);
+    QVERIFY(loaded.scene->settings.autoSubsteps);
+}
+
 void TestSimCli::runLeavingTheFileRangeBlowsUp()
 {
     // a particle falling freely for 15 000 s passes 1e9 m, past what a scene file may hold: the
@@ -531,6 +567,9 @@ void TestSimCli::resumeEqualsUninterrupted_data()
         << QString() << 20 << 20 << QStringList{u"--integrator"_s, u"explicit-euler"_s};
     for (const QString &file : exampleFiles())
         QTest::newRow(qPrintable(QFileInfo(file).fileName())) << file << 60 << 90 << QStringList();
+    // auto substeps: the count the run chose at its start goes on (5 here; chosen afresh at step
+    // 100 it would be 4)
+    QTest::newRow("chain, auto substeps") << path(u"chain-auto.json"_s) << 100 << 100 << QStringList();
     // the adaptive step size goes on from where it was (settings.adaptiveStep)
     QTest::newRow("tearable-cloth, adaptive-rk45")
         << QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/tearable-cloth.json") << 300 << 200
