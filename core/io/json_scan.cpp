@@ -11,6 +11,7 @@ namespace {
 struct Frame {
     bool array = false;
     qsizetype index = 0;    // arrays: the element being read
+    bool empty = true;      // arrays: no element has started yet
     QString key;            // objects: the member being read
     bool haveKey = false;   // objects: a key has been read since '{' or ','
     bool expectKey = true;  // objects: the next string is a key
@@ -151,11 +152,16 @@ JsonScan scanJson(const QByteArray &json, qsizetype stopOffset)
         if (isSpace(c)) {
             ++pos;
         } else if (c == '{' || c == '[') {
+            if (!stack.empty())
+                stack.back().empty = false;
             Frame frame;
             frame.array = c == '[';
             stack.push_back(frame);
             ++pos;
         } else if (c == '}' || c == ']') {
+            // a member array of the top-level object: how many elements it has
+            if (stack.size() == 2 && stack.back().array && !stack.front().array && stack.front().haveKey)
+                scan.topLevelArrays.insert(stack.front().key, stack.back().empty ? 0 : stack.back().index + 1);
             if (!stack.empty())
                 stack.pop_back();
             ++pos;
@@ -173,6 +179,8 @@ JsonScan scanJson(const QByteArray &json, qsizetype stopOffset)
         } else if (c == ':') {
             ++pos;
         } else if (c == '"') {
+            if (!stack.empty() && stack.back().array)
+                stack.back().empty = false;
             bool lone = false;
             pos = readString(json, pos, text, lone);
             if (pos < 0) {
@@ -195,6 +203,8 @@ JsonScan scanJson(const QByteArray &json, qsizetype stopOffset)
                 }
             }
         } else if (isNumberChar(c)) {
+            if (!stack.empty())
+                stack.back().empty = false;
             const qsizetype start = pos;
             while (pos < size && isNumberChar(json[pos]))
                 ++pos;
@@ -205,6 +215,8 @@ JsonScan scanJson(const QByteArray &json, qsizetype stopOffset)
             else if (!scan.negativeZeros.isEmpty())
                 scan.negativeZeros.remove(pathOf(stack));
         } else if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) {
+            if (!stack.empty())
+                stack.back().empty = false;
             while (pos < size && ((json[pos] >= 'a' && json[pos] <= 'z') || (json[pos] >= 'A' && json[pos] <= 'Z')))
                 ++pos;
         } else {

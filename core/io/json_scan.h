@@ -6,6 +6,7 @@
 // only tokenizes; QJsonDocument stays the parser of record.
 
 #include <QByteArray>
+#include <QHash>
 #include <QSet>
 #include <QString>
 
@@ -23,6 +24,9 @@ struct JsonScan {
     QSet<QString> negativeZeros;  // paths of the number literals that are a negative zero
     QString duplicateKey;         // path of the first member whose key came before in its object
     QString loneSurrogate;        // path of the first string with half a UTF-16 pair, \ud800 alone
+    // the number of elements of each array that is a member of the top-level object, by key
+    // ("particles": 3), so that a list over its limit is refused before the parser builds it
+    QHash<QString, qsizetype> topLevelArrays;
     QString pathAtStop;           // path of the value being read at stopOffset ("" at top level)
     int openAtStop = 0;           // objects and arrays still open there (or an unterminated string)
 };

@@ -95,11 +95,10 @@ QString knownContactSolvers()
 // walks a parsed document into a SceneDesc, stopping at the first problem
 class Reader {
 public:
-    Reader(const QString &source, const QByteArray &json, const LoadLimits &limits)
-        : m_source(source), m_limits(limits)
+    // scan: the pass over the text (json_scan.h): its negative zeros, a key that comes twice in
+    // one object (Qt keeps the last), a lone surrogate
+    Reader(const QString &source, JsonScan scan, const LoadLimits &limits) : m_source(source), m_limits(limits)
     {
-        // negative zeros, and a key that comes twice in one object (Qt keeps the last)
-        JsonScan scan = scanJson(json);
         m_negativeZeros = std::move(scan.negativeZeros);
         m_duplicateKey = std::move(scan.duplicateKey);
         m_loneSurrogate = std::move(scan.loneSurrogate);
@@ -702,6 +701,18 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
         return result;
     }
 
+    // the lists' lengths, counted on the text before the parser builds anything of them
+    JsonScan scan = scanJson(json);
+    const std::pair<QString, qsizetype> lists[] = {{QStringLiteral("particles"), limits.particles},
+                                                   {QStringLiteral("springs"), limits.springs},
+                                                   {QStringLiteral("planes"), limits.planes}};
+    for (const auto &[key, limit] : lists)
+        if (const qsizetype count = scan.topLevelArrays.value(key, 0); count > limit) {
+            result.error = sourceName + u": "_s + key + u": "_s +
+                           QStringLiteral("too many %1: %2, more than the limit of %3").arg(key).arg(count).arg(limit);
+            return result;
+        }
+
     // syntax
     QJsonParseError parseError{};
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
@@ -716,7 +727,7 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
     }
 
     // structure, types and values; the scene is handed out only when all of it is right
-    Reader reader(sourceName, json, limits);
+    Reader reader(sourceName, std::move(scan), limits);
     core::SceneDesc scene;
     const bool ok = reader.readScene(document.object(), scene);
     result.warnings = reader.warnings();

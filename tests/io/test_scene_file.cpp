@@ -1109,6 +1109,14 @@ void TestSceneFile::limits_data()
                                       << QStringLiteral("dir/s.json: springs: too many springs: 2, more than the limit of 1");
     QTest::newRow("planes one over") << kBase << limitsWith(size, 3, 2, 0)
                                      << QStringLiteral("dir/s.json: planes: too many planes: 1, more than the limit of 0");
+    // counted on the text before the parser builds anything: a list over its limit is refused even
+    // where the text after it would not parse (the parser's objects for a long list took 12-14
+    // times the file's size, and a file refused for its count used that much first)
+    QTest::newRow("counted before parsing")
+        << kBase.left(kBase.indexOf("\"springs\"")) + "garbage" << limitsWith(size, 2, 2, 1)
+        << QStringLiteral("dir/s.json: particles: too many particles: 3, more than the limit of 2");
+    QTest::newRow("empty list, limit 0") << QByteArray(kBase).replace("{\"normal\": [0, 1, 0], \"offset\": 0}", "")
+                                         << limitsWith(size, 3, 2, 0) << QString();
 
     // nesting, with the default limit; brackets inside strings do not count
     const QString deep = QStringLiteral("nested too deeply: more than the limit of %1 levels of arrays and objects")
