@@ -1,6 +1,7 @@
 // springlab-sim: runs a scene with no window (issue 2, docs/scene-format.md).
 //   springlab-sim SCENE.json [--duration SECONDS | --steps N] [--time-step H] [--substeps S]
-//                 [--integrator NAME] [--tolerance TOL] [--contact-solver NAME] [--output FINAL.json]
+//                 [--integrator NAME] [--tolerance TOL] [--contact-solver NAME] [--friction MU]
+//                 [--static-friction MU] [--output FINAL.json]
 //                 [--trace TRACE.csv [--every K]] [--render DIR [--fps F] [--size WxH]] [--quiet]
 //        springlab-sim --replay SESSION.json [--output FINAL.json] [--quiet]
 // Exit code 0 done, 2 bad file or argument (or --render with no display, or an --output that is not

@@ -150,7 +150,8 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
     options.replay = parser.isSet(u"replay"_s);
     if (options.replay) {
         for (const QString &name : {u"duration"_s, u"steps"_s, u"time-step"_s, u"substeps"_s, u"integrator"_s,
-                                   u"tolerance"_s, u"contact-solver"_s, u"trace"_s, u"every"_s, u"render"_s})
+                                   u"tolerance"_s, u"contact-solver"_s, u"friction"_s, u"static-friction"_s,
+                                   u"trace"_s, u"every"_s, u"render"_s})
             if (parser.isSet(name)) {
                 error = u"--replay runs the recording as it was recorded: --%1 cannot change it"_s.arg(name);
                 return false;
@@ -194,6 +195,14 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
             return false;
         options.substeps = substeps;
     }
+    // Coulomb friction: kinetic, and static (which otherwise follows the kinetic one)
+    for (const auto &[name, value] : {std::pair{u"friction"_s, &options.friction},
+                                      std::pair{u"static-friction"_s, &options.staticFriction}})
+        if (parser.isSet(name)) {
+            *value = readNumber(name, parser.value(name), u"a coefficient"_s, error);
+            if (!*value || !checkAgainstTable(name, core::Parameter::Friction, **value, error))
+                return false;
+        }
     if (parser.isSet(u"tolerance"_s)) {
         options.tolerance = readNumber(u"tolerance"_s, parser.value(u"tolerance"_s), u"a number"_s, error);
         if (!options.tolerance ||
@@ -287,6 +296,10 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
         {u"integrator"_s, u"Integrator, instead of the file's: "_s + knownIntegrators() + u'.', u"NAME"_s},
         {u"tolerance"_s, u"Local error per step (m, m/s) for adaptive-rk45, instead of the file's."_s, u"TOL"_s},
         {u"contact-solver"_s, u"Contact solver, instead of the file's: "_s + knownContactSolvers() + u'.', u"NAME"_s},
+        {u"friction"_s, u"Kinetic Coulomb friction coefficient of every contact (0 to 10), instead of the file's; "
+                        "a plane with its own keeps it."_s, u"MU"_s},
+        {u"static-friction"_s, u"Static friction coefficient (0 to 10), instead of the file's (which, when the "
+                               "file has none, is the kinetic one)."_s, u"MU"_s},
         {u"output"_s, u"Write the final state as a scene file, to run on from."_s, u"FINAL.json"_s},
         {u"trace"_s, u"Write positions and velocities as CSV: step,time,particle,x,y,z,vx,vy,vz."_s, u"TRACE.csv"_s},
         {u"every"_s, u"With --trace: one set of rows every K steps (default 1), step 0 included."_s, u"K"_s},
@@ -335,6 +348,10 @@ QString applyOverrides(const SimOptions &options, core::SceneDesc &scene)
         settings.tolerance = *options.tolerance;
     if (options.contactSolver)
         settings.contactSolver = *options.contactSolver;
+    if (options.friction)
+        settings.friction = *options.friction;
+    if (options.staticFriction)
+        settings.staticFriction = *options.staticFriction;
 
     // the options were checked one by one; the scene as a whole is checked once more
     if (const auto problem = core::findProblem(scene))

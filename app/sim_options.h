@@ -27,6 +27,8 @@ struct SimOptions {
     std::optional<core::Integrator> integrator;
     std::optional<double> tolerance;     // --tolerance TOL, for adaptive-rk45
     std::optional<core::ContactSolver> contactSolver;  // --contact-solver NAME
+    std::optional<double> friction;                    // --friction MU
+    std::optional<double> staticFriction;              // --static-friction MU
     QString outputPath;       // --output FINAL.json; empty: none
     QString tracePath;        // --trace TRACE.csv; empty: none
     std::uint64_t every = 1;  // --every K: a trace row set every K steps

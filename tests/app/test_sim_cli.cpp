@@ -203,6 +203,10 @@ void TestSimCli::exitCodes_data()
     QTest::newRow("unknown contact solver")
         << QStringList{u"@/scene.json"_s, u"--contact-solver"_s, u"pbd"_s} << 2
         << QStringList{u"--contact-solver: unknown contact solver \"pbd\" (known: iterative, handout)"_s};
+    QTest::newRow("friction above 10") << QStringList{u"@/scene.json"_s, u"--friction"_s, u"11"_s} << 2
+                                       << QStringList{u"--friction"_s, u"must be at most 10"_s};
+    QTest::newRow("static friction text") << QStringList{u"@/scene.json"_s, u"--static-friction"_s, u"grippy"_s} << 2
+                                          << QStringList{u"--static-friction"_s};
     QTest::newRow("negative steps") << QStringList{u"@/scene.json"_s, u"--steps"_s, u"-4"_s} << 2
                                     << QStringList{u"--steps:"_s};
     QTest::newRow("steps and duration") << QStringList{u"@/scene.json"_s, u"--steps"_s, u"4"_s, u"--duration"_s, u"1"_s}
@@ -357,7 +361,8 @@ void TestSimCli::overridesReachTheOutput()
     const QString output = path(u"overridden.json"_s);
     const Run run = sim({path(u"scene.json"_s), u"--steps"_s, u"10"_s, u"--time-step"_s, u"0.002"_s, u"--substeps"_s,
                          u"3"_s, u"--integrator"_s, u"explicit-euler"_s, u"--contact-solver"_s, u"handout"_s,
-                         u"--output"_s, output, u"--quiet"_s});
+                         u"--friction"_s, u"0.25"_s, u"--static-friction"_s, u"0.75"_s, u"--output"_s, output,
+                         u"--quiet"_s});
     QVERIFY2(run.exitCode == 0, run.err.constData());
     const io::LoadResult result = io::loadScene(output);
     QVERIFY2(result.ok(), qPrintable(result.error));
@@ -365,6 +370,8 @@ void TestSimCli::overridesReachTheOutput()
     QCOMPARE(result.scene->settings.substeps, 3);
     QVERIFY(result.scene->settings.integrator == core::Integrator::ExplicitEuler);
     QVERIFY(result.scene->settings.contactSolver == core::ContactSolver::Handout);
+    QCOMPARE(result.scene->settings.friction, 0.25);
+    QCOMPARE(result.scene->settings.staticFriction.value_or(-1.0), 0.75);
     QCOMPARE(result.scene->settings.viscosity, testScene().settings.viscosity);
     QVERIFY(result.scene->particles[1].position != testScene().particles[1].position);
 }
