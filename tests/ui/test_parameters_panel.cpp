@@ -17,6 +17,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QLabel>
+#include <QWheelEvent>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStyle>
@@ -89,6 +90,7 @@ private slots:
     void frictionDragIsOneUndoStep();
     void staticFrictionFollowsUntilSet();
     void contactSolverIsOneUndoStepPerChoice();
+    void wheelChangesOnlyAFocusedControl();
 
 private:
     ui::SceneDocument *m_document = nullptr;
@@ -438,6 +440,35 @@ void TestParametersPanel::contactSolverIsOneUndoStepPerChoice()
     m_document->undoStack()->undo();
     QCOMPARE(box->currentText(), QStringLiteral("Iterative"));
     QVERIFY(!m_document->isModified());
+}
+
+void TestParametersPanel::wheelChangesOnlyAFocusedControl()
+{
+    // two notches of the wheel over the slider and the box of gravity x: nothing changes while they
+    // are not focused (the wheel is the dock's, to scroll); once focused, they take it
+    ui::ParameterRow *row = m_panel->row("gravity.x");
+    const double before = m_document->scene().settings.gravity.x();
+    const int undoSteps = m_document->undoStack()->count();
+    const auto wheel = [](QWidget *target) {
+        const QPoint at = target->rect().center();
+        for (int notch = 0; notch < 2; ++notch) {
+            QWheelEvent event(at, target->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                              Qt::NoScrollPhase, false);
+            QCoreApplication::sendEvent(target, &event);
+        }
+    };
+    wheel(row->slider());
+    wheel(row->spinBox());
+    QCOMPARE(m_document->scene().settings.gravity.x(), before);
+    QCOMPARE(m_document->undoStack()->count(), undoSteps);
+    QVERIFY(!row->slider()->hasFocus() && !row->spinBox()->hasFocus());
+
+    m_panel->activateWindow();  // focus needs an active window (with no window manager, asked for)
+    QVERIFY(QTest::qWaitForWindowActive(m_panel));
+    row->slider()->setFocus();
+    QTRY_VERIFY(row->slider()->hasFocus());
+    wheel(row->slider());
+    QVERIFY(m_document->scene().settings.gravity.x() != before);
 }
 
 QTEST_MAIN(TestParametersPanel)

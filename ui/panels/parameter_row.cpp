@@ -6,13 +6,35 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QWheelEvent>
 #include <cmath>
 
 namespace ui {
 
+namespace {
+
+// a slider that takes the mouse wheel only once it has focus: turned to scroll the dock, the wheel
+// scrolls the dock (it set gravity x to -0.24 in two notches before)
+class ParameterSlider : public QSlider {
+public:
+    explicit ParameterSlider(QWidget *parent) : QSlider(Qt::Horizontal, parent) { setFocusPolicy(Qt::StrongFocus); }
+
+protected:
+    void wheelEvent(QWheelEvent *event) override
+    {
+        if (!hasFocus()) {
+            event->ignore();  // to the scroll area around it
+            return;
+        }
+        QSlider::wheelEvent(event);
+    }
+};
+
+}  // namespace
+
 ParameterRow::ParameterRow(const core::ParameterInfo &info, const QString &label, bool integral, QWidget *parent)
     : QWidget(parent), m_info(info), m_scale(sliderScale(info)), m_integral(integral),
-      m_label(new QLabel(label, this)), m_slider(new QSlider(Qt::Horizontal, this)),
+      m_label(new QLabel(label, this)), m_slider(new ParameterSlider(this)),
       m_spinBox(new ValueSpinBox(m_scale, this)), m_unit(new QLabel(QString::fromUtf8(info.unit.data(),
                                                                                        qsizetype(info.unit.size())),
                                                                      this))

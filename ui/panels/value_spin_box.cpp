@@ -1,5 +1,7 @@
 #include "value_spin_box.h"
 
+#include <QWheelEvent>
+
 #include <QRegularExpression>
 #include <limits>
 
@@ -19,6 +21,16 @@ ValueSpinBox::ValueSpinBox(const SliderScale &scale, QWidget *parent) : QDoubleS
     setRange(-std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
     setKeyboardTracking(false);
     setAccelerated(true);
+    setFocusPolicy(Qt::StrongFocus);  // not Qt::WheelFocus: a wheel turned over it does not take focus
+}
+
+void ValueSpinBox::wheelEvent(QWheelEvent *event)
+{
+    if (!hasFocus()) {
+        event->ignore();  // to the scroll area around it
+        return;
+    }
+    QDoubleSpinBox::wheelEvent(event);
 }
 
 QLocale ValueSpinBox::numberLocale() const

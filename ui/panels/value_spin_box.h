@@ -3,7 +3,8 @@
 // digits (with an exponent when needed) instead of fixed decimals, accepts any number typed, even
 // one outside the parameter's range, so that the row can refuse it with a message instead of
 // silently clamping it, and steps along the slider's scale (so arrows step by a factor on a log
-// scale).
+// scale). It takes the mouse wheel only when focused (a click or Tab gives it focus), so that
+// scrolling the dock over it scrolls the dock.
 
 #include "slider_scale.h"
 
@@ -22,6 +23,10 @@ public:
     QValidator::State validate(QString &input, int &pos) const override;
     void fixup(QString &input) const override;
     void stepBy(int steps) override;
+
+protected:
+    // the wheel only once the box has focus: a wheel turned to scroll a dock must not change a value
+    void wheelEvent(QWheelEvent *event) override;
 
 private:
     QLocale numberLocale() const;
