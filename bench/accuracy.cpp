@@ -352,11 +352,10 @@ double smallestError(const std::vector<WorkPrecisionCurve> &curves)
 
 int runAccuracy(const AccuracyOptions &options, QTextStream &out)
 {
-    const QDir dir(options.outDir);
-    if (!dir.mkpath(QStringLiteral("."))) {
-        out << "springlab-bench: cannot create the folder " << options.outDir << '\n';
+    const std::optional<QDir> folder = outputFolder(options.outDir, out);
+    if (!folder)
         return 1;
-    }
+    const QDir &dir = *folder;
     out << "machine: " << machineDescription() << '\n';
     if (options.quick)
         out << "accuracy --quick: a smoke test; the figures are not to be trusted\n";

@@ -54,4 +54,13 @@ QString loadText()
     return text;
 }
 
+std::optional<QDir> outputFolder(const QString &path, QTextStream &out)
+{
+    const QDir dir(path);
+    if (dir.mkpath(QStringLiteral(".")))
+        return dir;
+    out << "springlab-bench: cannot create the folder " << path << '\n';
+    return std::nullopt;
+}
+
 }  // namespace bench

@@ -4,7 +4,11 @@
 
 #include "core/integrator.h"
 
+#include <QDir>
 #include <QString>
+#include <QTextStream>
+
+#include <optional>
 
 namespace bench {
 
@@ -19,5 +23,8 @@ QString nameOf(core::Integrator integrator);
 double loadAverage();
 // the load average as a run prints it, with a warning when the machine is busy
 QString loadText();
+// the folder a mode writes its CSV and PNG to, made if missing; nullopt (and a line on out) if it
+// cannot be made
+std::optional<QDir> outputFolder(const QString &path, QTextStream &out);
 
 }  // namespace bench

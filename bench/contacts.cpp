@@ -455,11 +455,10 @@ void printTargets(const std::vector<ContactRow> &, const std::vector<ContactScen
 
 int runContacts(const ContactsOptions &options, QTextStream &out)
 {
-    const QDir dir(options.outDir);
-    if (!dir.mkpath(QStringLiteral("."))) {
-        out << "springlab-bench: cannot create the folder " << options.outDir << '\n';
+    const std::optional<QDir> folder = outputFolder(options.outDir, out);
+    if (!folder)
         return 1;
-    }
+    const QDir &dir = *folder;
     QElapsedTimer wall;
     wall.start();
     const Plan plan = planFor(options.quick);

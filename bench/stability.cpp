@@ -125,11 +125,10 @@ void printRatios(const std::vector<Row> &rows, core::Integrator integrator, int 
 
 int runStability(const StabilityOptions &options, QTextStream &out)
 {
-    const QDir dir(options.outDir);
-    if (!dir.mkpath(QStringLiteral("."))) {
-        out << "springlab-bench: cannot create the folder " << options.outDir << '\n';
+    const std::optional<QDir> folder = outputFolder(options.outDir, out);
+    if (!folder)
         return 1;
-    }
+    const QDir &dir = *folder;
     QElapsedTimer wall;
     wall.start();
     const double cpuStart = cpuSeconds();

@@ -361,11 +361,10 @@ void printTargets(const std::vector<ThroughputRow> &rows, const Plan &plan, cons
 
 int runThroughput(const ThroughputOptions &options, QTextStream &out)
 {
-    const QDir dir(options.outDir);
-    if (!dir.mkpath(QStringLiteral("."))) {
-        out << "springlab-bench: cannot create the folder " << options.outDir << '\n';
+    const std::optional<QDir> folder = outputFolder(options.outDir, out);
+    if (!folder)
         return 1;
-    }
+    const QDir &dir = *folder;
     QElapsedTimer wall;
     wall.start();
     const Plan plan = planFor(options.quick);
