@@ -1,4 +1,5 @@
 #include "bullet_cloth.h"
+#include "bullet_common.h"
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
@@ -6,28 +7,13 @@
 #include <BulletSoftBody/btSoftBody.h>
 #include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
 #include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
-#include <LinearMath/btScalar.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <map>
 #include <vector>
 
-// the precision CMake linked must be the one the headers were read with, or every Bullet type
-// has another layout than the library's
-static_assert(sizeof(btScalar) == (SPRINGLAB_BULLET_DOUBLE ? sizeof(double) : sizeof(float)),
-              "btScalar does not match the Bullet library CMake linked");
-
 namespace bench {
-
-namespace {
-
-btVector3 toBullet(const Eigen::Vector3d &v)
-{
-    return {static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z())};
-}
-
-}  // namespace
 
 // Bullet's world with nothing in it but the cloth; members in the order Bullet needs them built
 struct BulletCloth::World {

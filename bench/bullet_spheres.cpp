@@ -1,4 +1,5 @@
 #include "bullet_spheres.h"
+#include "bullet_common.h"
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
@@ -8,7 +9,6 @@
 #include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
 #include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
-#include <LinearMath/btScalar.h>
 
 #include <cassert>
 #include <cmath>
@@ -16,19 +16,9 @@
 #include <map>
 #include <vector>
 
-// the precision CMake linked must be the one the headers were read with, or every Bullet type
-// has another layout than the library's
-static_assert(sizeof(btScalar) == (SPRINGLAB_BULLET_DOUBLE ? sizeof(double) : sizeof(float)),
-              "btScalar does not match the Bullet library CMake linked");
-
 namespace bench {
 
 namespace {
-
-btVector3 toBullet(const Eigen::Vector3d &v)
-{
-    return {static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z())};
-}
 
 Eigen::Vector3d fromBullet(const btVector3 &v)
 {
