@@ -130,7 +130,7 @@ void SimulationRunner::stepOnceMessage()
         resumeFromScrub();
     if (hasScene()) {
         m_lastGood = m_state;
-        if (interruptibleStep(m_lastGood))
+        if (interruptibleStep(&m_lastGood))
             ++m_stepsTaken;
         else if (m_work.interrupted)
             m_stepsOwed = 1;
@@ -149,7 +149,7 @@ bool SimulationRunner::takeOwedSteps()
     bool taken = false;
     while (m_stepsOwed > 0 && hasScene()) {
         m_lastGood = m_state;
-        if (!interruptibleStep(m_lastGood)) {
+        if (!interruptibleStep(&m_lastGood)) {
             if (!m_work.interrupted)
                 m_stepsOwed = 0;  // blown up: the run stops there
             break;
@@ -162,15 +162,15 @@ bool SimulationRunner::takeOwedSteps()
     return taken;
 }
 
-bool SimulationRunner::interruptibleStep(const core::State &start)
+bool SimulationRunner::interruptibleStep(const core::State *start)
 {
     const auto began = Clock::now();
-    m_work.interrupt = m_interrupt;
+    m_work.interrupt = start ? m_interrupt : nullptr;
     const bool taken = stepOnce();
     m_work.interrupt = nullptr;
     m_lastStepSeconds = secondsSince(began);
     if (!taken && m_work.interrupted) {
-        m_state = start;
+        m_state = *start;
         // cut short: whatever it took so far, it is slow enough to be cut again when retaken
         m_lastStepSeconds = std::max(m_lastStepSeconds, kInterruptibleStepSeconds);
     }
@@ -353,8 +353,7 @@ SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double b
     bool blewUp = false;
     const core::State *stepStart = &m_lastGood;  // null: the next step cannot be cut short
     while (m_owed >= h) {
-        const auto stepBegan = Clock::now();
-        if (!(stepStart ? interruptibleStep(*stepStart) : stepOnce())) {
+        if (!interruptibleStep(stepStart)) {
             if (m_work.interrupted) {
                 // messages wait: they go first, and the step is taken again after them
                 result.interrupted = true;
@@ -376,7 +375,6 @@ SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double b
             break;
         }
         stepStart = nullptr;
-        m_lastStepSeconds = secondsSince(stepBegan);
         if (m_interrupt && stepsAreSlow()) {
             m_stepStart = m_state;
             stepStart = &m_stepStart;

@@ -132,9 +132,10 @@ private:
     void grab(const GrabEdit &edit);
     void applyGrab();
     bool stepOnce();
-    // one step that the interrupt flag may cut short, from m_state == start; true if taken (false:
-    // blown up, or cut short with m_state back at start and m_work.interrupted set)
-    bool interruptibleStep(const core::State &start);
+    // one step, timed (m_lastStepSeconds), that the interrupt flag may cut short when start is given
+    // (m_state == *start; null: it runs to its end); true if taken (false: blown up, or cut short
+    // with m_state back at *start and m_work.interrupted set)
+    bool interruptibleStep(const core::State *start);
     void captureState(const CaptureState &request);
 
     // the timeline
