@@ -7,7 +7,7 @@
 #include "core/io/scene_file.h"
 
 #include <QDir>
-#include "program_run.h"
+#include "bench_run.h"
 
 #include <QFile>
 #include <QImage>
@@ -28,10 +28,7 @@ const QStringList kIntegrators{u"symplectic-euler"_s, u"explicit-euler"_s, u"vel
 
 using Run = test::ProgramRun;
 
-Run runBench(const QStringList &arguments)
-{
-    return test::runProgram(QStringLiteral(SPRINGLAB_BENCH), arguments);
-}
+using test::runBench;
 
 QByteArray readAll(const QString &path)
 {

@@ -7,7 +7,7 @@
 
 #include "bench/contacts_plot.h"
 
-#include "program_run.h"
+#include "bench_run.h"
 
 #include <QFile>
 #include <QImage>
@@ -40,17 +40,9 @@ enum Column {
 
 using Run = test::ProgramRun;
 
-Run runBench(const QStringList &arguments)
-{
-    return test::runProgram(QStringLiteral(SPRINGLAB_BENCH), arguments);
-}
+using test::runBench;
 
-double number(const QByteArray &text)
-{
-    bool ok = false;
-    const double value = text.toDouble(&ok);
-    return ok ? value : std::nan("");
-}
+using test::number;
 
 }  // namespace
 

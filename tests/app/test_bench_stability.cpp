@@ -6,7 +6,7 @@
 
 #include "bench/stability_plot.h"
 
-#include "program_run.h"
+#include "bench_run.h"
 
 #include <QFile>
 #include <QImage>
@@ -26,17 +26,9 @@ const QStringList kIntegrators{u"symplectic-euler"_s, u"explicit-euler"_s, u"vel
 
 using Run = test::ProgramRun;
 
-Run runBench(const QStringList &arguments)
-{
-    return test::runProgram(QStringLiteral(SPRINGLAB_BENCH), arguments);
-}
+using test::runBench;
 
-double number(const QByteArray &text)
-{
-    bool ok = false;
-    const double value = text.toDouble(&ok);
-    return ok ? value : std::nan("");
-}
+using test::number;
 
 }  // namespace
 

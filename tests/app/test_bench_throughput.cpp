@@ -7,7 +7,7 @@
 
 #include "bench/throughput_plot.h"
 
-#include "program_run.h"
+#include "bench_run.h"
 
 #include <QFile>
 #include <QImage>
@@ -30,17 +30,9 @@ const QList<QByteArray> kClothVariants{"springlab", "plain", "naive"};
 
 using Run = test::ProgramRun;
 
-Run runBench(const QStringList &arguments)
-{
-    return test::runProgram(QStringLiteral(SPRINGLAB_BENCH), arguments);
-}
+using test::runBench;
 
-double number(const QByteArray &text)
-{
-    bool ok = false;
-    const double value = text.toDouble(&ok);
-    return ok ? value : std::nan("");
-}
+using test::number;
 
 }  // namespace
 
