@@ -207,11 +207,8 @@ void TestBenchContacts::plotReads()
     QVERIFY(!plot.isNull());
     QCOMPARE(plot.size(), bench::kContactsPlotSize);
     // not one flat colour: text, grid, bars, the table's shading
-    QSet<QRgb> colours;
-    for (int y = 0; y < plot.height(); y += 3)
-        for (int x = 0; x < plot.width(); x += 3)
-            colours.insert(plot.pixel(x, y));
-    QVERIFY2(colours.size() >= 8, qPrintable(u"%1 colours"_s.arg(colours.size())));
+    const qsizetype colours = test::coloursIn(plot);
+    QVERIFY2(colours >= 8, qPrintable(u"%1 colours"_s.arg(colours)));
 }
 
 void TestBenchContacts::badArguments_data()

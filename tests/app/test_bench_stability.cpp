@@ -102,11 +102,8 @@ void TestBenchStability::plotReads()
     QVERIFY(!plot.isNull());
     QCOMPARE(plot.size(), bench::kStabilityPlotSize);
     // not one flat colour: text, grid, and the integrators' colours
-    QSet<QRgb> colours;
-    for (int y = 0; y < plot.height(); y += 3)
-        for (int x = 0; x < plot.width(); x += 3)
-            colours.insert(plot.pixel(x, y));
-    QVERIFY2(colours.size() >= 8, qPrintable(u"%1 colours"_s.arg(colours.size())));
+    const qsizetype colours = test::coloursIn(plot);
+    QVERIFY2(colours >= 8, qPrintable(u"%1 colours"_s.arg(colours)));
 }
 
 void TestBenchStability::implicitStaysStable()
