@@ -67,13 +67,9 @@ QStringList cellsOf(const ContactRow &row)
 
 QImage drawContacts(const QString &title, const std::vector<ContactRow> &rows, const QString &note, const QSize &size)
 {
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::white);
+    QImage image = blankPlot(size);
     QPainter painter(&image);
-    painter.setRenderHint(QPainter::Antialiasing);
-    QFont font = painter.font();
-    font.setPointSizeF(11.0);
-    painter.setFont(font);
+    const QFont font = preparePlotPainter(painter);
     const QFontMetricsF metrics(font);
     drawPlotTitle(painter, size, font, title);
 

@@ -4,6 +4,22 @@
 
 namespace bench {
 
+QImage blankPlot(const QSize &size)
+{
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    return image;
+}
+
+QFont preparePlotPainter(QPainter &painter)
+{
+    painter.setRenderHint(QPainter::Antialiasing);
+    QFont font = painter.font();
+    font.setPointSizeF(11.0);
+    painter.setFont(font);
+    return font;
+}
+
 void drawPlotTitle(QPainter &painter, const QSize &size, const QFont &font, const QString &title)
 {
     QFont titleFont = font;

@@ -1,9 +1,11 @@
 #pragma once
-// What every benchmark plot draws the same way: the title across the top, and the frame of the
+// What every benchmark plot draws the same way: a white image and the painter's font, the title
+// across the top, and the frame of the
 // plot area with the axis labels below it and, turned, left of it. The plots themselves
 // (accuracy, stability, throughput) draw their own grids, lines and legends.
 
 #include <QFont>
+#include <QImage>
 #include <QRectF>
 #include <QSize>
 #include <QString>
@@ -11,6 +13,12 @@
 class QPainter;
 
 namespace bench {
+
+// a white image of `size` to draw a plot on
+QImage blankPlot(const QSize &size);
+
+// the painter made ready for a plot: antialiased, in the plots' 11-point font, which it returns
+QFont preparePlotPainter(QPainter &painter);
 
 // the title, bold and larger than `font`, centred across the top of an image of `size`; leaves
 // the painter's font at `font`

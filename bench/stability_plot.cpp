@@ -68,13 +68,9 @@ void drawMarker(QPainter &painter, core::Integrator integrator, bool filled, QPo
 QImage drawStabilityMap(const QString &title, const std::vector<StabilityPoint> &points, const QString &note,
                         const QSize &size)
 {
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::white);
+    QImage image = blankPlot(size);
     QPainter painter(&image);
-    painter.setRenderHint(QPainter::Antialiasing);
-    QFont font = painter.font();
-    font.setPointSizeF(11.0);
-    painter.setFont(font);
+    const QFont font = preparePlotPainter(painter);
 
     // the ranges: whole decades of the theoretical step; ratios in tenths, always showing 1
     double stepLo = std::numeric_limits<double>::infinity(), stepHi = 0.0;

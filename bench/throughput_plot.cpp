@@ -78,13 +78,9 @@ QString labelOf(const SeriesKey &key)
 QImage drawThroughput(const QString &title, const std::vector<ThroughputRow> &rows, const QString &note,
                       const QSize &size)
 {
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::white);
+    QImage image = blankPlot(size);
     QPainter painter(&image);
-    painter.setRenderHint(QPainter::Antialiasing);
-    QFont font = painter.font();
-    font.setPointSizeF(11.0);
-    painter.setFont(font);
+    const QFont font = preparePlotPainter(painter);
 
     // the lines: each variant and thread count, and the bound at each thread count, per kind of scene
     std::map<SeriesKey, std::map<long long, double>> series;

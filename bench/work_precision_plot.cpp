@@ -124,13 +124,9 @@ void drawPowerOfTen(QPainter &painter, int exponent, QPointF anchor, bool rightA
 
 QImage drawWorkPrecision(const QString &title, const std::vector<WorkPrecisionCurve> &curves, const QSize &size)
 {
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::white);
+    QImage image = blankPlot(size);
     QPainter painter(&image);
-    painter.setRenderHint(QPainter::Antialiasing);
-    QFont font = painter.font();
-    font.setPointSizeF(11.0);
-    painter.setFont(font);
+    const QFont font = preparePlotPainter(painter);
 
     // the data's range, in whole decades
     double costLo = std::numeric_limits<double>::infinity(), costHi = 0.0;
