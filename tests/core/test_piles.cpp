@@ -1,0 +1,51 @@
+// The pile target: 1000 balls (r = 0.05 m, 0.1 kg, e = 0.5, μ = 0.5) dropped into a box
+// 1 m wide settle within 10 s (kinetic energy below 1e-3 N m g r), the total energy never rises
+// over any 1 s window from the start, and the resting overlap stays below 1% of r. Labelled
+// stress: 10 s of the pile at 4 sub-steps takes about 9 s.
+
+#include "dropped_pile.h"
+#include "scene_builder.h"
+
+#include <QtTest>
+
+#include <vector>
+
+class TestPiles : public QObject {
+    Q_OBJECT
+private slots:
+    void thousandBallsSettle_data();
+    void thousandBallsSettle();
+};
+
+void TestPiles::thousandBallsSettle_data()
+{
+    QTest::addColumn<int>("substeps");
+    // at 4 sub-steps of 2.5 ms. At one sub-step of 10 ms the pile does not settle in 10 s (0.26 J
+    // of kinetic energy stays, 5× the bar): docs/physics.md ("Known gap, diagnosed") says why,
+    // and what was tried
+    QTest::newRow("4 sub-steps") << 4;
+}
+
+void TestPiles::thousandBallsSettle()
+{
+    QFETCH(int, substeps);
+    const int n = 1000;
+    test::Sim sim = test::compile(test::droppedPile(n, substeps));
+    std::vector<double> energies{test::totalEnergy(sim)};
+    double lastUnsettled = 0.0;  // s, the end of the last step with the kinetic energy at or above the bar
+    for (int i = 1; i <= 1000; ++i) {
+        QVERIFY(sim.step());
+        energies.push_back(test::totalEnergy(sim));
+        if (test::kineticEnergy(sim) >= test::settleThreshold(n))
+            lastUnsettled = 0.01 * i;
+    }
+    qInfo("settled from %.2f s; deepest overlap at 10 s %.3g mm", lastUnsettled, 1e3 * test::deepestOverlap(sim));
+    // settled within 10 s: under the bar from some time on, with time to spare (it settles at 9.24 s)
+    QVERIFY2(lastUnsettled < 9.5, qPrintable(QString::number(lastUnsettled)));
+    const int rise = test::firstRise(energies, 100, 100, 1e-7);
+    QVERIFY2(rise < 0, qPrintable(QString("the energy rose in the second ending at step %1").arg(rise)));
+    QVERIFY2(test::deepestOverlap(sim) < 0.01 * test::kPileRadius, qPrintable(QString::number(test::deepestOverlap(sim))));
+}
+
+QTEST_MAIN(TestPiles)
+#include "test_piles.moc"
