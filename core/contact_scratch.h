@@ -1,9 +1,10 @@
 #pragma once
 // What the iterative contact solver (contacts.cpp) keeps between its passes within a sub-step:
 // where each particle started, the impacts found along the paths, the contacts it solves and their
-// accumulated impulses. All of it is rebuilt every sub-step (nothing carries over, so a resumed run
-// solves exactly as the run it continues) and lives in the Workspace, so that a step allocates
-// nothing once the arrays have reached the scene's size.
+// accumulated impulses. All of it is rebuilt every sub-step and lives in the Workspace, so that a
+// step allocates nothing once the arrays have reached the scene's size; the one thing that carries
+// over, the impulses the next sub-step starts from, is in the State (State::contactImpulses), so
+// that a resumed run solves exactly as the run it continues.
 
 #include <Eigen/Core>
 #include <cstdint>

@@ -213,9 +213,50 @@ Eigen::Vector3d relativeVelocity(const State &state, const Contact &c)
                             : Eigen::Vector3d(state.velocity.col(c.i) - state.velocity.col(c.j));
 }
 
+// warm starting: each contact starts from the impulses it ended the last sub-step with, applied
+// at once, so that the iterations go on converging where the last sub-step's left off instead of
+// from nothing (a pile's weight takes many more than 8 iterations to reach the ground from
+// nothing). The friction is turned into the contact's surface as it is now, and kept in its cone
+void warmStart(const Model &model, State &state, ContactScratch &scratch)
+{
+    const std::vector<ContactImpulse> &last = state.contactImpulses;
+    if (last.empty())
+        return;
+    for (Contact &c : scratch.sorted) {
+        ContactImpulse key;
+        key.i = c.i;
+        key.j = c.j;
+        const auto found = std::lower_bound(last.begin(), last.end(), key);
+        if (found == last.end() || found->i != c.i || found->j != c.j)
+            continue;
+        const Weights w = weights(model, scratch, c, false);
+        if (!(w.sum() > 0.0))
+            continue;
+        c.normalImpulse = found->normal;
+        Eigen::Vector3d friction = found->friction - c.normal.dot(found->friction) * c.normal;
+        const double size = friction.norm();
+        if (size > c.staticFriction * c.normalImpulse)
+            friction *= c.friction * c.normalImpulse / size;
+        c.frictionImpulse = friction;
+        applyImpulse(state, c, w, c.normalImpulse * c.normal + c.frictionImpulse);
+    }
+}
+
+// what the next sub-step starts from: the contacts that pushed, sorted for warmStart's search
+void keepImpulses(State &state, const ContactScratch &scratch)
+{
+    std::vector<ContactImpulse> &kept = state.contactImpulses;
+    kept.clear();
+    for (const Contact &c : scratch.sorted)
+        if (c.normalImpulse > 0.0)
+            kept.push_back(ContactImpulse{c.i, c.j, c.normalImpulse, c.frictionImpulse});
+    std::sort(kept.begin(), kept.end());
+}
+
 // sequential impulses: the normal impulse towards the target speed, then friction within the cone
 void solveVelocities(const Model &model, State &state, ContactScratch &scratch)
 {
+    warmStart(model, state, scratch);
     for (int iteration = 0; iteration < kVelocityIterations; ++iteration) {
         const bool shock = iteration == kVelocityIterations - 1;
         for (Contact &c : scratch.sorted) {
@@ -337,10 +378,13 @@ void solveRestingContacts(const Model &model, State &state, Workspace &work, dou
 {
     ContactScratch &scratch = work.contactSolver;
     gather(model, state, work, h);
-    if (scratch.contacts.empty())
+    if (scratch.contacts.empty()) {
+        state.contactImpulses.clear();
         return;
+    }
     sortByLevel(model, scratch);
     solveVelocities(model, state, scratch);
+    keepImpulses(state, scratch);
     solvePositions(model, state, scratch);
     keepOutOfColliders(model, state, scratch);
     stopStuckSlip(model, state, scratch);

@@ -56,6 +56,8 @@ void solveContacts(const Model &model, State &state, Workspace &work)
     if (!model.plan.contactSolver)
         return;
     reserve(model, work.contactSolver);
+    if (state.contactImpulses.capacity() < work.contactSolver.contacts.capacity())
+        state.contactImpulses.reserve(work.contactSolver.contacts.capacity());
     const double h = model.subStep();
     resolveImpacts(model, state, work, h);
     solveRestingContacts(model, state, work, h);

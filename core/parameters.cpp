@@ -46,6 +46,8 @@ constexpr ParameterInfo kTable[] = {
      "A side of a rectangle; 0 makes the plane unbounded", 0.0, 20.0},
 };
 
+}  // namespace
+
 std::string formatValue(double value, std::string_view unit)
 {
     // the shortest text that reads back as the same value: 2147483647 (not 2.14748e+09), 1e+09, 0.1
@@ -57,8 +59,6 @@ std::string formatValue(double value, std::string_view unit)
         out << ' ' << unit;
     return out.str();
 }
-
-}  // namespace
 
 std::span<const ParameterInfo> parameterTable()
 {

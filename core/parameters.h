@@ -60,4 +60,7 @@ const ParameterInfo &parameterInfo(Parameter parameter);
 // "must be greater than 0 (got -1 kg)"
 std::optional<std::string> checkParameter(Parameter parameter, double value);
 
+// the shortest text that reads back as the same value, with its unit after a space when it has one
+std::string formatValue(double value, std::string_view unit = {});
+
 }  // namespace core

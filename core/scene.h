@@ -86,6 +86,22 @@ struct PlaneDesc {
     bool operator==(const PlaneDesc &) const = default;
 };
 
+// a contact's impulses at the end of a sub-step, where the iterative contact solver starts the next
+// sub-step's iterations ("warm starting"): free particle i with particle j, or with plane -1 - j
+// when j < 0. A run carries them in its State, and a state saved as a scene keeps them, so that
+// the run resumed from the file goes on as it would have
+struct ContactImpulse {
+    int i = 0;
+    int j = 0;
+    double normal = 0.0;                                 // N·s, pushing i away from j
+    Eigen::Vector3d friction = Eigen::Vector3d::Zero();  // N·s, on i, along the contact's surface
+
+    bool withPlane() const { return j < 0; }
+    int plane() const { return -1 - j; }
+    bool operator==(const ContactImpulse &) const = default;
+    bool operator<(const ContactImpulse &other) const { return i != other.i ? i < other.i : j < other.j; }
+};
+
 struct SceneDesc {
     std::string name;
     Settings settings;
@@ -93,6 +109,7 @@ struct SceneDesc {
     std::vector<SpringDesc> springs;
     std::vector<PlaneDesc> planes;
     int steerable = -1;  // the particle the arrow keys push (the pool's cue ball); -1: none
+    std::vector<ContactImpulse> contactImpulses;  // sorted by (i, j); empty in a scene not yet run
 
     bool operator==(const SceneDesc &) const = default;
 };

@@ -1,5 +1,6 @@
 #include "state.h"
 
+#include <algorithm>
 #include <cassert>
 
 namespace core {
@@ -19,6 +20,9 @@ State makeState(const Model &model, const SceneDesc &scene)
         state.velocity.col(i) = p.pinned ? Eigen::Vector3d::Zero() : p.velocity;
     }
     state.adaptiveStep = scene.settings.adaptiveStep.value_or(0.0);
+    state.contactImpulses = scene.contactImpulses;
+    // the solver finds them by binary search
+    std::sort(state.contactImpulses.begin(), state.contactImpulses.end());
     return state;
 }
 
@@ -63,6 +67,8 @@ void storeState(const State &state, SceneDesc &scene)
     scene.settings.adaptiveStep.reset();
     if (state.adaptiveStep > 0.0)
         scene.settings.adaptiveStep = state.adaptiveStep;
+    // and the contact impulses with the contacts they were found for
+    scene.contactImpulses = state.contactImpulses;
     if (state.breaks.empty())
         return;
     assert(state.springBroken.size() == scene.springs.size());

@@ -40,6 +40,10 @@ struct State {
     std::vector<std::uint8_t> springBroken;
     std::vector<SpringBreak> breaks;
 
+    // the iterative contact solver's impulses at the end of the last sub-step, sorted by (i, j):
+    // the next sub-step's iterations start from them (SceneDesc::contactImpulses)
+    std::vector<ContactImpulse> contactImpulses;
+
     int particleCount() const { return static_cast<int>(position.cols()); }
     bool isBroken(int spring) const
     {

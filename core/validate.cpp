@@ -122,6 +122,32 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
         return SceneProblem{"steerable", "particle index " + std::to_string(scene.steerable) +
                                              " is out of range (the scene has " + std::to_string(count) +
                                              " particles)"};
+
+    // the contact impulses a saved run starts from
+    const auto planes = static_cast<long long>(scene.planes.size());
+    for (std::size_t k = 0; k < scene.contactImpulses.size(); ++k) {
+        const ContactImpulse &c = scene.contactImpulses[k];
+        if (c.i < 0 || c.i >= count)
+            return SceneProblem{indexed("contactImpulses", k, "particle"), "particle index " + std::to_string(c.i) +
+                                                                              " is out of range (the scene has " +
+                                                                              std::to_string(count) + " particles)"};
+        if (c.withPlane() && c.plane() >= planes)
+            return SceneProblem{indexed("contactImpulses", k, "plane"), "plane index " + std::to_string(c.plane()) +
+                                                                           " is out of range (the scene has " +
+                                                                           std::to_string(planes) + " planes)"};
+        if (!c.withPlane() && (c.j >= count || c.j == c.i))
+            return SceneProblem{indexed("contactImpulses", k, "other"),
+                                c.j == c.i ? "is the particle itself: a contact joins two particles"
+                                           : "particle index " + std::to_string(c.j) + " is out of range (the scene has " +
+                                                 std::to_string(count) + " particles)"};
+        if (!(c.normal >= 0.0 && c.normal <= kStateLimit))
+            return SceneProblem{indexed("contactImpulses", k, "normal"),
+                                "must be from 0 to 1e9 N·s (a contact pushes, never pulls) (got " + formatValue(c.normal, "N·s") + ")"};
+        for (int axis = 0; axis < 3; ++axis)
+            if (!(std::abs(c.friction[axis]) <= kStateLimit))
+                return SceneProblem{indexed("contactImpulses", k, "friction") + "[" + std::to_string(axis) + "]",
+                                    "must be from -1e9 to 1e9 N·s (got " + formatValue(c.friction[axis], "N·s") + ")"};
+    }
     return std::nullopt;
 }
 

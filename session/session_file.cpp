@@ -9,7 +9,9 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <variant>
 
 namespace ui {
@@ -78,6 +80,17 @@ QByteArray stateJson(const core::State &state)
             const core::SpringBreak &b = state.breaks[i];
             out += QByteArray(i ? ", " : "") + "{\"spring\": " + QByteArray::number(b.spring) +
                    ", \"step\": " + QByteArray::number(b.step) + ", \"time\": " + io::formatNumber(b.time) + "}";
+        }
+        out += "]";
+    }
+    if (!state.contactImpulses.empty()) {
+        // [i, j, normal, friction x, y, z] each, j < 0 for plane -1 - j (core::ContactImpulse)
+        out += ",\n        \"contactImpulses\": [";
+        for (std::size_t k = 0; k < state.contactImpulses.size(); ++k) {
+            const core::ContactImpulse &c = state.contactImpulses[k];
+            out += QByteArray(k ? ", [" : "[") + QByteArray::number(c.i) + ", " + QByteArray::number(c.j) + ", " +
+                   io::formatNumber(c.normal) + ", " + io::formatNumber(c.friction.x()) + ", " +
+                   io::formatNumber(c.friction.y()) + ", " + io::formatNumber(c.friction.z()) + "]";
         }
         out += "]";
     }
@@ -230,6 +243,32 @@ public:
             entry.spring = int(spring);
             out.breaks.push_back(entry);
         }
+        const QJsonArray impulses = o.value(u"contactImpulses"_s).toArray();
+        const auto particleCount = double(scene.particles.size());
+        const auto planeCount = double(scene.planes.size());
+        out.contactImpulses.resize(std::size_t(impulses.size()));
+        for (qsizetype k = 0; k < impulses.size(); ++k) {
+            const QString at = path + u".contactImpulses[%1]"_s.arg(k);
+            const QJsonArray e = impulses[k].toArray();
+            double values[6] = {};
+            if (e.size() != 6)
+                return fail(at, u"expected 6 numbers: particle, other (a plane as -1 - plane), normal, friction"_s);
+            for (int v = 0; v < 6; ++v)
+                if (!number(e[v], at + u"[%1]"_s.arg(v), values[v]))
+                    return false;
+            core::ContactImpulse &c = out.contactImpulses[std::size_t(k)];
+            if (!(values[0] >= 0.0 && values[0] < particleCount && std::trunc(values[0]) == values[0]) ||
+                !(values[1] >= -planeCount && values[1] < particleCount && std::trunc(values[1]) == values[1]) ||
+                values[0] == values[1])
+                return fail(at, u"expected a free particle and another particle or a plane of the scene"_s);
+            if (!(values[2] >= 0.0))
+                return fail(at + u"[2]"_s, u"expected a normal impulse of at least 0"_s);
+            c.i = int(values[0]);
+            c.j = int(values[1]);
+            c.normal = values[2];
+            c.friction = Eigen::Vector3d(values[3], values[4], values[5]);
+        }
+        std::sort(out.contactImpulses.begin(), out.contactImpulses.end());
         return true;
     }
     bool scene(const QJsonValue &value, const QString &path, std::shared_ptr<const core::SceneDesc> &out)

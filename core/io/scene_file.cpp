@@ -241,6 +241,7 @@ private:
     bool readParticles(const QJsonObject &root, std::vector<core::ParticleDesc> &particles);
     bool readSprings(const QJsonObject &root, core::SceneDesc &scene);
     bool readPlanes(const QJsonObject &root, std::vector<core::PlaneDesc> &planes);
+    bool readContactImpulses(const QJsonObject &root, std::vector<core::ContactImpulse> &impulses);
 
     QString m_source;
     LoadLimits m_limits;
@@ -440,6 +441,47 @@ bool Reader::readPlanes(const QJsonObject &root, std::vector<core::PlaneDesc> &p
     return true;
 }
 
+// optional: a saved run's contact impulses, with a particle ("other") or with a plane
+bool Reader::readContactImpulses(const QJsonObject &root, std::vector<core::ContactImpulse> &impulses)
+{
+    QJsonArray array;
+    if (!member(root, {}, QLatin1String("contactImpulses"), Need::Optional, array) ||
+        !withinLimit(array, QStringLiteral("contactImpulses"), m_limits.contactImpulses))
+        return false;
+    impulses.resize(static_cast<std::size_t>(array.size()));
+    for (qsizetype k = 0; k < array.size(); ++k) {
+        const QString path = elementPath(QStringLiteral("contactImpulses"), k);
+        core::ContactImpulse &impulse = impulses[static_cast<std::size_t>(k)];
+        QJsonObject object;
+        int plane = 0;
+        bool hasOther = false;
+        bool hasPlane = false;
+        if (!read(array[k], path, object) ||
+            !member(object, path, QLatin1String("particle"), Need::Required, impulse.i) ||
+            !member(object, path, QLatin1String("other"), Need::Optional, impulse.j, &hasOther) ||
+            !member(object, path, QLatin1String("plane"), Need::Optional, plane, &hasPlane) ||
+            !member(object, path, QLatin1String("normal"), Need::Required, impulse.normal) ||
+            !member(object, path, QLatin1String("friction"), Need::Required, impulse.friction))
+            return false;
+        if (hasOther == hasPlane)
+            return fail(path, QStringLiteral("needs either \"other\" (a particle) or \"plane\", not both or neither"));
+        // findProblem() checks the plane exists
+        if (hasPlane) {
+            if (plane < 0)
+                return fail(memberPath(path, QLatin1String("plane")),
+                            u"plane index "_s + QString::number(plane) + u" is out of range"_s);
+            impulse.j = -1 - plane;
+        } else if (impulse.j < 0) {
+            return fail(memberPath(path, QLatin1String("other")),
+                        u"particle index "_s + QString::number(impulse.j) + u" is out of range"_s);
+        }
+        warnUnknownKeys(object, path,
+                        {QLatin1String("particle"), QLatin1String("other"), QLatin1String("plane"),
+                         QLatin1String("normal"), QLatin1String("friction")});
+    }
+    return true;
+}
+
 bool Reader::readScene(const QJsonObject &root, core::SceneDesc &scene)
 {
     // structure and types, in file order
@@ -456,13 +498,14 @@ bool Reader::readScene(const QJsonObject &root, core::SceneDesc &scene)
     if (!member(root, {}, QLatin1String("name"), Need::Required, name) ||
         !readSettings(root, scene.settings) || !readParticles(root, scene.particles) || !readSprings(root, scene) ||
         !readPlanes(root, scene.planes) ||
-        !member(root, {}, QLatin1String("steerable"), Need::Optional, scene.steerable))
+        !member(root, {}, QLatin1String("steerable"), Need::Optional, scene.steerable) ||
+        !readContactImpulses(root, scene.contactImpulses))
         return false;
     scene.name = name.toStdString();
     warnUnknownKeys(root, {},
                     {QLatin1String("format"), QLatin1String("version"), QLatin1String("name"),
                      QLatin1String("settings"), QLatin1String("particles"), QLatin1String("springs"),
-                     QLatin1String("planes"), QLatin1String("steerable")});
+                     QLatin1String("planes"), QLatin1String("steerable"), QLatin1String("contactImpulses")});
 
     // values: the same checks and messages as the editor's
     if (const auto problem = core::findProblem(scene)) {
@@ -705,7 +748,8 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
     JsonScan scan = scanJson(json);
     const std::pair<QString, qsizetype> lists[] = {{QStringLiteral("particles"), limits.particles},
                                                    {QStringLiteral("springs"), limits.springs},
-                                                   {QStringLiteral("planes"), limits.planes}};
+                                                   {QStringLiteral("planes"), limits.planes},
+                                                   {QStringLiteral("contactImpulses"), limits.contactImpulses}};
     for (const auto &[key, limit] : lists)
         if (const qsizetype count = scan.topLevelArrays.value(key, 0); count > limit) {
             result.error = sourceName + u": "_s + key + u": "_s +
@@ -851,6 +895,19 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
     if (scene.steerable >= 0) {
         out.chop(1);  // the newline after the planes' closing bracket
         out += ",\n    \"steerable\": " + QByteArray::number(scene.steerable) + '\n';
+    }
+    // a saved run's contact impulses, only when it has some
+    if (!scene.contactImpulses.empty()) {
+        out.chop(1);
+        out += ",\n";
+        appendList(out, "contactImpulses", scene.contactImpulses, true, [&](const core::ContactImpulse &c) {
+            out += "{\"particle\": " + QByteArray::number(c.i);
+            out += c.withPlane() ? ", \"plane\": " + QByteArray::number(c.plane())
+                                 : ", \"other\": " + QByteArray::number(c.j);
+            out += ", \"normal\": " + formatNumber(c.normal) + ", \"friction\": ";
+            appendVector(out, c.friction);
+            out += '}';
+        });
     }
     out += "}\n";
     return out;

@@ -23,6 +23,7 @@ inline constexpr qint64 kMaxSceneFileBytes = qint64(1) << 30;  // 1 GiB: about 5
 inline constexpr qsizetype kMaxParticles = 10'000'000;
 inline constexpr qsizetype kMaxSprings = 100'000'000;          // room for a cloth's ~6 springs per particle
 inline constexpr qsizetype kMaxPlanes = 10'000;
+inline constexpr qsizetype kMaxContactImpulses = 100'000'000;  // a pile's ~3 contacts per particle, with room
 inline constexpr int kMaxNestingDepth = 32;  // arrays and objects open at once; the format itself needs 4
 
 // the limits a load checks; a caller (or a test) may pass smaller ones
@@ -31,6 +32,7 @@ struct LoadLimits {
     qsizetype particles = kMaxParticles;
     qsizetype springs = kMaxSprings;
     qsizetype planes = kMaxPlanes;
+    qsizetype contactImpulses = kMaxContactImpulses;
     int nestingDepth = kMaxNestingDepth;
 };
 

@@ -7,6 +7,8 @@
 #include "session/session_file.h"
 #include "session/simulation_runner.h"
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QDir>
 #include <QFile>
 #include <QRegularExpression>
@@ -614,8 +616,13 @@ void TestSimCli::resumeEqualsUninterrupted()
     // the same file, byte for byte; the files hold every double's bits (see test_scene_file)
     const QByteArray expected = readAll(whole);
     QVERIFY(!expected.isEmpty());
-    if (readAll(initial) != expected)
-        QVERIFY(readAll(half) != expected);  // a moving scene: the halfway state differs from the end
+    // a moving scene: the halfway particles differ from the end's (the pool's lie still, though
+    // their contact impulses are saved once they have run)
+    const auto particles = [](const QString &file) {
+        return QJsonDocument::fromJson(readAll(file)).object().value(u"particles"_s);
+    };
+    if (particles(initial) != particles(whole))
+        QVERIFY(particles(half) != particles(whole));
     QCOMPARE(readAll(resumed), expected);
 }
 

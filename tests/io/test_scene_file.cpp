@@ -144,6 +144,17 @@ QString bitDifference(const core::SceneDesc &a, const core::SceneDesc &b)
             !sameBits(p.centre, q.centre, at + u"centre"_s, d) || !sameBits(p.axis, q.axis, at + u"axis"_s, d))
             return d;
     }
+    if (a.contactImpulses.size() != b.contactImpulses.size())
+        return QStringLiteral("contactImpulses: counts");
+    for (std::size_t k = 0; k < a.contactImpulses.size(); ++k) {
+        const core::ContactImpulse &p = a.contactImpulses[k];
+        const core::ContactImpulse &q = b.contactImpulses[k];
+        const QString at = QStringLiteral("contactImpulses[%1].").arg(k);
+        if (p.i != q.i || p.j != q.j)
+            return at + u"particle, other or plane"_s;
+        if (!sameBits(p.normal, q.normal, at + u"normal"_s, d) || !sameBits(p.friction, q.friction, at + u"friction"_s, d))
+            return d;
+    }
     return {};
 }
 
@@ -209,6 +220,10 @@ core::SceneDesc awkwardScene()
     table.axis = {-0.0, 0.6, 0.8};
     table.friction = 0.0;
     scene.planes.push_back(table);
+
+    // a saved run's contact impulses: with a particle, and with the last plane
+    scene.contactImpulses.push_back({0, 2, 1.0 / 3.0, {-0.0, denormal, 1e-300}});
+    scene.contactImpulses.push_back({2, -4, 0.0, {2.0 / 3.0, 0.0, -1e9}});
     return scene;
 }
 
@@ -560,6 +575,33 @@ void TestSceneFile::badFile_data()
         << QStringLiteral("planes[0].centre[1]") << QStringLiteral("must be at most");
     QTest::newRow("axis huge") << QByteArray("\"offset\": 0}") << QByteArray("\"offset\": 0, \"axis\": [-1e10, 0, 0]}")
                                << QStringLiteral("planes[0].axis[0]") << QStringLiteral("must be at least");
+
+    // a saved run's contact impulses
+    const auto impulse = [](const char *entry) {
+        return QByteArray("\n    ],\n    \"contactImpulses\": [") + entry + "]\n}\n";
+    };
+    const QByteArray planesEnd("\n    ]\n}\n");
+    QTest::newRow("impulse on a missing plane")
+        << planesEnd << impulse(R"({"particle": 0, "plane": 1, "normal": 0.1, "friction": [0, 0, 0]})")
+        << QStringLiteral("contactImpulses[0].plane") << QStringLiteral("plane index 1 is out of range (the scene has 1 planes)");
+    QTest::newRow("impulse on a missing particle")
+        << planesEnd << impulse(R"({"particle": 0, "other": 3, "normal": 0.1, "friction": [0, 0, 0]})")
+        << QStringLiteral("contactImpulses[0].other") << QStringLiteral("particle index 3 is out of range");
+    QTest::newRow("impulse with itself")
+        << planesEnd << impulse(R"({"particle": 1, "other": 1, "normal": 0.1, "friction": [0, 0, 0]})")
+        << QStringLiteral("contactImpulses[0].other") << QStringLiteral("is the particle itself");
+    QTest::newRow("impulse with a plane and a particle")
+        << planesEnd << impulse(R"({"particle": 0, "other": 1, "plane": 0, "normal": 0.1, "friction": [0, 0, 0]})")
+        << QStringLiteral("contactImpulses[0]") << QStringLiteral("needs either \"other\" (a particle) or \"plane\"");
+    QTest::newRow("impulse that pulls")
+        << planesEnd << impulse(R"({"particle": 0, "plane": 0, "normal": -0.1, "friction": [0, 0, 0]})")
+        << QStringLiteral("contactImpulses[0].normal") << QStringLiteral("a contact pushes, never pulls");
+    QTest::newRow("impulse friction huge")
+        << planesEnd << impulse(R"({"particle": 0, "plane": 0, "normal": 0.1, "friction": [0, 1e300, 0]})")
+        << QStringLiteral("contactImpulses[0].friction[1]") << QStringLiteral("must be from -1e9 to 1e9 N·s (got 1e+300 N·s)");
+    QTest::newRow("impulse without friction")
+        << planesEnd << impulse(R"({"particle": 0, "plane": 0, "normal": 0.1})")
+        << QStringLiteral("contactImpulses[0].friction") << QStringLiteral("missing: this key is required");
 }
 
 void TestSceneFile::badFile()
@@ -1001,6 +1043,11 @@ void TestSceneFile::saveWritesEveryKey()
     // something (planeKeys has the cases)
     for (const char *key : {"staticFriction", "twoSided", "\"friction\": 0}", "size", "centre", "axis"})
         QVERIFY2(!json.contains(key), key);
+    // and a run's contact impulses only once it has some, so a scene not yet run reads as before
+    QVERIFY(!json.contains("contactImpulses"));
+    scene.contactImpulses.push_back({1, -1, 0.5, {0.0, 0.0, 0.25}});
+    QVERIFY(io::sceneToJson(scene).contains(
+        "\"contactImpulses\": [\n        {\"particle\": 1, \"plane\": 0, \"normal\": 0.5, \"friction\": [0, 0, 0.25]}\n    ]\n}\n"));
 
     // an empty scene is still a whole file
     const io::LoadResult empty = io::parseScene(io::sceneToJson(core::SceneDesc{}), QStringLiteral("empty.json"));

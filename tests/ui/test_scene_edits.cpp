@@ -3,7 +3,9 @@
 
 #include "ui/document/scene_edits.h"
 
+#include "core/contact_impulses.h"
 #include "core/generators.h"
+#include "core/validate.h"
 
 #include <QTest>
 
@@ -103,6 +105,27 @@ private slots:
         QCOMPARE(other.springs[0].a, 1);
         QCOMPARE(other.springs[0].b, 2);
         QCOMPARE(other.steerable, -1);
+    }
+
+    void deletingRenumbersTheSavedContactImpulses()
+    {
+        // a saved run's contact impulses follow their particles: those of a deleted particle go,
+        // the others are renumbered and stay sorted, so the file still loads and the run starts
+        // from them
+        const Eigen::Vector3d kNone = Eigen::Vector3d::Zero();
+        core::SceneDesc scene = row();
+        scene.planes.push_back(core::PlaneDesc{});
+        scene.contactImpulses = {{0, 1, 0.5, kNone}, {1, -1, 0.25, kNone}, {2, 3, 0.125, kNone}, {3, -1, 1.0, kNone}};
+        ui::removeItems(scene, ui::Selection{{1}, {}});
+        const std::vector<core::ContactImpulse> expected{{1, 2, 0.125, kNone}, {2, -1, 1.0, kNone}};
+        QCOMPARE(scene.contactImpulses, expected);
+        QVERIFY(!core::findProblem(scene));
+
+        // and a removed plane takes its own, the planes after it moving down by one
+        std::vector<core::ContactImpulse> onPlanes{{0, -1, 0.5, kNone}, {0, -2, 0.25, kNone}, {1, -3, 0.125, kNone}};
+        core::removePlaneFromContactImpulses(onPlanes, 1);
+        const std::vector<core::ContactImpulse> left{{0, -1, 0.5, kNone}, {1, -2, 0.125, kNone}};
+        QCOMPARE(onPlanes, left);
     }
 
     void copyTakesTheSpringsWithin()

@@ -1,5 +1,7 @@
 #include "scene_edits.h"
 
+#include "core/contact_impulses.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -121,6 +123,7 @@ void removeItems(core::SceneDesc &scene, const Selection &selection)
         scene.steerable = inRange(scene, scene.steerable) ? remap[std::size_t(scene.steerable)] : -1;
     scene.particles = std::move(kept);
     scene.springs = std::move(springs);
+    core::renumberContactImpulses(scene.contactImpulses, remap);
 }
 
 Fragment copyItems(const core::SceneDesc &scene, const Selection &selection)

@@ -4,6 +4,7 @@
 #include "inspector_field.h"
 #include "ui/document/scene_document.h"
 
+#include "core/contact_impulses.h"
 #include "core/validate.h"
 
 #include <QCheckBox>
@@ -283,6 +284,7 @@ void InspectorPlanes::removePlane()
         return;
     auto edited = std::make_shared<core::SceneDesc>(m_edits->document()->scene());
     edited->planes.erase(edited->planes.begin() + plane);
+    core::removePlaneFromContactImpulses(edited->contactImpulses, plane);
     const int left = int(edited->planes.size());
     if (m_edits->push(tr("Remove plane %1").arg(plane), tr("Plane %1").arg(plane), std::move(edited)))
         setCurrentPlane(std::min(plane, left - 1));
