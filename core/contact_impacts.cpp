@@ -95,7 +95,7 @@ void pairAlongPaths(const Model &model, const State &state, ContactScratch &scra
         return;
     const double contact = model.radius[i] + model.radius[j];
     const Eigen::Vector3d d0 = scratch.startPosition.col(i) - scratch.startPosition.col(j);
-    if (!(d0.norm() > contact))
+    if (!(d0.squaredNorm() > contact * contact))
         return;  // touching from the start: a resting contact (or not finite)
     // the chords of the two paths: clear of each other all along them by more than the paths can
     // bulge, they cannot meet
@@ -106,8 +106,13 @@ void pairAlongPaths(const Model &model, const State &state, ContactScratch &scra
         return;
     const ParticlePath a = pathOf(model, state, scratch, i, h);
     const ParticlePath b = pathOf(model, state, scratch, j, h);
-    const auto gap = [&](double t) { return (a.position(t) - b.position(t)).norm() - contact; };
-    const std::optional<double> t = firstTouch(gap, a.speedBound() + b.speedBound(), h, contact);
+    // i relative to j: a path of the same shape, since a path is linear in its ends' positions and
+    // velocities. Its speed bound is the bound on how fast the gap can close, which for neighbours
+    // moving together is far less than the sum of their speeds, so conservative advancement takes
+    // few steps where the sum would take dozens
+    const ParticlePath relative{a.shape, a.x0 - b.x0, a.v0 - b.v0, a.x1 - b.x1, a.v1 - b.v1, h};
+    const auto gap = [&](double t) { return relative.position(t).norm() - contact; };
+    const std::optional<double> t = firstTouch(gap, relative.speedBound(), h, contact);
     if (!t)
         return;
     const Eigen::Vector3d normal = (a.position(*t) - b.position(*t)).normalized();

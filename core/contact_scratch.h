@@ -12,6 +12,13 @@
 
 namespace core {
 
+// the inverse masses of a contact's two sides, 1/kg (0 for a side that stands still)
+struct Weights {
+    double i = 0.0, j = 0.0;
+    double mass = 0.0;  // kg, 1 / (i + j): the contact's effective mass (0 when neither side moves)
+    double sum() const { return i + j; }
+};
+
 // a contact of free particle i with particle j, or with collider -1 - j when j < 0
 struct Contact {
     int i = 0;
@@ -26,6 +33,8 @@ struct Contact {
     Eigen::Vector3d frictionImpulse = Eigen::Vector3d::Zero();  // N·s, accumulated
     double pushed = 0.0;            // m·kg, the position correction along the normal, accumulated
     Eigen::Vector3d heldBack = Eigen::Vector3d::Zero();  // m·kg, friction's correction along the surface
+    Weights weights;       // in the solves' iterations
+    Weights shockWeights;  // in their last: the side nearer the ground stands still
     bool deferred = false;  // a near miss closing faster than a resting contact
     bool stuck = false;  // the position solve held it in place along its surface
 

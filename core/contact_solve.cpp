@@ -180,24 +180,29 @@ void sortByLevel(const Model &model, ContactScratch &scratch)
         scratch.sorted[std::size_t(scratch.levelStart[std::size_t(c.order)]++)] = c;
 }
 
-// the inverse masses of a contact's two sides in this iteration: in the last, the side nearer the
-// ground stands still
-struct Weights {
-    double i = 0.0, j = 0.0;
-    double sum() const { return i + j; }
-};
-Weights weights(const Model &model, const ContactScratch &scratch, const Contact &c, bool shock)
+// the inverse masses of each contact's two sides, in the iterations and in the last, where the side
+// nearer the ground stands still; found once, since every iteration of both solves reads them
+void setWeights(const Model &model, ContactScratch &scratch)
 {
-    Weights w{model.invMass[c.i], c.withCollider() ? 0.0 : model.invMass[c.j]};
-    if (shock && w.j != 0.0) {
-        const int li = scratch.level[std::size_t(c.i)];
-        const int lj = scratch.level[std::size_t(c.j)];
-        if (li < lj)
-            w.i = 0.0;
-        else if (lj < li)
-            w.j = 0.0;
+    for (Contact &c : scratch.sorted) {
+        c.weights = {model.invMass[c.i], c.withCollider() ? 0.0 : model.invMass[c.j]};
+        c.shockWeights = c.weights;
+        if (c.weights.j != 0.0) {
+            const int li = scratch.level[std::size_t(c.i)];
+            const int lj = scratch.level[std::size_t(c.j)];
+            if (li < lj)
+                c.shockWeights.i = 0.0;
+            else if (lj < li)
+                c.shockWeights.j = 0.0;
+        }
+        for (Weights *w : {&c.weights, &c.shockWeights})
+            w->mass = w->sum() > 0.0 ? 1.0 / w->sum() : 0.0;
     }
-    return w;
+}
+
+const Weights &weights(const Contact &c, bool shock)
+{
+    return shock ? c.shockWeights : c.weights;
 }
 
 void applyImpulse(State &state, const Contact &c, const Weights &w, const Eigen::Vector3d &impulse)
@@ -217,7 +222,7 @@ Eigen::Vector3d relativeVelocity(const State &state, const Contact &c)
 // at once, so that the iterations go on converging where the last sub-step's left off instead of
 // from nothing (a pile's weight takes many more than 8 iterations to reach the ground from
 // nothing). The friction is turned into the contact's surface as it is now, and kept in its cone
-void warmStart(const Model &model, State &state, ContactScratch &scratch)
+void warmStart(State &state, ContactScratch &scratch)
 {
     const std::vector<ContactImpulse> &last = state.contactImpulses;
     if (last.empty())
@@ -229,7 +234,7 @@ void warmStart(const Model &model, State &state, ContactScratch &scratch)
         const auto found = std::lower_bound(last.begin(), last.end(), key);
         if (found == last.end() || found->i != c.i || found->j != c.j)
             continue;
-        const Weights w = weights(model, scratch, c, false);
+        const Weights &w = weights(c, false);
         if (!(w.sum() > 0.0))
             continue;
         c.normalImpulse = found->normal;
@@ -254,26 +259,27 @@ void keepImpulses(State &state, const ContactScratch &scratch)
 }
 
 // sequential impulses: the normal impulse towards the target speed, then friction within the cone
-void solveVelocities(const Model &model, State &state, ContactScratch &scratch)
+void solveVelocities(State &state, ContactScratch &scratch)
 {
-    warmStart(model, state, scratch);
+    warmStart(state, scratch);
     for (int iteration = 0; iteration < kVelocityIterations; ++iteration) {
         const bool shock = iteration == kVelocityIterations - 1;
         for (Contact &c : scratch.sorted) {
-            const Weights w = weights(model, scratch, c, shock);
+            const Weights &w = weights(c, shock);
             if (!(w.sum() > 0.0))
                 continue;
             const double speed = c.normal.dot(relativeVelocity(state, c));
-            const double total = std::max(c.normalImpulse + (c.targetSpeed - speed) / w.sum(), 0.0);
+            const double total = std::max(c.normalImpulse + (c.targetSpeed - speed) * w.mass, 0.0);
             applyImpulse(state, c, w, (total - c.normalImpulse) * c.normal);
             c.normalImpulse = total;
 
             const Eigen::Vector3d v = relativeVelocity(state, c);
             const Eigen::Vector3d slip = v - c.normal.dot(v) * c.normal;
-            Eigen::Vector3d accumulated = c.frictionImpulse - slip / w.sum();
-            const double size = accumulated.norm();
-            if (size > c.staticFriction * c.normalImpulse)
-                accumulated *= c.friction * c.normalImpulse / size;  // sliding: kinetic friction
+            Eigen::Vector3d accumulated = c.frictionImpulse - slip * w.mass;
+            // (squared: most contacts stick, and then no square root is taken)
+            const double hold = c.staticFriction * c.normalImpulse;
+            if (accumulated.squaredNorm() > hold * hold)
+                accumulated *= c.friction * c.normalImpulse / accumulated.norm();  // sliding: kinetic friction
             applyImpulse(state, c, w, accumulated - c.frictionImpulse);
             c.frictionImpulse = accumulated;
         }
@@ -304,12 +310,12 @@ void solvePositions(const Model &model, State &state, ContactScratch &scratch)
     for (int iteration = 0; iteration < kPositionIterations; ++iteration) {
         const bool shock = iteration == kPositionIterations - 1;
         for (Contact &c : scratch.sorted) {
-            const Weights w = weights(model, scratch, c, shock);
+            const Weights &w = weights(c, shock);
             if (!(w.sum() > 0.0))
                 continue;
             const double overlap = overlapOf(model, state, c);
             if (overlap > 0.0) {
-                const double push = overlap / w.sum();
+                const double push = overlap * w.mass;
                 state.position.col(c.i) += (w.i * push) * c.normal;
                 if (!c.withCollider())
                     state.position.col(c.j) -= (w.j * push) * c.normal;
@@ -321,11 +327,11 @@ void solvePositions(const Model &model, State &state, ContactScratch &scratch)
             if (!c.withCollider())
                 moved -= state.position.col(c.j) - scratch.startPosition.col(c.j);
             const Eigen::Vector3d slide = moved - c.normal.dot(moved) * c.normal;
-            Eigen::Vector3d held = c.heldBack + slide / w.sum();
-            const double size = held.norm();
-            c.stuck = !(size > c.staticFriction * c.pushed);
+            Eigen::Vector3d held = c.heldBack + slide * w.mass;
+            const double hold = c.staticFriction * c.pushed;
+            c.stuck = !(held.squaredNorm() > hold * hold);
             if (!c.stuck)
-                held *= c.friction * c.pushed / size;
+                held *= c.friction * c.pushed / held.norm();
             const Eigen::Vector3d correction = held - c.heldBack;
             state.position.col(c.i) -= w.i * correction;
             if (!c.withCollider())
@@ -358,17 +364,17 @@ void keepOutOfColliders(const Model &model, State &state, ContactScratch &scratc
 // a contact whose position stuck moves as one along its surface: the slip left in the velocities
 // (the velocity solve's cone is set by the impulses, which a pile's weight need not reach) is taken
 // out, so that what stays put also stands still
-void stopStuckSlip(const Model &model, State &state, ContactScratch &scratch)
+void stopStuckSlip(State &state, ContactScratch &scratch)
 {
     for (const Contact &c : scratch.sorted) {
         if (!c.stuck)
             continue;
-        const Weights w = weights(model, scratch, c, false);
+        const Weights &w = weights(c, false);
         if (!(w.sum() > 0.0))
             continue;
         const Eigen::Vector3d v = relativeVelocity(state, c);
         const Eigen::Vector3d slip = v - c.normal.dot(v) * c.normal;
-        applyImpulse(state, c, w, -slip / w.sum());
+        applyImpulse(state, c, w, -slip * w.mass);
     }
 }
 
@@ -383,11 +389,12 @@ void solveRestingContacts(const Model &model, State &state, Workspace &work, dou
         return;
     }
     sortByLevel(model, scratch);
-    solveVelocities(model, state, scratch);
+    setWeights(model, scratch);
+    solveVelocities(state, scratch);
     keepImpulses(state, scratch);
     solvePositions(model, state, scratch);
     keepOutOfColliders(model, state, scratch);
-    stopStuckSlip(model, state, scratch);
+    stopStuckSlip(state, scratch);
 }
 
 }  // namespace core
