@@ -152,10 +152,11 @@ void TestContacts::bounceKeepsItsHeight_data()
 
 void TestContacts::bounceKeepsItsHeight()
 {
-    // an e = 1 ball bouncing on the floor for 30 s at h = 0.01. The impact is located in time, so
-    // the contact adds nothing to the integrator's own error: the second-order and higher schemes
-    // keep the apex within 1% of the drop height; the Euler schemes' apex alternates between two
-    // heights 1.4% apart (their first-order error in flight, O(h)) and does not drift
+    // an e = 1 ball bouncing on the floor for 30 s at h = 0.01 keeps its apex within 1% of the drop
+    // height with every integrator. The impact is located in time, so the contact adds nothing to
+    // the integrator's own error, and an Euler scheme's rebound keeps the quantity its flight keeps
+    // (contact_impacts.cpp, eulerRebound): without that its apex alternated between 1.0000 and
+    // 1.0139 of the drop height, by where in the sub-step the floor came
     QFETCH(int, integrator);
     const auto scheme = static_cast<core::Integrator>(integrator);
     core::BounceOptions options;
@@ -178,15 +179,13 @@ void TestContacts::bounceKeepsItsHeight()
         before = v;
     }
     QVERIFY(apexes.size() >= 30);
-    const bool euler = core::integratorOrder(scheme) == 1;
+    double worst = 0.0;
     for (std::size_t k = 0; k < apexes.size(); ++k) {
-        // each apex against the drop height, or for the Euler schemes against the apex two bounces earlier
-        const double reference = euler ? (k >= 2 ? apexes[k - 2] : apexes[k]) : options.height;
-        QVERIFY2(std::abs(apexes[k] / reference - 1.0) < (euler ? 1e-6 : 1e-2),
+        worst = std::max(worst, std::abs(apexes[k] / options.height - 1.0));
+        QVERIFY2(std::abs(apexes[k] / options.height - 1.0) < 1e-2,
                  qPrintable(QString("bounce %1: %2").arg(k).arg(apexes[k], 0, 'g', 12)));
     }
-    if (euler)
-        QVERIFY(std::abs(apexes.back() / options.height - 1.0) < 0.015);
+    qInfo("%zu bounces, the apex at most %.3g of the drop height away from it", apexes.size(), worst);
 }
 
 void TestContacts::columnOfThirtyStands()
