@@ -235,6 +235,8 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
     // the run goes on through the edit as far as it can (carry_across_edit.h), else starts afresh
     if (!carryAcrossEdit(previous.get(), *m_scene, *m_model, edit.change, m_state))
         restart();
+    else if (m_state.step == 0)
+        m_diagnostics.restarted(*m_model, m_state);  // nothing ran yet: the drift is measured from the edited scene
     // another scene, or the same one from its start: the recording belongs to the old run
     if (edit.change == SceneChange::Replace || m_state.step == 0)
         m_scrubber.timeline().clear();

@@ -76,6 +76,7 @@ private slots:
     void errorEstimateFollowsEdits();
     void errorEstimateRefreshesWhileRunning();
     void driftIsMeasuredFromTheLastReset();
+    void driftIsMeasuredFromAnEditBeforeTheFirstStep();
     void errorEstimateIsCheapOnTheCloth();
     void accuracyPlanIsMadeFromTheRunnersState();
     void raisedInterruptCutsTheStepShort();
@@ -508,6 +509,20 @@ void TestSimulationRunner::driftIsMeasuredFromTheLastReset()
     runner.apply(ui::Reset{});
     QCOMPARE(runner.snapshot()->energies.total(), runner.diagnostics().initialEnergies().total());
     QVERIFY(runner.diagnostics().initialEnergies().total() != initial.total());  // the softer spring stores less
+}
+
+void TestSimulationRunner::driftIsMeasuredFromAnEditBeforeTheFirstStep()
+{
+    // at step 0 an edit is the scene the run will start from: the drift is measured from it, so a
+    // stiffer spring reads ΔE = 0 before the run, not the energy the edit added
+    const auto scene = springScene(100.0, 0.01);
+    ui::SimulationRunner runner = runnerWith(scene);
+    const double loaded = runner.diagnostics().initialEnergies().total();
+    runner.apply(ui::SetSceneEdit{springScene(400.0, 0.01), ui::SceneChange::Parameters});
+    QCOMPARE(runner.state().step, 0u);
+    QVERIFY(runner.diagnostics().initialEnergies().total() != loaded);  // the stretched spring stores 4× as much
+    QCOMPARE(runner.diagnostics().initialEnergies().total(), core::energies(*runner.model(), runner.state()).total());
+    QCOMPARE(runner.snapshot()->energies.total(), runner.diagnostics().initialEnergies().total());
 }
 
 void TestSimulationRunner::errorEstimateIsCheapOnTheCloth()

@@ -92,6 +92,9 @@ void TestStatusText::drift_data()
     QTest::newRow("tiny") << 0.0 << 10.0 << 0.0 << 10.0002 << "ΔE = +0.002 %";
     QTest::newRow("zero total: joules") << 0.0 << 0.0 << 0.0 << 0.012 << "ΔE = +0.012 J";
     QTest::newRow("parts cancel: joules") << 5.0 << -5.0 << 0.0 << -0.26 << "ΔE = -0.3 J";
+    // the springs example: a start of rounding noise, with parts of the same size
+    QTest::newRow("noise start: joules") << 0.0 << 3.7e-31 << 0.0 << -1.36 << "ΔE = -1.4 J";
+    QTest::newRow("a thousandfold change: joules") << 0.0 << 0.001 << 0.0 << 2.0 << "ΔE = +2.0 J";
 }
 
 void TestStatusText::drift()

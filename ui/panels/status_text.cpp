@@ -116,7 +116,9 @@ QString driftText(const core::Energies &initial, double current)
     const double start = initial.total();
     const double parts = std::abs(initial.kinetic) + std::abs(initial.gravitational) + std::abs(initial.spring);
     const double change = current - start;
-    if (!(std::abs(start) > kZeroEnergyShare * parts))
+    // joules when the start is nothing beside its parts (they cancel), or beside the change: a
+    // start of rounding noise, 1e-31 J, would give a 30-digit percentage
+    if (!(std::abs(start) > kZeroEnergyShare * parts) || !(std::abs(change) * kZeroEnergyShare < std::abs(start)))
         return tr("ΔE = %1 J").arg(signedText(change));
     return tr("ΔE = %1 %").arg(signedText(100.0 * change / std::abs(start)));
 }
