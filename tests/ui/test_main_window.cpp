@@ -29,6 +29,7 @@
 #include <QThread>
 #include <QTimer>
 #include <QUndoStack>
+#include <QLineEdit>
 #include <QtTest>
 
 #include "editor_fixture.h"
@@ -61,6 +62,7 @@ private slots:
     void sliderChangesTheStiffnessTheWorkerUses();
     void outOfRangeValueNeverReachesTheWorker();
     void undoReachesTheWorkerToo();
+    void undoKeysWorkWhileAFieldHasTheFocus();
     void blowupPausesAndShowsInTheStatusBar();
     void arrowKeysSteerThePoolBall();
     void tiltIsTheSameForTheSameSeed();
@@ -216,6 +218,36 @@ void TestMainWindow::undoReachesTheWorkerToo()
     QCOMPARE(settledFrame(controller())->model->gravity.y(), -9.81);
     QCOMPARE(row->value(), -9.81);
     QVERIFY(!m_window->isWindowModified());
+}
+
+void TestMainWindow::undoKeysWorkWhileAFieldHasTheFocus()
+{
+    // a value typed into the dock and entered: the field keeps the focus, and Ctrl+Z there undoes
+    // the scene's edit, Ctrl+Y and Ctrl+Shift+Z redo it
+    ui::ParameterRow *row = m_window->parametersPanel()->row(QStringLiteral("viscosity"));
+    QAbstractSpinBox *field = row->spinBox();
+    field->setFocus();
+    QTRY_VERIFY(field->hasFocus());
+    field->selectAll();
+    QTest::keyClicks(field, QStringLiteral("0.75"));
+    QTest::keyClick(field, Qt::Key_Return);
+    QCOMPARE(m_window->document()->scene().settings.viscosity, 0.75);
+    QVERIFY(field->hasFocus());
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(m_window->document()->scene().settings.viscosity, 0.0);
+    QCOMPARE(row->value(), 0.0);
+    QTest::keyClick(field, Qt::Key_Y, Qt::ControlModifier);
+    QCOMPARE(m_window->document()->scene().settings.viscosity, 0.75);
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(m_window->document()->scene().settings.viscosity, 0.75);
+
+    // while a value is being typed, Ctrl+Z undoes the typing, as in any text field
+    field->selectAll();
+    QTest::keyClicks(field, QStringLiteral("3"));
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(m_window->document()->scene().settings.viscosity, 0.75);
+    QVERIFY(field->findChild<QLineEdit *>()->text() != QStringLiteral("3"));
 }
 
 void TestMainWindow::blowupPausesAndShowsInTheStatusBar()

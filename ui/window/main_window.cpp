@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "field_undo_keys.h"
+
 #include "ui/export/exporter.h"
 
 #include "ui/dialogs/accuracy_dialog.h"
@@ -298,14 +300,17 @@ void MainWindow::createEditMenu()
     undo->setShortcut(QKeySequence::Undo);
     QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("actionRedo"));
-    // Ctrl+Shift+Z everywhere, and the platform's own key as well where it differs (Ctrl+Y)
-    QList<QKeySequence> redoKeys{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)};
+    // Ctrl+Shift+Z and Ctrl+Y everywhere (Ctrl+Y is redo on Windows, and what users of it press
+    // here too), and the platform's own keys as well
+    QList<QKeySequence> redoKeys{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)};
     for (const QKeySequence &key : QKeySequence::keyBindings(QKeySequence::Redo))
         if (!redoKeys.contains(key))
             redoKeys << key;
     redo->setShortcuts(redoKeys);
     m_editMenu->addAction(undo);
     m_editMenu->addAction(redo);
+    // and while a field has the focus with nothing typed of its own to undo
+    new FieldUndoKeys(this, undo, redo);
 }
 
 void MainWindow::createUndoHistoryDock()
