@@ -63,6 +63,8 @@ private slots:
     void outOfRangeValueNeverReachesTheWorker();
     void undoReachesTheWorkerToo();
     void undoKeysWorkWhileAFieldHasTheFocus();
+    void selectAllSaysWhatItSelected();
+    void warningsGoWhenStale();
     void blowupPausesAndShowsInTheStatusBar();
     void arrowKeysSteerThePoolBall();
     void tiltIsTheSameForTheSameSeed();
@@ -248,6 +250,49 @@ void TestMainWindow::undoKeysWorkWhileAFieldHasTheFocus()
     QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(m_window->document()->scene().settings.viscosity, 0.75);
     QVERIFY(field->findChild<QLineEdit *>()->text() != QStringLiteral("3"));
+}
+
+void TestMainWindow::selectAllSaysWhatItSelected()
+{
+    // the status bar says what Ctrl+A selected, not what an earlier rubber band did
+    const core::SceneDesc &scene = m_window->document()->scene();
+    QVERIFY(scene.particles.size() > 1 && !scene.springs.empty());
+    m_window->viewport()->setFocus();
+    press(Qt::Key_A, Qt::ControlModifier);
+    QCOMPARE(m_window->statusBar()->currentMessage(),
+             QStringLiteral("%1 particles and %2 springs selected").arg(scene.particles.size()).arg(scene.springs.size()));
+    press(Qt::Key_Escape);
+    QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("Nothing selected"));
+}
+
+void TestMainWindow::warningsGoWhenStale()
+{
+    // a refused value is said until the next edit, undo or reset, not for ever
+    ui::ParameterRow *row = m_window->parametersPanel()->row(QStringLiteral("substeps"));
+    const auto typeInto = [&](const QString &text) {
+        row->spinBox()->setFocus();
+        row->spinBox()->selectAll();
+        QTest::keyClicks(row->spinBox(), text);
+        QTest::keyClick(row->spinBox(), Qt::Key_Return);
+    };
+    typeInto(QStringLiteral("0.5"));
+    QVERIFY2(m_window->statusWarning().contains(QStringLiteral("Substeps")), qPrintable(m_window->statusWarning()));
+    typeInto(QStringLiteral("2"));
+    QCOMPARE(m_window->document()->scene().settings.substeps, 2);
+    QCOMPARE(m_window->statusWarning(), QString());
+
+    typeInto(QStringLiteral("0.5"));
+    QVERIFY(!m_window->statusWarning().isEmpty());
+    m_window->viewport()->setFocus();
+    press(Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(m_window->document()->scene().settings.substeps, 1);
+    QCOMPARE(m_window->statusWarning(), QString());
+
+    typeInto(QStringLiteral("0.5"));
+    QVERIFY(!m_window->statusWarning().isEmpty());
+    m_window->viewport()->setFocus();
+    press(Qt::Key_F5);
+    QCOMPARE(m_window->statusWarning(), QString());
 }
 
 void TestMainWindow::blowupPausesAndShowsInTheStatusBar()

@@ -18,6 +18,7 @@ private slots:
     void drift_data();
     void drift();
     void plan();
+    void selection();
     void stability();
 };
 
@@ -109,6 +110,14 @@ void TestStatusText::drift()
     initial.gravitational = gravitational;
     initial.spring = spring;
     QCOMPARE(ui::driftText(initial, current), text);
+}
+
+void TestStatusText::selection()
+{
+    QCOMPARE(ui::selectionText(121, 220), QStringLiteral("121 particles and 220 springs selected"));
+    QCOMPARE(ui::selectionText(1, 0), QStringLiteral("1 particle selected"));
+    QCOMPARE(ui::selectionText(0, 1), QStringLiteral("1 spring selected"));
+    QCOMPARE(ui::selectionText(0, 0), QStringLiteral("Nothing selected"));
 }
 
 void TestStatusText::plan()

@@ -123,6 +123,21 @@ QString driftText(const core::Energies &initial, double current)
     return tr("ΔE = %1 %").arg(signedText(100.0 * change / std::abs(start)));
 }
 
+QString selectionText(std::size_t particles, std::size_t springs)
+{
+    const auto count = [](std::size_t n, const QString &one, const QString &many) {
+        return QString::number(n) + QLatin1Char(' ') + (n == 1 ? one : many);
+    };
+    QStringList parts;
+    if (particles > 0)
+        parts += count(particles, tr("particle"), tr("particles"));
+    if (springs > 0)
+        parts += count(springs, tr("spring"), tr("springs"));
+    if (parts.isEmpty())
+        return tr("Nothing selected");
+    return parts.join(tr(" and ")) + tr(" selected");
+}
+
 QString planText(const core::AccuracyPlan &plan)
 {
     const QString tolerance = scientificText(plan.tolerance);

@@ -8,6 +8,7 @@
 #include "core/diagnostics.h"
 
 #include <QString>
+#include <cstddef>
 #include <optional>
 
 namespace ui {
@@ -35,6 +36,9 @@ QString localErrorText(std::optional<double> metres);
 inline constexpr double kZeroEnergyShare = 1e-3;
 // "ΔE = +0.4 %" since the energies at reset, or "ΔE = -0.012 J" when their total is about zero
 QString driftText(const core::Energies &initial, double current);
+
+// "121 particles and 220 springs selected", "1 particle selected", "Nothing selected"
+QString selectionText(std::size_t particles, std::size_t springs);
 
 // what the planner picked and why: "rk4 with 3 substeps: ≈ 2.1e-7 m/step at 0.8 ms per simulated
 // second, the cheapest of 4 integrators that meet 1e-6 m/step"; or why nothing was picked

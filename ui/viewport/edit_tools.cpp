@@ -2,6 +2,7 @@
 
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
+#include "ui/panels/status_text.h"
 #include "ui/simulation/simulation_controller.h"
 #include "viewport.h"
 
@@ -395,7 +396,7 @@ bool EditTools::release(QMouseEvent *event)
                 next.particles.push_back(i);
         }
         setSelection(next);
-        emit message(tr("%n particle(s) selected", nullptr, int(m_selection.particles.size())));
+        emit message(selectionText(m_selection.particles.size(), m_selection.springs.size()));
     }
     return true;
 }
@@ -494,12 +495,14 @@ void EditTools::selectAll()
     for (int i = 0; i < int(m_document->scene().springs.size()); ++i)
         all.springs.push_back(i);
     setSelection(all);
+    emit message(selectionText(m_selection.particles.size(), m_selection.springs.size()));
 }
 
 void EditTools::clearSelection()
 {
     m_springStart = -1;
     setSelection({});
+    emit message(selectionText(0, 0));
 }
 
 void EditTools::togglePinSelection()

@@ -113,6 +113,10 @@ MainWindow::MainWindow(QWidget *parent)
         showWarning(tr("%1 Paused at the last good state.").arg(message));
     });
     connect(m_parameters, &ParametersPanel::valueRefused, this, &MainWindow::showWarning);
+    // a warning about a value, a run or a file is stale once the scene has changed, been undone or
+    // redone, or the run reset: it goes (a run still too fast says so again)
+    connect(m_document->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::clearWarning);
+    connect(m_resetAction, &QAction::triggered, this, &MainWindow::clearWarning);
 
     readSettings();
     QString error;
@@ -544,6 +548,10 @@ void MainWindow::frameChanged()
     const bool tooFast = !frame->pairSpeedWarning.empty();
     if (tooFast && !m_pairSpeedWarned)
         showWarning(QString::fromStdString(frame->pairSpeedWarning));
+    else if (!tooFast && m_pairSpeedWarned && m_warningLabel->text() == m_pairSpeedWarning)
+        clearWarning();  // no longer true
+    if (tooFast)
+        m_pairSpeedWarning = QString::fromStdString(frame->pairSpeedWarning);
     m_pairSpeedWarned = tooFast;
     if (!frame->snapshot)
         return;
@@ -579,6 +587,14 @@ void MainWindow::showWarning(const QString &message)
 {
     m_warningLabel->setText(message);
     m_warningLabel->setToolTip(message);
+}
+
+void MainWindow::clearWarning()
+{
+    if (m_warningLabel->text() == m_pairSpeedWarning)
+        m_pairSpeedWarned = false;
+    m_warningLabel->clear();
+    m_warningLabel->setToolTip(QString());
 }
 
 void MainWindow::updateTitle()

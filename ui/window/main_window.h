@@ -145,6 +145,7 @@ private:
     void recordingStopped(const RecordingReply &reply);
     void runningChanged(bool running);
     void showWarning(const QString &message);
+    void clearWarning();
     void updateTitle();
     void updateSteerActions();
 
@@ -173,6 +174,7 @@ private:
     std::uint64_t m_captureRequest = 0;    // the captured state awaited from the worker; 0: none
     std::uint64_t m_recordingRequest = 0;  // the recording awaited from the worker; 0: none
     bool m_pairSpeedWarned = false;      // the latest frame's particles were past the pair speed limit
+    QString m_pairSpeedWarning;          // what was said about it
     Viewport *m_viewport = nullptr;
     EditTools *m_tools = nullptr;
     QToolBar *m_toolBar = nullptr;
