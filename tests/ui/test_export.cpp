@@ -115,6 +115,7 @@ private slots:
     void cleanup();
 
     void shiftF2WritesAnImageOfTheTypedSize();
+    void tooLargeASideIsSaidNotCut();
     void sequenceShowsTheStepAtEachFrameTime();
     void sequenceSaysClearlyWhenFfmpegIsNotInstalled();
     void sequenceMakesAnMp4WhereFfmpegIsInstalled();
@@ -234,6 +235,31 @@ void TestExport::shiftF2WritesAnImageOfTheTypedSize()
     QVERIFY(pixel);
     QVERIFY(isFree(image.pixelColor(pixel->toPoint())));
     QVERIFY(m_messages.isEmpty());
+}
+
+void TestExport::tooLargeASideIsSaidNotCut()
+{
+    // 20000 typed as the width stays 20000, and the dialog says why it cannot be used (a box
+    // capped at the maximum turned it into 2000 without a word)
+    QTest::keyClick(m_window, Qt::Key_F2, Qt::ShiftModifier);
+    ui::ExportDialog *dialog = nullptr;
+    QTRY_VERIFY((dialog = m_window->findChild<ui::ExportDialog *>()) && dialog->isVisible());
+    auto *width = dialog->findChild<QSpinBox *>(u"exportWidth"_s);
+    m_answer = m_files.filePath(u"big.png"_s);
+    QTest::mouseClick(dialog->findChild<QPushButton *>(u"exportBrowse"_s), Qt::LeftButton);
+    QPushButton *ok = dialog->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok);
+    QVERIFY(ok->isEnabled());
+    typeInto(width, u"20000"_s);
+    QCOMPARE(width->value(), 20000);
+    const QString said = dialog->findChild<QLabel *>(u"exportSummary"_s)->text();
+    QVERIFY2(said.startsWith(u"Width must be from 1 to "_s) && said.endsWith(u"20000 px cannot be used."_s),
+             qPrintable(said));
+    QVERIFY(!ok->isEnabled());
+    // mended, it can be exported again
+    typeInto(width, u"640"_s);
+    QVERIFY(ok->isEnabled());
+    QVERIFY(dialog->findChild<QLabel *>(u"exportSummary"_s)->text().contains(u"640"_s));
+    dialog->reject();
 }
 
 void TestExport::sequenceShowsTheStepAtEachFrameTime()

@@ -200,6 +200,7 @@ void TestParametersPanel::outOfRangeValueIsRefused_data()
     QTest::addColumn<QString>("reason");
     QTest::newRow("stiffness too high") << "stiffness" << "5e9" << "must be at most";
     QTest::newRow("negative damping") << "damping" << "-1" << "must be at least";
+    QTest::newRow("negative stiffness") << "stiffness" << "-5" << "must be at least";
     QTest::newRow("zero time step") << "timeStep" << "0" << "must be greater than";
     QTest::newRow("restitution above 1") << "restitution" << "1.5" << "must be at most";
     QTest::newRow("half a substep") << "substeps" << "2.5" << "whole number";

@@ -14,7 +14,9 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ui {
 
@@ -24,12 +26,17 @@ namespace {
 constexpr double kMaxFps = 1000.0;
 constexpr double kMaxDuration = 1.0e6;  // s
 constexpr int kMaxEvery = 1000000000;
+constexpr int kMaxSide = 16384;          // px, the most this editor draws
+constexpr int kMaxTypedSide = 999999999;  // px, what a side's box takes: any number a user types
 
+// a side in pixels. Its box takes any whole number, and the dialog says when one is too large:
+// a box with the real maximum refuses the keystroke that passes it, so 20000 typed against a
+// maximum of 16384 silently became 2000
 QSpinBox *sideBox(const char *name, QWidget *parent)
 {
     auto *box = new QSpinBox(parent);
     box->setObjectName(QString::fromLatin1(name));
-    box->setRange(1, 16384);
+    box->setRange(1, kMaxTypedSide);
     box->setSuffix(QStringLiteral(" px"));
     return box;
 }
@@ -152,11 +159,13 @@ void ExportDialog::setImageSize(QSize size)
 
 void ExportDialog::setMaximumSide(int side)
 {
+    if (side <= 0)
+        return;
+    m_maxSide = std::min(side, kMaxSide);
     for (QSpinBox *box : {m_width, m_height})
-        if (box && side > 0) {
-            box->setMaximum(side);
-            box->setToolTip(tr("At most %1 px, the largest this OpenGL driver draws").arg(side));
-        }
+        if (box)
+            box->setToolTip(tr("At most %1 px, the largest this OpenGL driver draws").arg(m_maxSide));
+    updateSummary();
 }
 
 void ExportDialog::setFfmpegFound(bool found)
@@ -216,6 +225,20 @@ void ExportDialog::browse()
 void ExportDialog::updateSummary()
 {
     m_buttons->button(QDialogButtonBox::Ok)->setEnabled(!m_path->text().trimmed().isEmpty());
+    // a side typed out of range: said, and nothing exported until it is mended
+    if (m_width) {
+        for (const auto &[box, name] : {std::pair{m_width, tr("Width")}, std::pair{m_height, tr("Height")}})
+            if (box->value() > m_maxSide) {
+                m_summary->setText(tr("%1 must be from 1 to %2 px (%3); %4 px cannot be used.")
+                                       .arg(name)
+                                       .arg(m_maxSide)
+                                       .arg(m_maxSide == kMaxSide ? tr("the largest this editor draws")
+                                                                  : tr("the largest this OpenGL driver draws"))
+                                       .arg(box->value()));
+                m_buttons->button(QDialogButtonBox::Ok)->setEnabled(false);
+                return;
+            }
+    }
     switch (m_kind) {
     case Kind::Image:
         m_summary->setText(tr("The 3D view as it is, drawn at %1 × %2 px into a PNG.")

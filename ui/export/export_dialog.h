@@ -52,6 +52,7 @@ private:
     double m_timeStep = 0.0;
     QSpinBox *m_width = nullptr;
     QSpinBox *m_height = nullptr;
+    int m_maxSide = 16384;  // px, the largest side the view can be drawn at (setMaximumSide)
     QDoubleSpinBox *m_fps = nullptr;
     QDoubleSpinBox *m_duration = nullptr;
     QSpinBox *m_every = nullptr;
