@@ -23,6 +23,7 @@
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QUndoStack>
+#include <QFormLayout>
 #include <QtTest>
 
 #include "editor_test_setup.h"
@@ -92,6 +93,7 @@ private slots:
     void pinnedIsTriState();
     void pinnedParticlesStayAtRest();
     void springFieldsEditTheSelectedSpringsOnly();
+    void labelsGiveUnitsOnlyWhereThereAreSome();
     void badValueIsRefused_data();
     void badValueIsRefused();
     void arrowStepsMergeIntoOneUndoStep();
@@ -287,6 +289,20 @@ void TestInspectorPanel::pinnedParticlesStayAtRest()
     QCOMPARE(m_document->scene().particles[1].velocity.x(), 3.0);
     QCOMPARE(m_document->scene().particles[2].velocity.x(), 0.0);
     QCOMPARE(commands(), count + 1);
+}
+
+void TestInspectorPanel::labelsGiveUnitsOnlyWhereThereAreSome()
+{
+    // "Stiffness (N/m)", but "Breaking strain", not "Breaking strain ()"
+    select({}, {1});
+    const auto labelOf = [&](const QString &key) {
+        QWidget *field = m_panel->springField(key);
+        auto *form = qobject_cast<QFormLayout *>(field->parentWidget()->layout());
+        return qobject_cast<QLabel *>(form->labelForField(field))->text();
+    };
+    QCOMPARE(labelOf(QStringLiteral("stiffness")), QStringLiteral("Stiffness (N/m)"));
+    QCOMPARE(labelOf(QStringLiteral("breakStrain")), QStringLiteral("Breaking strain"));
+    QVERIFY(!m_panel->springField(QStringLiteral("breakStrain"))->toolTip().contains(QStringLiteral("()")));
 }
 
 void TestInspectorPanel::springFieldsEditTheSelectedSpringsOnly()

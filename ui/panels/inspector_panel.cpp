@@ -112,6 +112,12 @@ QString unitOf(core::Parameter parameter)
     return QString::fromUtf8(unit.data(), qsizetype(unit.size()));
 }
 
+// "Stiffness (N/m)", or "Breaking strain" for a value without a unit, not "Breaking strain ()"
+QString withUnit(const QString &text, const QString &unit)
+{
+    return unit.isEmpty() ? text : QStringLiteral("%1 (%2)").arg(text, unit);
+}
+
 QString tooltipOf(core::Parameter parameter)
 {
     const std::string_view tip = core::parameterInfo(parameter).tooltip;
@@ -141,19 +147,19 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
         auto *box = new InspectorSpinBox(field.parameter, m_particlesGroup);
         box->setObjectName(QStringLiteral("inspector-") + QLatin1String(field.key));
         const QString unit = unitOf(field.parameter);
-        box->setToolTip(field.vector ? QStringLiteral("%1 (%2). %3").arg(tr(field.label), unit, initialTip)
-                                     : QStringLiteral("%1 (%2)").arg(tooltipOf(field.parameter), unit));
+        box->setToolTip(field.vector ? withUnit(tr(field.label), unit) + QStringLiteral(". ") + initialTip
+                                     : withUnit(tooltipOf(field.parameter), unit));
         connect(box, &InspectorSpinBox::typed, this, [this, f](double value) { editParticles(f, value, false); });
         connect(box, &InspectorSpinBox::stepped, this, [this, f](double value) { editParticles(f, value, true); });
         m_particleFields.push_back(box);
         if (!field.vector) {
-            particleForm->addRow(QStringLiteral("%1 (%2)").arg(tr(field.label), unit), box);
+            particleForm->addRow(withUnit(tr(field.label), unit), box);
             continue;
         }
         if (field.axis == 0) {
             vectorRow = new QHBoxLayout;
             const QString name = field.vector == &core::ParticleDesc::position ? tr("Position") : tr("Velocity");
-            particleForm->addRow(QStringLiteral("%1 (%2)").arg(name, unit), vectorRow);
+            particleForm->addRow(withUnit(name, unit), vectorRow);
         }
         vectorRow->addWidget(box);
     }
@@ -179,10 +185,10 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
         auto *box = new InspectorSpinBox(field.parameter, m_springsGroup);
         box->setObjectName(QStringLiteral("inspector-") + QLatin1String(field.key));
         const QString unit = unitOf(field.parameter);
-        box->setToolTip(QStringLiteral("%1 (%2)").arg(tooltipOf(field.parameter), unit));
+        box->setToolTip(withUnit(tooltipOf(field.parameter), unit));
         connect(box, &InspectorSpinBox::typed, this, [this, f](double value) { editSprings(f, value, false); });
         connect(box, &InspectorSpinBox::stepped, this, [this, f](double value) { editSprings(f, value, true); });
-        springForm->addRow(QStringLiteral("%1 (%2)").arg(tr(field.label), unit), box);
+        springForm->addRow(withUnit(tr(field.label), unit), box);
         m_springFields.push_back(box);
     }
     layout->addWidget(m_springsGroup);
