@@ -34,6 +34,8 @@
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <QDir>
+#include <QFileInfo>
 #include <QtTest>
 
 #include "help_entries.h"
@@ -116,6 +118,7 @@ private slots:
 
     void shiftF2WritesAnImageOfTheTypedSize();
     void tooLargeASideIsSaidNotCut();
+    void dialogStartsBesideTheSceneAndRemembers();
     void sequenceShowsTheStepAtEachFrameTime();
     void sequenceSaysClearlyWhenFfmpegIsNotInstalled();
     void sequenceMakesAnMp4WhereFfmpegIsInstalled();
@@ -259,6 +262,32 @@ void TestExport::tooLargeASideIsSaidNotCut()
     typeInto(width, u"640"_s);
     QVERIFY(ok->isEnabled());
     QVERIFY(dialog->findChild<QLabel *>(u"exportSummary"_s)->text().contains(u"640"_s));
+    dialog->reject();
+}
+
+void TestExport::dialogStartsBesideTheSceneAndRemembers()
+{
+    // a scene with a file: the export starts in its folder, named after it
+    QDir(m_files.path()).mkpath(u"scenes"_s);
+    const QString sceneFile = m_files.filePath(u"scenes/moving.json"_s);
+    m_window->document()->replace(movingScene(), sceneFile);
+    ui::ExportDialog *dialog = openDialog("actionExportImage");
+    QVERIFY(dialog);
+    auto *path = dialog->findChild<QLineEdit *>(u"exportPath"_s);
+    QCOMPARE(QFileInfo(path->text()).absolutePath(), QFileInfo(sceneFile).absolutePath());
+
+    // exported at 640 × 360 to a path of the user's: the next image dialog starts there
+    typeInto(dialog->findChild<QSpinBox *>(u"exportWidth"_s), u"640"_s);
+    typeInto(dialog->findChild<QSpinBox *>(u"exportHeight"_s), u"360"_s);
+    const QString chosen = m_files.filePath(u"mine.png"_s);
+    browseAndExport(dialog, chosen);
+    QTRY_VERIFY(QFile::exists(chosen));
+    QTRY_VERIFY(!m_window->findChild<ui::ExportDialog *>());
+    dialog = openDialog("actionExportImage");
+    QVERIFY(dialog);
+    QCOMPARE(dialog->findChild<QLineEdit *>(u"exportPath"_s)->text(), chosen);
+    QCOMPARE(dialog->findChild<QSpinBox *>(u"exportWidth"_s)->value(), 640);
+    QCOMPARE(dialog->findChild<QSpinBox *>(u"exportHeight"_s)->value(), 360);
     dialog->reject();
 }
 

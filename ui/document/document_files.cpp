@@ -186,9 +186,7 @@ void DocumentFiles::openFromDialog()
 {
     if (!maybeSave())
         return;
-    const QString directory = m_document.filePath().isEmpty() ? QDir::homePath()
-                                                              : QFileInfo(m_document.filePath()).absolutePath();
-    const QString path = m_prompts.chooseFile(Prompts::FileDialogMode::Open, tr("Open scene"), directory);
+    const QString path = m_prompts.chooseFile(Prompts::FileDialogMode::Open, tr("Open scene"), m_document.folder());
     if (path.isEmpty())
         return;
     // the question about changes was asked already
@@ -236,7 +234,7 @@ bool DocumentFiles::save()
 bool DocumentFiles::saveAs()
 {
     const QString suggested = m_document.filePath().isEmpty()
-                                  ? QDir::home().filePath(m_document.displayName() + QStringLiteral(".json"))
+                                  ? QDir(m_document.folder()).filePath(m_document.displayName() + QStringLiteral(".json"))
                                   : m_document.filePath();
     QString path = m_prompts.chooseFile(Prompts::FileDialogMode::Save, tr("Save scene"), suggested);
     if (path.isEmpty())

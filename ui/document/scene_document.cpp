@@ -1,5 +1,6 @@
 #include "scene_document.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QUndoStack>
 
@@ -9,6 +10,11 @@ SceneDocument::SceneDocument(QObject *parent)
     : QObject(parent), m_scene(std::make_shared<const core::SceneDesc>()), m_undoStack(new QUndoStack(this))
 {
     connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+}
+
+QString SceneDocument::folder() const
+{
+    return m_filePath.isEmpty() ? QDir::homePath() : QFileInfo(m_filePath).absolutePath();
 }
 
 QString SceneDocument::displayName() const

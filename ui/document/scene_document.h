@@ -31,6 +31,8 @@ public:
     const QString &filePath() const { return m_filePath; }
     // the scene's name, else the file's base name, else "untitled"
     QString displayName() const;
+    // where file dialogs for this scene start: its file's folder, or the home folder before it has one
+    QString folder() const;
 
     QUndoStack *undoStack() const { return m_undoStack; }
     bool isModified() const;

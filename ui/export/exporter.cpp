@@ -83,7 +83,10 @@ void Exporter::showDialog(ExportKind kind)
     }
 
     // the path through the window's file dialog (the tests' hook), with the right filter
-    const QString stem = QDir(m_folder()).filePath(m_document.displayName());
+    // beside the scene's file, or in the screenshot folder before it has one; the last export of
+    // the kind, when there was one, is where the dialog starts, at the size it had
+    const QString folder = m_document.filePath().isEmpty() ? m_folder() : m_document.folder();
+    const QString stem = QDir(folder).filePath(m_document.displayName());
     auto browse = [this, kind](const QString &current) {
         switch (kind) {
         case ExportKind::Image:
@@ -98,13 +101,17 @@ void Exporter::showDialog(ExportKind kind)
     auto *dialog = new ExportDialog(kind, browse, m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     const QSize viewSize = m_viewport.size() * m_viewport.devicePixelRatio();
-    dialog->setImageSize(kind == ExportKind::Image ? 2 * viewSize : viewSize);
+    dialog->setImageSize(kind == ExportKind::Image && m_lastImageSize.isValid() ? m_lastImageSize
+                         : kind == ExportKind::Image                           ? 2 * viewSize
+                                                                               : viewSize);
     dialog->setMaximumSide(m_viewport.maxImageSide());
     dialog->setFfmpegFound(!VideoEncoder::findFfmpeg().isEmpty());
     dialog->setTimeStep(m_document.scene().settings.timeStep);
-    dialog->setPath(stem + (kind == ExportKind::Image    ? QStringLiteral(".png")
-                            : kind == ExportKind::Trace ? QStringLiteral(".csv")
-                                                        : QStringLiteral("-frames")));
+    const QString &last = m_lastPath[std::size_t(kind)];
+    dialog->setPath(!last.isEmpty() ? last
+                    : stem + (kind == ExportKind::Image    ? QStringLiteral(".png")
+                              : kind == ExportKind::Trace ? QStringLiteral(".csv")
+                                                          : QStringLiteral("-frames")));
 
     // shown without a nested event loop; what was asked for starts when it is accepted
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
@@ -112,12 +119,16 @@ void Exporter::showDialog(ExportKind kind)
         bool ok = false;
         switch (dialog->kind()) {
         case ExportKind::Image:
+            m_lastPath[std::size_t(ExportKind::Image)] = dialog->image().path;
+            m_lastImageSize = dialog->image().size;
             ok = exportImage(dialog->image(), &error);
             break;
         case ExportKind::Sequence:
+            m_lastPath[std::size_t(ExportKind::Sequence)] = dialog->sequence().folder;
             ok = startSequenceExport(dialog->sequence(), &error);
             break;
         case ExportKind::Trace:
+            m_lastPath[std::size_t(ExportKind::Trace)] = dialog->trace().path;
             ok = startTraceExport(dialog->trace(), &error);
             break;
         }

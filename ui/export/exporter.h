@@ -8,6 +8,7 @@
 
 #include <QObject>
 #include <QString>
+#include <array>
 #include <functional>
 #include <optional>
 
@@ -67,6 +68,9 @@ private:
     Viewport &m_viewport;
     const Prompts &m_prompts;
     std::function<QString()> m_folder;
+    // what the last export of each kind was given, so that the next dialog of the kind starts there
+    std::array<QString, 3> m_lastPath;  // by ExportKind
+    QSize m_lastImageSize;
     QWidget *m_window;
     ExportRun *m_run = nullptr;                  // the sequence or trace being exported
     VideoEncoder *m_encoder = nullptr;           // ffmpeg making the MP4 after a sequence

@@ -707,7 +707,7 @@ void MainWindow::setRecording(bool on)
 
 void MainWindow::saveSessionRecording(const SessionRecording &recording)
 {
-    const QString suggested = QDir::home().filePath(m_document->displayName() + QStringLiteral(".replay.json"));
+    const QString suggested = QDir(m_document->folder()).filePath(m_document->displayName() + QStringLiteral(".replay.json"));
     const QString path = m_prompts.chooseFile(FileDialogMode::Save, tr("Save session recording"), suggested);
     if (path.isEmpty())
         return;

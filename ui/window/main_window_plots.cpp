@@ -40,7 +40,7 @@ void MainWindow::exportPlot(PlotExport format)
     // a file for the plot shown, named after the scene and the plot
     const bool png = format == PlotExport::Png;
     const QString title = png ? tr("Export plot as PNG") : tr("Export plot data as CSV");
-    const QString suggested = QDir::home().filePath(QStringLiteral("%1-%2.%3")
+    const QString suggested = QDir(m_document->folder()).filePath(QStringLiteral("%1-%2.%3")
                                                         .arg(m_document->displayName(), m_plots->suggestedName(),
                                                              png ? QStringLiteral("png") : QStringLiteral("csv")));
     const QString path = m_prompts.chooseFile(FileDialogMode::Save, title, suggested,
