@@ -16,6 +16,7 @@ private slots:
     void ticks();
     void noTicksForAnEmptyRange();
     void paddedRange();
+    void timeRange();
     void labels_data();
     void labels();
 };
@@ -60,6 +61,20 @@ void TestPlotAxis::noTicksForAnEmptyRange()
     QVERIFY(ui::niceTicks({1.0, 1.0}).values.empty());
     QVERIFY(ui::niceTicks({2.0, 1.0}).values.empty());
     QVERIFY(ui::niceTicks({0.0, std::numeric_limits<double>::infinity()}).values.empty());
+}
+
+void TestPlotAxis::timeRange()
+{
+    // all the time kept; one sample at the start reads 0 … 1 s, never -1 … 1 s
+    const ui::AxisRange run = ui::timeRange(0.5, 2.0);
+    QCOMPARE(run.low, 0.5);
+    QCOMPARE(run.high, 2.0);
+    const ui::AxisRange one = ui::timeRange(0.0, 0.0);
+    QCOMPARE(one.low, 0.0);
+    QCOMPARE(one.high, 1.0);
+    const ui::AxisRange later = ui::timeRange(3.25, 3.25);
+    QCOMPARE(later.low, 3.25);
+    QCOMPARE(later.high, 4.25);
 }
 
 void TestPlotAxis::paddedRange()

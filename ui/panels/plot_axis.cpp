@@ -20,6 +20,13 @@ AxisRange paddedRange(double low, double high, double padding)
     return {low - room, high + room};
 }
 
+AxisRange timeRange(double first, double last)
+{
+    if (!std::isfinite(first) || !std::isfinite(last) || last < first)
+        return {};
+    return last > first ? AxisRange{first, last} : AxisRange{first, first + 1.0};
+}
+
 AxisTicks niceTicks(const AxisRange &range, int target)
 {
     AxisTicks ticks;

@@ -17,6 +17,10 @@ struct AxisRange {
 // single value (or none that is finite) gets a range around it
 AxisRange paddedRange(double low, double high, double padding = 0.05);
 
+// the time axis of samples from first to last (s): all of it, with no room; a single sample at t
+// shows t to t + 1 s, so that time never reads below the run's start (not -1 … 1 s)
+AxisRange timeRange(double first, double last);
+
 struct AxisTicks {
     std::vector<double> values;  // from low to high
     double step = 0.0;           // between two of them

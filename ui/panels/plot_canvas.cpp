@@ -170,7 +170,7 @@ void PlotCanvas::paintEvent(QPaintEvent *)
     // the ranges: all the time kept, all the values with some room
     const double firstTime = series.time(0);
     const double lastTime = series.time(series.size() - 1);
-    const AxisRange time = lastTime > firstTime ? AxisRange{firstTime, lastTime} : paddedRange(firstTime, lastTime);
+    const AxisRange time = timeRange(firstTime, lastTime);
     const auto values = series.valueRange();
     const AxisRange value = values ? paddedRange(values->first, values->second) : AxisRange{};
     const AxisTicks valueTicks = niceTicks(value, 5);
