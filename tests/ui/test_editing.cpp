@@ -52,6 +52,7 @@ private slots:
     void cleanup();
 
     void addToolPlacesAParticleUnderTheCursor();
+    void addToolRestsOnTheSurfaceUnderTheCursor();
     void addToolSnapsToTheGrid();
     void pinToolPinsAndFrees();
     void springToolJoinsTwoParticlesAtTheirDistance();
@@ -131,16 +132,16 @@ void TestEditing::addToolPlacesAParticleUnderTheCursor()
     key(Qt::Key_2);
     QCOMPARE(tools()->tool(), ui::Tool::AddParticle);
 
-    // where the ray through the pixel meets the ground y = 0
+    // resting on the ground where the ray through the pixel meets it: the centre one radius up
     const QPoint pixel = viewport()->rect().center() + QPoint(60, 40);
     const ui::Ray ray = viewport()->camera().unproject(pixel);
     const float t = -ray.origin.y() / ray.direction.y();
-    const QVector3D expected = ray.at(t);
+    const QVector3D expected = ray.at(t) + QVector3D(0.0f, float(tools()->defaults().radius), 0.0f);
     click(pixel);
     QCOMPARE(scene().particles.size(), std::size_t(1));
     const Eigen::Vector3d placed = scene().particles[0].position;
     QVERIFY2((toQt(placed) - expected).length() < 1e-4f, qPrintable(QStringLiteral("%1 %2 %3").arg(placed.x()).arg(placed.y()).arg(placed.z())));
-    QCOMPARE(placed.y(), 0.0);
+    QCOMPARE(placed.y(), tools()->defaults().radius);
     QCOMPARE(scene().particles[0].mass, tools()->defaults().mass);
     QCOMPARE(scene().particles[0].radius, tools()->defaults().radius);
     QCOMPARE(undo()->count(), 1);
@@ -149,7 +150,40 @@ void TestEditing::addToolPlacesAParticleUnderTheCursor()
     // it reaches the worker, which draws it where it was placed
     settle();
     QCOMPARE(viewport()->snapshot()->particleCount(), 1);
-    QCOMPARE(viewport()->particleAt(pixel), 0);
+    const auto centre = viewport()->camera().project(toQt(placed));
+    QVERIFY(centre);
+    QCOMPARE(viewport()->particleAt(centre->toPoint()), 0);
+
+    // a second click, with the first particle still selected, rests on the ground too (it used to
+    // land on a plane through the selected particle facing the camera, under the floor)
+    tools()->setSelection(ui::Selection{{0}, {}});
+    click(viewport()->rect().center() + QPoint(-80, 60));
+    QCOMPARE(scene().particles.size(), std::size_t(2));
+    QCOMPARE(scene().particles[1].position.y(), tools()->defaults().radius);
+}
+
+void TestEditing::addToolRestsOnTheSurfaceUnderTheCursor()
+{
+    // a table (a rectangle 0.5 m up) over the floor: a click on the table rests the particle on
+    // it, a click beside it on the floor
+    core::SceneDesc s = stillScene();
+    core::PlaneDesc floor;
+    core::PlaneDesc table;
+    table.offset = 0.5;
+    table.size = {1.0, 1.0};
+    s.planes = {floor, table};
+    open(s);
+    key(Qt::Key_2);
+    const double r = tools()->defaults().radius;
+    const auto pixelOf = [&](const Eigen::Vector3d &p) { return viewport()->camera().project(toQt(p))->toPoint(); };
+    click(pixelOf({0.0, 0.5, 0.0}));
+    QCOMPARE(scene().particles.size(), std::size_t(1));
+    QVERIFY2(std::abs(scene().particles[0].position.y() - (0.5 + r)) < 1e-9,
+             qPrintable(QString::number(scene().particles[0].position.y())));
+    click(pixelOf({2.0, 0.0, 0.0}));
+    QCOMPARE(scene().particles.size(), std::size_t(2));
+    QVERIFY2(std::abs(scene().particles[1].position.y() - r) < 1e-9,
+             qPrintable(QString::number(scene().particles[1].position.y())));
 }
 
 void TestEditing::addToolSnapsToTheGrid()
@@ -160,11 +194,13 @@ void TestEditing::addToolSnapsToTheGrid()
     key(Qt::Key_2);
     click(viewport()->rect().center() + QPoint(37, 23));
     QCOMPARE(scene().particles.size(), std::size_t(1));
+    // on the grid along the ground, resting on it
     const Eigen::Vector3d p = scene().particles[0].position;
-    for (int axis = 0; axis < 3; ++axis) {
+    for (int axis : {0, 2}) {
         const double steps = p[axis] / 0.5;
         QVERIFY2(std::abs(steps - std::round(steps)) < 1e-9, qPrintable(QString::number(p[axis])));
     }
+    QCOMPARE(p.y(), tools()->defaults().radius);
 }
 
 void TestEditing::pinToolPinsAndFrees()

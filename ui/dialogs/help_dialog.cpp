@@ -38,8 +38,9 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
              tr("Click a particle or spring to select it; Shift or Ctrl + click adds or removes; drag on empty "
                 "space selects the particles in a box (Ctrl + drag adds them)"));
     addEntry(tr("Add Particle tool (2)"),
-             tr("Click to place a particle on the ground y = 0, or, with one particle selected, on the plane "
-                "through it facing you; Snap in the toolbar rounds to the grid"));
+             tr("Click to place a particle resting on the surface under the cursor (a plane, a table, or the "
+                "ground y = 0 in a scene without planes); over no surface, on the plane facing you through the "
+                "one selected particle; Snap in the toolbar rounds to the grid"));
     addEntry(tr("Pin tool (3)"), tr("Click a particle to pin or free it"));
     addEntry(tr("Spring tool (4)"),
              tr("Click one particle, then another: a spring with the toolbar's k and kc, at rest at their distance"));

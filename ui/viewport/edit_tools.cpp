@@ -1,5 +1,6 @@
 #include "edit_tools.h"
 
+#include "core/colliders.h"
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
 #include "ui/panels/status_text.h"
@@ -14,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace ui {
 
@@ -200,15 +203,46 @@ std::optional<Eigen::Vector3d> EditTools::onViewPlane(const QPointF &pixel, cons
 
 std::optional<Eigen::Vector3d> EditTools::placementAt(const QPointF &pixel) const
 {
+    // on the surface under the cursor, resting on it: the nearest plane the ray meets from the
+    // side the camera is on (a rectangle within its edges), or the ground y = 0 in a scene without
+    // planes; the centre one radius off the surface, where the particle touches it
+    const core::SceneDesc &scene = m_document->scene();
     const Camera &camera = m_viewport->camera();
-    std::optional<Eigen::Vector3d> point;
-    if (m_selection.particles.size() == 1)
-        point = onViewPlane(pixel, shownPosition(m_selection.particles.front()));
-    else
-        point = rayPlane(camera.unproject(pixel), Eigen::Vector3d::UnitY(), Eigen::Vector3d::Zero());
-    // looking along the ground or from below it: the plane through the camera's target instead
-    if (!point)
-        point = onViewPlane(pixel, toEigen(camera.target()));
+    const Ray ray = camera.unproject(pixel);
+    const Eigen::Vector3d eye = toEigen(ray.origin);
+    std::vector<core::PlaneDesc> surfaces = scene.planes;
+    if (surfaces.empty())
+        surfaces.push_back(core::PlaneDesc{});  // the ground
+    std::optional<Eigen::Vector3d> surface;
+    Eigen::Vector3d up = Eigen::Vector3d::UnitY();
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const core::PlaneDesc &plane : surfaces) {
+        const core::Collider collider = core::makeCollider(plane, scene.settings);
+        const double side = collider.normal.dot(eye) >= collider.offset ? 1.0 : -1.0;
+        const Eigen::Vector3d normal = side * collider.normal;
+        // the camera behind a one-sided plane sees no surface there
+        if (!collider.twoSided && side < 0.0)
+            continue;
+        const auto hit = rayPlane(ray, normal, collider.normal * collider.offset);
+        if (!hit || (*hit - eye).norm() >= nearest)
+            continue;
+        // a rectangle: only within its edges (beyond them the nearest point is an edge, farther)
+        if (plane.bounded() && core::separation(collider, *hit, side).distance > 1e-9 * (1.0 + hit->norm()))
+            continue;
+        nearest = (*hit - eye).norm();
+        surface = hit;
+        up = normal;
+    }
+    if (surface) {
+        if (m_defaults.snap)
+            surface = snapToGrid(*surface, m_defaults.gridStep);
+        return *surface + m_defaults.radius * up;
+    }
+    // no surface under the cursor: the plane facing the camera through the one selected particle,
+    // or through the camera's target
+    std::optional<Eigen::Vector3d> point = m_selection.particles.size() == 1
+                                               ? onViewPlane(pixel, shownPosition(m_selection.particles.front()))
+                                               : onViewPlane(pixel, toEigen(camera.target()));
     if (point && m_defaults.snap)
         point = snapToGrid(*point, m_defaults.gridStep);
     return point;
