@@ -6,7 +6,10 @@
 // a particle's level is the number of contacts between it and a collider or a pinned particle,
 // and in the last iteration of each solve the lower particle of a pair counts as immovable, so a
 // stack or a pile carries its weight down to the ground in one sweep ("shock propagation",
-// Guendelman, Bridson and Fedkiw 2003) instead of sinking a little every sub-step.
+// Guendelman, Bridson and Fedkiw 2003) instead of sinking a little every sub-step. The velocity
+// iterations are warm started from the impulses each contact ended the last sub-step with
+// (State::contactImpulses), so that a deep pile's weight, which 8 iterations from nothing do not
+// carry to the ground, is there from the first iteration.
 
 #include "broad_phase.h"
 #include "geometry.h"
