@@ -12,6 +12,7 @@
 
 #include "core/io/scene_file.h"
 
+#include <QUndoStack>
 #include <QDir>
 #include <QProcess>
 #include <QtTest>
@@ -100,6 +101,13 @@ void TestCrashRecovery::killedEditorIsRecoveredOnTheNextStart()
     QVERIFY(m_window->document()->isModified());
     QVERIFY(!QFileInfo::exists(recovery));
     QCOMPARE(ui::Autosave::findRecoveries(m_window->files()->autosave()->directory()).size(), 0);
+
+    // a file opened afterwards is as saved: not modified, nothing to undo
+    QString error;
+    QVERIFY2(m_window->files()->openScene(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/collisions.json"), &error),
+             qPrintable(error));
+    QVERIFY(!m_window->document()->isModified());
+    QCOMPARE(m_window->document()->undoStack()->count(), 0);
 }
 
 QTEST_MAIN(TestCrashRecovery)

@@ -35,6 +35,9 @@ void SceneDocument::replace(core::SceneDesc scene, const QString &filePath)
 {
     m_scene = std::make_shared<const core::SceneDesc>(std::move(scene));
     m_undoStack->clear();
+    // a new scene is as its file has it, even after a recovered one was marked unclean for good
+    // (resetClean), which clear() leaves as it was
+    m_undoStack->setClean();
     if (m_filePath != filePath) {
         m_filePath = filePath;
         emit filePathChanged(m_filePath);
