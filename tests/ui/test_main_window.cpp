@@ -10,6 +10,7 @@
 #include "ui/dialogs/help_dialog.h"
 #include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
+#include "ui/window/window_size.h"
 #include "ui/panels/parameter_row.h"
 #include "ui/panels/parameters_panel.h"
 #include "ui/document/scene_document.h"
@@ -23,6 +24,7 @@
 #include <QDockWidget>
 #include <QStatusBar>
 #include <QTableWidget>
+#include <QScreen>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
@@ -79,6 +81,7 @@ private slots:
     void examplesAreAllListed();
     void closingWhileRunningEndsTheWorker();
     void geometryIsRemembered();
+    void firstSizeFitsTheScreen();
 
 private:
     void press(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
@@ -668,6 +671,20 @@ void TestMainWindow::geometryIsRemembered()
     // and nothing was written outside the test's own folder
     QSettings settings;
     QVERIFY(settings.fileName().startsWith(settingsPath()));
+}
+
+void TestMainWindow::firstSizeFitsTheScreen()
+{
+    // 1200 × 800 where it fits (this test's screen, 1280 × 1024); inside a smaller screen with
+    // 64 px to spare, such as 1600 × 1000 at a scale factor of 1.5 (1066 × 666 logical pixels)
+    QCOMPARE(ui::defaultWindowSize(QSize(1280, 1024)), QSize(1200, 800));
+    QCOMPARE(ui::defaultWindowSize(QSize(1066, 666)), QSize(1002, 602));
+    QCOMPARE(ui::defaultWindowSize(QSize()), QSize(1200, 800));
+    // and the window that opens without remembered settings has it
+    QVERIFY(m_window->close());  // (which saves its geometry: removed after)
+    QSettings().remove(QStringLiteral("mainWindow"));
+    QVERIFY2(openEditor({.activate = false, .settle = false}), qPrintable(editorFailure()));
+    QCOMPARE(m_window->size(), ui::defaultWindowSize(m_window->screen()->availableGeometry().size()));
 }
 
 QTEST_MAIN(TestMainWindow)

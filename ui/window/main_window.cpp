@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "field_undo_keys.h"
+#include "window_size.h"
 
 #include "ui/export/exporter.h"
 
@@ -42,6 +43,7 @@
 #include <QStatusBar>
 #include <QStyle>
 #include <QToolBar>
+#include <QScreen>
 #include <QUndoStack>
 #include <QUndoView>
 
@@ -382,7 +384,7 @@ void MainWindow::readSettings()
     QSettings settings;
     settings.beginGroup(QStringLiteral("mainWindow"));
     if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray()))
-        resize(1200, 800);
+        resize(defaultWindowSize(screen() ? screen()->availableGeometry().size() : QSize()));
     // the docks narrow by default: the view gets most of the window
     if (!restoreState(settings.value(QStringLiteral("state")).toByteArray()))
         resizeDocks({m_parametersDock}, {kDefaultDockWidth}, Qt::Horizontal);
