@@ -124,17 +124,24 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
                                              " particles)"};
 
     // the contact impulses a saved run starts from
-    const auto planes = static_cast<long long>(scene.planes.size());
-    for (std::size_t k = 0; k < scene.contactImpulses.size(); ++k) {
-        const ContactImpulse &c = scene.contactImpulses[k];
+    return findContactImpulseProblem(scene.contactImpulses, scene.particles.size(), scene.planes.size());
+}
+
+std::optional<SceneProblem> findContactImpulseProblem(const std::vector<ContactImpulse> &impulses, std::size_t particles,
+                                                      std::size_t planes)
+{
+    const auto count = static_cast<long long>(particles);
+    const auto planeCount = static_cast<long long>(planes);
+    for (std::size_t k = 0; k < impulses.size(); ++k) {
+        const ContactImpulse &c = impulses[k];
         if (c.i < 0 || c.i >= count)
             return SceneProblem{indexed("contactImpulses", k, "particle"), "particle index " + std::to_string(c.i) +
                                                                               " is out of range (the scene has " +
                                                                               std::to_string(count) + " particles)"};
-        if (c.withPlane() && c.plane() >= planes)
+        if (c.withPlane() && c.plane() >= planeCount)
             return SceneProblem{indexed("contactImpulses", k, "plane"), "plane index " + std::to_string(c.plane()) +
                                                                            " is out of range (the scene has " +
-                                                                           std::to_string(planes) + " planes)"};
+                                                                           std::to_string(planeCount) + " planes)"};
         if (!c.withPlane() && (c.j >= count || c.j == c.i))
             return SceneProblem{indexed("contactImpulses", k, "other"),
                                 c.j == c.i ? "is the particle itself: a contact joins two particles"

@@ -18,6 +18,11 @@ struct SceneProblem {
 // the first problem in the scene, in file order; nullopt when it can be simulated
 std::optional<SceneProblem> findProblem(const SceneDesc &scene);
 
+// the first problem with a run's contact impulses (SceneDesc::contactImpulses, a session's state)
+// in a scene of that many particles and planes; paths as "contactImpulses[k].plane"
+std::optional<SceneProblem> findContactImpulseProblem(const std::vector<ContactImpulse> &impulses, std::size_t particles,
+                                                      std::size_t planes);
+
 // planes are stored with unit normals; this makes one so without disturbing one that already is
 // (so that loading a saved file gives back the same bits)
 Eigen::Vector3d unitNormal(const Eigen::Vector3d &normal);

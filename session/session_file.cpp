@@ -3,6 +3,7 @@
 #include "core/io/json_scan.h"
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
+#include "core/validate.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -244,8 +245,6 @@ public:
             out.breaks.push_back(entry);
         }
         const QJsonArray impulses = o.value(u"contactImpulses"_s).toArray();
-        const auto particleCount = double(scene.particles.size());
-        const auto planeCount = double(scene.planes.size());
         out.contactImpulses.resize(std::size_t(impulses.size()));
         for (qsizetype k = 0; k < impulses.size(); ++k) {
             const QString at = path + u".contactImpulses[%1]"_s.arg(k);
@@ -256,18 +255,19 @@ public:
             for (int v = 0; v < 6; ++v)
                 if (!number(e[v], at + u"[%1]"_s.arg(v), values[v]))
                     return false;
+            // whole numbers within an int; the scene's own check (core::findContactImpulseProblem) does the rest
+            for (int v = 0; v < 2; ++v)
+                if (!(std::abs(values[v]) <= 1e9) || std::trunc(values[v]) != values[v])
+                    return fail(at + u"[%1]"_s.arg(v), u"expected a particle or plane index"_s);
             core::ContactImpulse &c = out.contactImpulses[std::size_t(k)];
-            if (!(values[0] >= 0.0 && values[0] < particleCount && std::trunc(values[0]) == values[0]) ||
-                !(values[1] >= -planeCount && values[1] < particleCount && std::trunc(values[1]) == values[1]) ||
-                values[0] == values[1])
-                return fail(at, u"expected a free particle and another particle or a plane of the scene"_s);
-            if (!(values[2] >= 0.0))
-                return fail(at + u"[2]"_s, u"expected a normal impulse of at least 0"_s);
             c.i = int(values[0]);
             c.j = int(values[1]);
             c.normal = values[2];
             c.friction = Eigen::Vector3d(values[3], values[4], values[5]);
         }
+        if (const auto problem = core::findContactImpulseProblem(out.contactImpulses, scene.particles.size(),
+                                                                 scene.planes.size()))
+            return fail(path + u"."_s + QString::fromStdString(problem->path), QString::fromStdString(problem->message));
         std::sort(out.contactImpulses.begin(), out.contactImpulses.end());
         return true;
     }

@@ -106,6 +106,7 @@ private slots:
     void nothingIsRecordedWithoutAStart();
     void replayAfterSpringsBroke();
     void damagedBreaksAreRefused();
+    void damagedContactImpulsesAreRefused();
     void negativeZeroKeepsItsSign();
     void endlessFileIsRefused();
 };
@@ -286,6 +287,30 @@ void TestSessionRecording::damagedBreaksAreRefused()
     QVERIFY2(beyond.contains(QStringLiteral("start.breaks[0].spring: expected a spring of the scene")), qPrintable(beyond));
     const QString twice = error(QByteArray(good).replace("\"breaks\": [", "\"breaks\": [" + entry + " \"step\": 1, \"time\": 0}, "));
     QVERIFY2(twice.contains(QStringLiteral("broke twice")), qPrintable(twice));
+}
+
+void TestSessionRecording::damagedContactImpulsesAreRefused()
+{
+    // the start state's contact impulses (the net rests on the floor) get the scene file's checks
+    // and messages, with their path
+    ui::SimulationRunner runner;
+    const auto recording = recordAfterABreak(runner);
+    QVERIFY(recording);
+    QVERIFY(!recording->start.contactImpulses.empty());
+    const QByteArray good = ui::recordingToJson(*recording);
+    const QByteArray list = "\"contactImpulses\": [";
+    QCOMPARE(good.count(list), qsizetype(1));
+    const auto error = [&](const QByteArray &first) {
+        return ui::parseRecording(QByteArray(good).replace(list, list + first + ", "), QStringLiteral("s.json")).error;
+    };
+    const QString plane = error("[0, -99, 0.1, 0, 0, 0]");
+    QVERIFY2(plane.contains(QStringLiteral("start.contactImpulses[0].plane: plane index 98 is out of range")),
+             qPrintable(plane));
+    const QString pulls = error("[0, 1, -0.1, 0, 0, 0]");
+    QVERIFY2(pulls.contains(QStringLiteral("start.contactImpulses[0].normal: must be from 0")), qPrintable(pulls));
+    const QString half = error("[0.5, 1, 0.1, 0, 0, 0]");
+    QVERIFY2(half.contains(QStringLiteral("start.contactImpulses[0][0]: expected a particle or plane index")),
+             qPrintable(half));
 }
 
 void TestSessionRecording::negativeZeroKeepsItsSign()
