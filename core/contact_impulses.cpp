@@ -1,6 +1,6 @@
 #include "contact_impulses.h"
 
-#include <algorithm>
+#include <vector>
 
 namespace core {
 
@@ -20,8 +20,6 @@ void renumberContactImpulses(std::vector<ContactImpulse> &impulses, const std::v
         impulse.j = j;
         kept.push_back(impulse);
     }
-    // a removal keeps the order of what is left, but the solver's binary search needs it sorted
-    std::sort(kept.begin(), kept.end());
     impulses = std::move(kept);
 }
 
@@ -31,7 +29,6 @@ void removePlaneFromContactImpulses(std::vector<ContactImpulse> &impulses, int r
     for (ContactImpulse &c : impulses)
         if (c.withPlane() && c.plane() > removed)
             c.j = -1 - (c.plane() - 1);
-    std::sort(impulses.begin(), impulses.end());
 }
 
 }  // namespace core

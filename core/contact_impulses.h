@@ -8,7 +8,8 @@
 
 namespace core {
 
-// remap[old particle] is its new index, or -1 when it was removed
+// remap[old particle] is its new index, or -1 when it was removed. (The order is of no matter here:
+// makeState sorts them for the solver.)
 void renumberContactImpulses(std::vector<ContactImpulse> &impulses, const std::vector<int> &remap);
 
 // plane `removed` is gone and the planes after it move down by one
