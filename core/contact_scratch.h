@@ -27,6 +27,7 @@ struct Contact {
     double side = 1.0;                                 // a collider's side particle i started on
     Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  // unit, towards i
     double targetSpeed = 0.0;       // m/s, the separating normal speed the solve aims at
+    double drift = 0.0;             // s: how far its impulses move the sub-step's end, per m/s they add
     double friction = 0.0;          // μk
     double staticFriction = 0.0;    // μs
     double normalImpulse = 0.0;     // per unit inverse mass: N·s, accumulated over the iterations
@@ -68,6 +69,8 @@ struct ContactScratch {
 
     std::vector<Impact> impacts;
     std::vector<std::uint8_t> impacted;  // per particle: it took part in an impact this sub-step
+
+    double drift = 0.0;  // s: β h, how far the velocity solve's changes move the sub-step's end, per m/s
 
     std::vector<Contact> contacts;
     std::vector<Contact> sorted;  // the same, in the order they are solved

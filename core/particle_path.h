@@ -36,6 +36,23 @@ inline PathShape pathShape(Integrator integrator)
     return PathShape::Hermite;
 }
 
+// β: how far a change of the sub-step's end velocity moves its end position, per unit of the change
+// and of h, under a constant force (x1 − x0 − v0 h = β (v1 − v0) h): 1 for the kick-drift Euler
+// schemes, ½ for the second-order ones, 0 for explicit Euler, whose position moves with the old
+// velocity
+inline double driftWeight(PathShape shape)
+{
+    switch (shape) {
+    case PathShape::KickDrift:
+        return 1.0;
+    case PathShape::DriftKick:
+        return 0.0;
+    case PathShape::Hermite:
+        break;
+    }
+    return 0.5;
+}
+
 struct ParticlePath {
     PathShape shape = PathShape::Hermite;
     Eigen::Vector3d x0, v0, x1, v1;  // m, m/s at the sub-step's start (t = 0) and end (t = h)
