@@ -1,6 +1,6 @@
 // springlab-sim for sweeps, end to end: --set changes the run exactly as an edited file would and
 // refuses what the file would refuse; --summary-json and --summary-csv hold the run's figures,
-// also when it blows up or is refused.
+// also when it blows up or is refused; tools/sweep_parallel.sh gathers a sweep into one table.
 
 #include "core/diagnostics.h"
 #include "core/io/scene_file.h"
@@ -13,6 +13,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -138,6 +139,7 @@ private slots:
     void summaryOnRefusal();
     void summaryNeverReplacesAnInput();
     void csvHeaderAndRowAgree();
+    void parallelSweep();
 
 private:
     QString path(const QString &name) const { return m_dir.filePath(name); }
@@ -449,6 +451,50 @@ void TestSimSweep::csvHeaderAndRowAgree()
             QCOMPARE(row[k], value.toString());
     }
     QCOMPARE(row[names.indexOf(u"overrides"_s)], u"particles[4].velocity=[1,2,3] settings.restitution=0.25"_s);
+}
+
+void TestSimSweep::parallelSweep()
+{
+    if (QStandardPaths::findExecutable(u"parallel"_s).isEmpty())
+        QSKIP("GNU parallel is not installed (Debian: apt-get install parallel; tools/dev.sh test installs it)");
+
+    // docs/batch.md's sweep, 2 x 2, on the pool example
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(u"SIM"_s, QStringLiteral(SPRINGLAB_SIM));
+    environment.insert(u"RESTITUTIONS"_s, u"0.5 1"_s);
+    environment.insert(u"TIME_STEPS"_s, u"0.01 0.005"_s);
+    environment.insert(u"JOBS"_s, u"2"_s);
+    const test::ProgramRun run = test::runProgram(u"bash"_s, {QStringLiteral(SPRINGLAB_SOURCE_DIR "/tools/sweep_parallel.sh"),
+                                                          out.path()}, 300000, environment);
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+
+    // one header and four rows, one per pair
+    const QStringList lines = QString::fromUtf8(readAll(out.filePath(u"sweep.csv"_s))).trimmed().split(u'\n');
+    QCOMPARE(lines.size(), 5);
+    const QStringList names = csvCells(lines[0]);
+    const qsizetype overridesColumn = names.indexOf(u"overrides"_s);
+    QVERIFY(overridesColumn >= 0);
+    QMap<QString, double> kineticEnd;  // by "restitution timeStep"
+    for (const QString &line : lines.mid(1)) {
+        const QStringList row = csvCells(line);
+        QCOMPARE(row.size(), names.size());
+        const auto cell = [&](const QString &name) { return row[names.indexOf(name)]; };
+        QCOMPARE(cell(u"status"_s), u"ok"_s);
+        const double h = cell(u"timeStep"_s).toDouble();
+        QVERIFY(h == 0.01 || h == 0.005);
+        QCOMPARE(cell(u"steps"_s).toLongLong(), std::llround(1.5 / h));
+        const QString overrides = row[overridesColumn];
+        const QString restitution = overrides.section(u"settings.restitution="_s, 1).section(u' ', 0, 0);
+        QVERIFY2(restitution == u"0.5"_s || restitution == u"1"_s, qPrintable(overrides));
+        QVERIFY(overrides.contains(u"settings.timeStep="_s + cell(u"timeStep"_s)));
+        kineticEnd[restitution + u' ' + cell(u"timeStep"_s)] = cell(u"kineticEnd"_s).toDouble();
+    }
+    QCOMPARE(kineticEnd.size(), 4);
+    // the shot hits the other ball: the less elastic the contact, the less motion is left
+    for (const QString &h : {u"0.01"_s, u"0.005"_s})
+        QVERIFY2(kineticEnd[u"0.5 "_s + h] < kineticEnd[u"1 "_s + h], qPrintable(h));
 }
 
 QTEST_MAIN(TestSimSweep)
