@@ -1,14 +1,17 @@
 // springlab-sim: runs a scene with no window (issue 2, docs/scene-format.md).
 //   springlab-sim SCENE.json [--duration SECONDS | --steps N] [--time-step H] [--substeps S]
 //                 [--integrator NAME] [--tolerance TOL] [--contact-solver NAME] [--friction MU]
-//                 [--static-friction MU] [--output FINAL.json]
-//                 [--trace TRACE.csv [--every K]] [--render DIR [--fps F] [--size WxH]] [--quiet]
+//                 [--static-friction MU] [--set KEY=VALUE]... [--output FINAL.json]
+//                 [--trace TRACE.csv [--every K]] [--render DIR [--fps F] [--size WxH]]
+//                 [--summary-json SUMMARY.json] [--summary-csv ROW.csv] [--quiet]
+//        springlab-sim --summary-csv-header
 //        springlab-sim --replay SESSION.json [--output FINAL.json] [--quiet]
 // Exit code 0 done, 2 bad file or argument (or --render with no display, or an --output that is not
 // a regular file), 3 the simulation blew up, 4 a replay did not end with the recorded state.
 
 #include "sim_options.h"
 #include "sim_render.h"
+#include "sim_summary.h"
 
 #include "core/diagnostics.h"
 #include "core/io/safe_write.h"
@@ -90,6 +93,29 @@ QString energyRow(const char *label, const core::Energies &e)
                              e.total());
 }
 
+// the run's summary written where --summary-json and --summary-csv say, whatever the exit code;
+// a summary that cannot be written turns success into failure
+int reportSummary(app::RunSummary &summary, const QString &jsonPath, const QString &csvPath, int code)
+{
+    summary.exitCode = code;
+    if (const QString failure = app::saveSummary(summary, jsonPath, csvPath); !failure.isEmpty()) {
+        failWith(failure);
+        return code == kExitOk ? kExitBadInput : code;
+    }
+    return code;
+}
+
+// an --output that is a device or a FIFO is refused before the run, not after it
+QString refusedOutput(const app::SimOptions &options)
+{
+    if (options.outputPath.isEmpty())
+        return {};
+    const QString refused = io::refuseToReplace(options.outputPath);
+    return refused.isEmpty() ? refused : QDir::toNativeSeparators(options.outputPath) + u": cannot save: "_s + refused;
+}
+
+int runScene(const app::SimOptions &options, app::RunSummary &summary);
+
 // --replay: the recording run again from its start; its final state must hash as recorded
 int replaySession(const app::SimOptions &options)
 {
@@ -139,31 +165,57 @@ int main(int argc, char *argv[])
         QTextStream(stdout) << parsed.text;
         return kExitOk;
     }
-    if (!parsed.options)
-        return failWith(parsed.error + u"\n  (springlab-sim --help lists the options)"_s);
+    if (!parsed.options) {
+        app::RunSummary refused = parsed.refused;
+        const int code = failWith(parsed.error + u"\n  (springlab-sim --help lists the options)"_s);
+        return finish(reportSummary(refused, parsed.summaryJsonPath, parsed.summaryCsvPath, code));
+    }
     const app::SimOptions &options = *parsed.options;
-
-    // an --output that is a device or a FIFO is refused before the run, not after it
-    if (!options.outputPath.isEmpty())
-        if (const QString refused = io::refuseToReplace(options.outputPath); !refused.isEmpty())
-            return failWith(QDir::toNativeSeparators(options.outputPath) + u": cannot save: "_s + refused);
-    if (options.replay)
+    if (options.replay) {
+        if (const QString refused = refusedOutput(options); !refused.isEmpty())
+            return failWith(refused);
         return replaySession(options);
+    }
+
+    // a summary file that is a device or a FIFO is refused before the run, with no summary
+    for (const QString &path : {options.summaryJsonPath, options.summaryCsvPath})
+        if (const QString refused = path.isEmpty() ? QString() : io::refuseToReplace(path); !refused.isEmpty())
+            return failWith(QDir::toNativeSeparators(path) + u": cannot save: "_s + refused);
+
+    // the run; its summary is written whatever its end
+    app::RunSummary summary;
+    summary.scene = options.scenePath;
+    summary.overrides = app::overridesApplied(options);
+    const int code = runScene(options, summary);
+    return finish(reportSummary(summary, options.summaryJsonPath, options.summaryCsvPath, code));
+}
+
+namespace {
+
+int runScene(const app::SimOptions &options, app::RunSummary &summary)
+{
+    // a failure before the end: said on stderr and kept for the summary
+    const auto failRun = [&summary](const QString &message) {
+        summary.error = message;
+        return failWith(message);
+    };
+    if (const QString refused = refusedOutput(options); !refused.isEmpty())
+        return failRun(refused);
 
     // the scene, with the command line's settings over the file's
     const io::LoadResult loaded = io::loadScene(options.scenePath);
     if (!loaded.ok())
-        return failWith(loaded.error);
+        return failRun(loaded.error);
     if (!options.quiet)
         for (const QString &warning : loaded.warnings)
             QTextStream(stderr) << "springlab-sim: warning: " << printable(warning) << '\n';
     core::SceneDesc scene = *loaded.scene;
     if (const QString problem = app::applyOverrides(options, scene); !problem.isEmpty())
-        return failWith(problem);
+        return failRun(problem);
     QString error;
     const std::optional<std::uint64_t> steps = app::stepsToRun(options, scene.settings, error);
     if (!steps)
-        return failWith(error);
+        return failRun(error);
 
     // model and initial state
     const auto model = core::compileModel(scene);
@@ -175,7 +227,7 @@ int main(int argc, char *argv[])
     const bool tracing = !options.tracePath.isEmpty();
     if (tracing) {
         if (const QString failure = trace.open(options.tracePath); !failure.isEmpty())
-            return failWith(failure);
+            return failRun(failure);
         trace.writeRows(state);
     }
 
@@ -185,9 +237,9 @@ int main(int argc, char *argv[])
     if (rendering) {
         if (const QString failure = frames.open(options.renderDirectory, options.frameSize, options.fps, scene, *steps);
             !failure.isEmpty())
-            return failWith(failure);
+            return failRun(failure);
         if (const QString failure = frames.renderDue(*model, state); !failure.isEmpty())
-            return failWith(failure);
+            return failRun(failure);
     }
 
     // the run, in chunks between trace rows (every K steps, not the last step unless K divides it)
@@ -214,11 +266,11 @@ int main(int argc, char *argv[])
             trace.writeRows(state);
         if (rendering && !blewUp)
             if (const QString failure = frames.renderDue(*model, state); !failure.isEmpty())
-                return failWith(failure);
+                return failRun(failure);
     }
     if (tracing)
         if (const QString failure = trace.close(); !failure.isEmpty())
-            return failWith(failure);
+            return failRun(failure);
     const core::Energies end = core::energies(*model, state);
 
     // without contacts nothing in a file adds energy (drag takes it): a total that rose by more
@@ -244,6 +296,26 @@ int main(int argc, char *argv[])
         for (const QString &warning : runWarnings)
             QTextStream(stderr) << "springlab-sim: warning: " << warning << '\n';
 
+    // what the run did, for --summary-json and --summary-csv
+    const auto name = [](std::string_view text) { return QString::fromUtf8(text.data(), qsizetype(text.size())); };
+    summary.ran = true;
+    summary.integrator = name(core::integratorName(scene.settings.integrator));
+    summary.contactSolver = name(core::contactSolverName(scene.settings.contactSolver));
+    summary.timeStep = scene.settings.timeStep;
+    summary.substeps = model->substeps;
+    summary.stepsRequested = *steps;
+    summary.steps = state.step;
+    summary.simulatedTime = state.time;
+    summary.wallTime = static_cast<double>(nanoseconds) * 1e-9;
+    summary.start = start;
+    summary.end = end;
+    summary.springBreaks = state.breaks.size();
+    summary.warnings = loaded.warnings + runWarnings;
+    const QString blowup = blewUp ? QString::fromStdString(core::explainBlowup(
+                                        *model, *work.blowup, core::stabilityLimit(*model, initial)))
+                                  : QString();
+    summary.error = blowup;
+
     // the final state as a scene to run on from; a blown-up state is not worth saving
     if (!options.outputPath.isEmpty() && !blewUp) {
         core::SceneDesc final = scene;
@@ -253,7 +325,7 @@ int main(int argc, char *argv[])
         if (scene.settings.autoSubsteps)
             final.settings.substeps = model->substeps;
         if (const io::SaveResult saved = io::saveScene(options.outputPath, final); !saved.ok())
-            return failWith(saved.error);
+            return failRun(saved.error);
     }
 
     // the summary
@@ -271,6 +343,8 @@ int main(int argc, char *argv[])
             << QString::fromStdString(std::string(core::integratorName(scene.settings.integrator))) << ", "
             << QString::fromStdString(std::string(core::contactSolverName(scene.settings.contactSolver)))
             << " contacts\n";
+        if (!summary.overrides.isEmpty())
+            out << "  overrides  " << printable(app::overridesText(summary.overrides)) << '\n';
         out << QString::asprintf("  ran        %llu of %llu steps%s, %.9g s simulated, in %.3g s wall time",
                                  static_cast<unsigned long long>(state.step), static_cast<unsigned long long>(*steps),
                                  blewUp ? " (stopped: blew up)" : "", state.time, seconds);
@@ -301,9 +375,9 @@ int main(int argc, char *argv[])
 
     // what went wrong, if it did
     if (blewUp)
-        QTextStream(stderr) << "springlab-sim: "
-                            << QString::fromStdString(core::explainBlowup(*model, *work.blowup,
-                                                                          core::stabilityLimit(*model, initial)))
+        QTextStream(stderr) << "springlab-sim: " << blowup
                             << (options.outputPath.isEmpty() ? "" : "\n  (no --output written)") << '\n';
-    return finish(blewUp ? kExitBlewUp : kExitOk);
+    return blewUp ? kExitBlewUp : kExitOk;
 }
+
+}  // namespace

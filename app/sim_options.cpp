@@ -1,5 +1,6 @@
 #include "sim_options.h"
 
+#include "core/io/scene_words.h"
 #include "core/parameters.h"
 #include "core/solver_names.h"
 #include "core/validate.h"
@@ -33,23 +34,13 @@ constexpr double kMaxSteps = 9007199254740992.0;  // 2^53
 constexpr double kMaxFps = 1000.0;
 constexpr int kMaxFrameSide = 16384;
 
-QString knownIntegrators()
-{
-    QStringList names;
-    for (core::Integrator integrator : core::kIntegrators)
-        names += QString::fromUtf8(core::integratorName(integrator).data(),
-                                   static_cast<qsizetype>(core::integratorName(integrator).size()));
-    return names.join(u", "_s);
-}
-
-QString knownContactSolvers()
-{
-    QStringList names;
-    for (core::ContactSolver solver : core::kContactSolvers)
-        names += QString::fromUtf8(core::contactSolverName(solver).data(),
-                                   static_cast<qsizetype>(core::contactSolverName(solver).size()));
-    return names.join(u", "_s);
-}
+// the settings that options of their own set, and the keys --set names them with
+constexpr std::pair<const char *, const char *> kSettingOptions[] = {
+    {"time-step", "settings.timeStep"},           {"substeps", "settings.substeps"},
+    {"integrator", "settings.integrator"},        {"tolerance", "settings.tolerance"},
+    {"contact-solver", "settings.contactSolver"}, {"friction", "settings.friction"},
+    {"static-friction", "settings.staticFriction"},
+};
 
 // "--name: reason"
 QString optionError(const QString &name, const QString &reason)
@@ -151,9 +142,14 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
     if (options.replay) {
         for (const QString &name : {u"duration"_s, u"steps"_s, u"time-step"_s, u"substeps"_s, u"integrator"_s,
                                    u"tolerance"_s, u"contact-solver"_s, u"friction"_s, u"static-friction"_s,
-                                   u"trace"_s, u"every"_s, u"render"_s})
+                                   u"set"_s, u"trace"_s, u"every"_s, u"render"_s})
             if (parser.isSet(name)) {
                 error = u"--replay runs the recording as it was recorded: --%1 cannot change it"_s.arg(name);
+                return false;
+            }
+        for (const QString &name : {u"summary-json"_s, u"summary-csv"_s})
+            if (parser.isSet(name)) {
+                error = u"--%1 summarises a run of a scene, not a --replay"_s.arg(name);
                 return false;
             }
     }
@@ -210,22 +206,33 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
             return false;
     }
     if (parser.isSet(u"integrator"_s)) {
-        const QString name = parser.value(u"integrator"_s);
-        options.integrator = core::integratorFromName(name.toStdString());
+        QString unknown;
+        options.integrator = io::integratorNamed(parser.value(u"integrator"_s), unknown);
         if (!options.integrator) {
-            error = optionError(u"integrator"_s,
-                                u"unknown integrator \""_s + name + u"\" (known: "_s + knownIntegrators() + u")"_s);
+            error = optionError(u"integrator"_s, unknown);
             return false;
         }
     }
     if (parser.isSet(u"contact-solver"_s)) {
-        const QString name = parser.value(u"contact-solver"_s);
-        options.contactSolver = core::contactSolverFromName(name.toStdString());
+        QString unknown;
+        options.contactSolver = io::contactSolverNamed(parser.value(u"contact-solver"_s), unknown);
         if (!options.contactSolver) {
-            error = optionError(u"contact-solver"_s, u"unknown contact solver \""_s + name + u"\" (known: "_s +
-                                                         knownContactSolvers() + u")"_s);
+            error = optionError(u"contact-solver"_s, unknown);
             return false;
         }
+    }
+
+    // --set KEY=VALUE, in order; a setting is changed by its option or by --set, never both
+    for (const QString &argument : parser.values(u"set"_s)) {
+        std::optional<SceneOverride> set = parseOverride(argument, error);
+        if (!set)
+            return false;
+        for (const auto &[option, key] : kSettingOptions)
+            if (set->key == QLatin1StringView(key) && parser.isSet(QString::fromLatin1(option))) {
+                error = u"--%1 and --set %2 both set %2: give one of them"_s.arg(QString::fromLatin1(option), set->key);
+                return false;
+            }
+        options.sets.push_back(std::move(*set));
     }
 
     // what to write
@@ -239,6 +246,13 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
         error = optionError(u"trace"_s, u"needs a file name"_s);
         return false;
     }
+    options.summaryJsonPath = parser.value(u"summary-json"_s);
+    options.summaryCsvPath = parser.value(u"summary-csv"_s);
+    for (const QString &name : {u"summary-json"_s, u"summary-csv"_s})
+        if (parser.isSet(name) && parser.value(name).isEmpty()) {
+            error = optionError(name, u"needs a file name"_s);
+            return false;
+        }
     if (parser.isSet(u"every"_s)) {
         if (!parser.isSet(u"trace"_s)) {
             error = u"--every only makes sense with --trace"_s;
@@ -259,7 +273,10 @@ QString clashingPaths(const SimOptions &options)
 {
     // what the run reads, then what it writes, each named by its option
     const std::pair<const char *, QString> inputs[] = {{options.replay ? "the recording's" : "the scene's", options.scenePath}};
-    const std::pair<const char *, QString> outputs[] = {{"--output", options.outputPath}, {"--trace", options.tracePath}};
+    const std::pair<const char *, QString> outputs[] = {{"--output", options.outputPath},
+                                                        {"--trace", options.tracePath},
+                                                        {"--summary-json", options.summaryJsonPath},
+                                                        {"--summary-csv", options.summaryCsvPath}};
     for (const auto &[name, written] : outputs) {
         if (written.isEmpty())
             continue;
@@ -268,11 +285,45 @@ QString clashingPaths(const SimOptions &options)
                 return u"%1 %2 names %3 file: the run would overwrite what it reads"_s
                     .arg(QString::fromLatin1(name), QDir::toNativeSeparators(written), QString::fromLatin1(inputName));
     }
-    if (!options.outputPath.isEmpty() && !options.tracePath.isEmpty() && samePath(options.outputPath, options.tracePath))
-        return u"--output and --trace name one file, %1: one would overwrite the other"_s
-            .arg(QDir::toNativeSeparators(options.outputPath));
+    for (std::size_t i = 0; i < std::size(outputs); ++i)
+        for (std::size_t j = i + 1; j < std::size(outputs); ++j)
+            if (!outputs[i].second.isEmpty() && !outputs[j].second.isEmpty() &&
+                samePath(outputs[i].second, outputs[j].second))
+                return u"%1 and %2 name one file, %3: one would overwrite the other"_s.arg(
+                    QString::fromLatin1(outputs[i].first), QString::fromLatin1(outputs[j].first),
+                    QDir::toNativeSeparators(outputs[i].second));
     return QString();
 }
+
+namespace {
+
+// where and what a refused command line still reports: the summary files it names, unless they
+// name a file the run reads or another output, with the scene and the --set values read so far
+void reportRefusal(const QCommandLineParser &parser, ParsedOptions &parsed)
+{
+    SimOptions named;
+    named.scenePath = parser.positionalArguments().value(0);
+    named.outputPath = parser.value(u"output"_s);
+    named.tracePath = parser.value(u"trace"_s);
+    named.summaryJsonPath = parser.value(u"summary-json"_s);
+    named.summaryCsvPath = parser.value(u"summary-csv"_s);
+    if (parser.isSet(u"replay"_s) || !clashingPaths(named).isEmpty())
+        return;
+    parsed.summaryJsonPath = named.summaryJsonPath;
+    parsed.summaryCsvPath = named.summaryCsvPath;
+    parsed.refused.scene = named.scenePath;
+    for (const QString &argument : parser.values(u"set"_s)) {
+        QString ignored;
+        if (const auto set = parseOverride(argument, ignored))
+            parsed.refused.overrides[set->key] = set->value;
+        else if (const qsizetype equals = argument.indexOf(u'='); equals > 0)
+            parsed.refused.overrides[argument.left(equals).trimmed()] = argument.mid(equals + 1);
+    }
+    parsed.refused.exitCode = 2;
+    parsed.refused.error = parsed.error;
+}
+
+}  // namespace
 
 ParsedOptions parseSimOptions(const QStringList &arguments)
 {
@@ -281,7 +332,8 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
     parser.setApplicationDescription(
         u"Runs a Springlab scene with no window and prints a summary.\n"
         "Without --steps or --duration it runs %1 steps. Command-line settings override the file's.\n"
-        "Exit code: 0 done, 2 bad file or argument (or --render with no display), 3 the simulation blew up."_s
+        "Exit code: 0 done, 2 bad file or argument (or --render with no display), 3 the simulation blew up, "
+        "4 a replay did not end as recorded."_s
             .arg(kDefaultSteps));
     parser.addPositionalArgument(u"SCENE.json"_s, u"The scene file to run."_s);
     const QCommandLineOption help(QStringList{u"h"_s, u"help"_s}, u"Show this help."_s);
@@ -293,13 +345,17 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
         {u"steps"_s, u"Run exactly N steps."_s, u"N"_s},
         {u"time-step"_s, u"Time step in seconds, instead of the file's."_s, u"H"_s},
         {u"substeps"_s, u"Sub-steps per step, instead of the file's."_s, u"S"_s},
-        {u"integrator"_s, u"Integrator, instead of the file's: "_s + knownIntegrators() + u'.', u"NAME"_s},
+        {u"integrator"_s, u"Integrator, instead of the file's: "_s + io::knownIntegrators() + u'.', u"NAME"_s},
         {u"tolerance"_s, u"Local error per step (m, m/s) for adaptive-rk45, instead of the file's."_s, u"TOL"_s},
-        {u"contact-solver"_s, u"Contact solver, instead of the file's: "_s + knownContactSolvers() + u'.', u"NAME"_s},
+        {u"contact-solver"_s, u"Contact solver, instead of the file's: "_s + io::knownContactSolvers() + u'.', u"NAME"_s},
         {u"friction"_s, u"Kinetic Coulomb friction coefficient of every contact (0 to 10), instead of the file's; "
                         "a plane with its own keeps it."_s, u"MU"_s},
         {u"static-friction"_s, u"Static friction coefficient (0 to 10), instead of the file's (which, when the "
                                "file has none, is the kinetic one)."_s, u"MU"_s},
+        {u"set"_s, u"Change one value of the scene before the run, checked as the file's own: settings.NAME, "
+                   "or particles.NAME, springs.NAME, planes.NAME for every element, particles[I].NAME for one "
+                   "(mass, radius, stiffness, damping, restLength, ...). Repeatable; a later one wins."_s,
+         u"KEY=VALUE"_s},
         {u"output"_s, u"Write the final state as a scene file, to run on from."_s, u"FINAL.json"_s},
         {u"trace"_s, u"Write positions and velocities as CSV: step,time,particle,x,y,z,vx,vy,vz."_s, u"TRACE.csv"_s},
         {u"every"_s, u"With --trace: one set of rows every K steps (default 1), step 0 included."_s, u"K"_s},
@@ -308,6 +364,11 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
                       "under xvfb-run -a where there is none."_s, u"DIR"_s},
         {u"fps"_s, u"With --render: frames per simulated second (default 30)."_s, u"F"_s},
         {u"size"_s, u"With --render: the frames' size in pixels (default 1280x720)."_s, u"WxH"_s},
+        {u"summary-json"_s, u"Write the summary as one JSON object, also when the run blows up or its file or "
+                            "arguments are refused."_s, u"SUMMARY.json"_s},
+        {u"summary-csv"_s, u"Write the summary as one CSV row, under the header --summary-csv-header prints."_s,
+         u"ROW.csv"_s},
+        {u"summary-csv-header"_s, u"Print the CSV header of --summary-csv's rows and exit."_s},
         {u"quiet"_s, u"Print nothing but errors."_s},
         {u"replay"_s, u"The file is a session recorded in the editor (Simulation > Record Session): replay it "
                       "and check that it ends with the recorded state, bit for bit (exit 4 if not)."_s},
@@ -316,6 +377,7 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
     ParsedOptions parsed;
     if (!parser.parse(arguments)) {
         parsed.error = parser.errorText();
+        reportRefusal(parser, parsed);
         return parsed;
     }
     if (parser.isSet(help)) {
@@ -326,13 +388,42 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
         parsed.text = QCoreApplication::applicationName() + u' ' + QCoreApplication::applicationVersion() + u'\n';
         return parsed;
     }
+    if (parser.isSet(u"summary-csv-header"_s)) {
+        parsed.text = QString::fromUtf8(summaryCsvHeader());
+        return parsed;
+    }
     SimOptions options;
     if (readOptions(parser, options, parsed.error)) {
         parsed.error = clashingPaths(options);
         if (parsed.error.isEmpty())
             parsed.options = options;
     }
+    if (!parsed.options)
+        reportRefusal(parser, parsed);
     return parsed;
+}
+
+QJsonObject overridesApplied(const SimOptions &options)
+{
+    QJsonObject applied;
+    const auto name = [](std::string_view text) { return QString::fromUtf8(text.data(), qsizetype(text.size())); };
+    if (options.timeStep)
+        applied[u"settings.timeStep"_s] = *options.timeStep;
+    if (options.substeps)
+        applied[u"settings.substeps"_s] = *options.substeps;
+    if (options.integrator)
+        applied[u"settings.integrator"_s] = name(core::integratorName(*options.integrator));
+    if (options.tolerance)
+        applied[u"settings.tolerance"_s] = *options.tolerance;
+    if (options.contactSolver)
+        applied[u"settings.contactSolver"_s] = name(core::contactSolverName(*options.contactSolver));
+    if (options.friction)
+        applied[u"settings.friction"_s] = *options.friction;
+    if (options.staticFriction)
+        applied[u"settings.staticFriction"_s] = *options.staticFriction;
+    for (const SceneOverride &set : options.sets)
+        applied[set.key] = set.value;
+    return applied;
 }
 
 QString applyOverrides(const SimOptions &options, core::SceneDesc &scene)
@@ -352,6 +443,11 @@ QString applyOverrides(const SimOptions &options, core::SceneDesc &scene)
         settings.friction = *options.friction;
     if (options.staticFriction)
         settings.staticFriction = *options.staticFriction;
+
+    // then --set, in order, each checked as it is applied so that a message names the one at fault
+    for (const SceneOverride &set : options.sets)
+        if (const QString problem = applyOverride(set, scene); !problem.isEmpty())
+            return problem;
 
     // the options were checked one by one; the scene as a whole is checked once more
     if (const auto problem = core::findProblem(scene))

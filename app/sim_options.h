@@ -3,15 +3,20 @@
 // parameter table as scene files (core/parameters.h), so "--time-step 5" is refused with the
 // same words as "timeStep": 5 in a file.
 
+#include "sim_set.h"
+#include "sim_summary.h"
+
 #include "core/integrator.h"
 #include "core/scene.h"
 
+#include <QJsonObject>
 #include <QSize>
 #include <QString>
 #include <QStringList>
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 namespace app {
 
@@ -29,9 +34,12 @@ struct SimOptions {
     std::optional<core::ContactSolver> contactSolver;  // --contact-solver NAME
     std::optional<double> friction;                    // --friction MU
     std::optional<double> staticFriction;              // --static-friction MU
+    std::vector<SceneOverride> sets;  // --set KEY=VALUE, in the order given (a later one wins)
     QString outputPath;       // --output FINAL.json; empty: none
     QString tracePath;        // --trace TRACE.csv; empty: none
     std::uint64_t every = 1;  // --every K: a trace row set every K steps
+    QString summaryJsonPath;  // --summary-json SUMMARY.json; empty: none
+    QString summaryCsvPath;   // --summary-csv ROW.csv; empty: none
     QString renderDirectory;      // --render DIR: PNG frames of the run; empty: none
     double fps = 30.0;            // --fps F: frames per simulated second
     QSize frameSize{1280, 720};   // --size WxH, px
@@ -42,17 +50,27 @@ struct SimOptions {
 struct ParsedOptions {
     std::optional<SimOptions> options;  // set when the run should go ahead
     QString error;                      // bad arguments: print it and exit 2
-    QString text;                       // --help or --version: print it and exit 0
+    QString text;                       // --help, --version or --summary-csv-header: print it and exit 0
+    // bad arguments are still reported in the summary files when they were named and name no
+    // file the run reads or writes otherwise (empty: no such file)
+    QString summaryJsonPath;
+    QString summaryCsvPath;
+    RunSummary refused;  // the scene and the overrides as far as they were read, the error
 };
 
 // arguments as main() gets them, the program name first
 ParsedOptions parseSimOptions(const QStringList &arguments);
 
-// why the files options name cannot be used together (empty: they can): an output that names
-// the file read, or --output and --trace that name one file
+// why the files options name cannot be used together (empty: they can): an output (--output,
+// --trace, --summary-json, --summary-csv) that names the file read, or two outputs that name one file
 QString clashingPaths(const SimOptions &options);
 
-// the command line's settings written over the file's; empty on success, else the message
+// what the command line changes in the scene, by the keys --set names them with:
+// {"settings.timeStep": 0.001, "springs.stiffness": 500}
+QJsonObject overridesApplied(const SimOptions &options);
+
+// the command line's settings written over the file's, then each --set in turn; empty on success,
+// else the message
 QString applyOverrides(const SimOptions &options, core::SceneDesc &scene);
 
 // how many steps to run: --steps N, or round(--duration / time step), or kDefaultSteps;

@@ -53,8 +53,9 @@ case "${1:-}" in
     exec build/release/app/springlab-sim "${@:-resources/scenes/springs.json}"
     ;;
   test)
-    # ffmpeg too, so that the MP4 export is tested rather than skipped
-    install_missing "${packages[@]}" ffmpeg
+    # ffmpeg too, so that the MP4 export is tested rather than skipped, and GNU parallel for the
+    # sweep of docs/batch.md (test_sim_sweep)
+    install_missing "${packages[@]}" ffmpeg parallel
     build ci
     ctest --preset ci
     # the core's unit tests (the golden hash among them) on the kernels' other clones: the ci build

@@ -14,6 +14,7 @@
 
 #include "json_scan.h"
 #include "safe_write.h"
+#include "scene_words.h"
 
 #include "core/solver_names.h"
 #include "core/validate.h"
@@ -57,40 +58,6 @@ using namespace Qt::Literals::StringLiterals;
 constexpr QLatin1String kFormatName("springlab-scene");
 
 enum class Need { Required, Optional };
-
-QString describe(const QJsonValue &value)
-{
-    switch (value.type()) {
-    case QJsonValue::Null: return QStringLiteral("null");
-    case QJsonValue::Bool: return QStringLiteral("a boolean");
-    case QJsonValue::Double: return QStringLiteral("a number");
-    case QJsonValue::String: return QStringLiteral("a string");
-    case QJsonValue::Array: return QStringLiteral("an array");
-    case QJsonValue::Object: return QStringLiteral("an object");
-    case QJsonValue::Undefined: break;
-    }
-    return QStringLiteral("nothing");
-}
-
-QString knownIntegrators()
-{
-    QStringList names;
-    for (core::Integrator integrator : core::kIntegrators) {
-        const std::string_view name = core::integratorName(integrator);
-        names += QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
-    }
-    return names.join(QStringLiteral(", "));
-}
-
-QString knownContactSolvers()
-{
-    QStringList names;
-    for (core::ContactSolver solver : core::kContactSolvers) {
-        const std::string_view name = core::contactSolverName(solver);
-        names += QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
-    }
-    return names.join(QStringLiteral(", "));
-}
 
 // walks a parsed document into a SceneDesc, stopping at the first problem
 class Reader {
@@ -313,17 +280,16 @@ bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
         return false;
 
     // the integrator by name
-    const auto chosen = core::integratorFromName(integrator.toStdString());
+    QString unknown;
+    const auto chosen = integratorNamed(integrator, unknown);
     if (!chosen)
-        return fail(QStringLiteral("settings.integrator"),
-                    u"unknown integrator \""_s + integrator + u"\" (known: "_s + knownIntegrators() + u")"_s);
+        return fail(QStringLiteral("settings.integrator"), unknown);
     settings.integrator = *chosen;
 
     // the contact solver by name; the static coefficient only when given (else it follows friction)
-    const auto solver = core::contactSolverFromName(contactSolver.toStdString());
+    const auto solver = contactSolverNamed(contactSolver, unknown);
     if (!solver)
-        return fail(QStringLiteral("settings.contactSolver"), u"unknown contact solver \""_s + contactSolver +
-                                                                  u"\" (known: "_s + knownContactSolvers() + u")"_s);
+        return fail(QStringLiteral("settings.contactSolver"), unknown);
     settings.contactSolver = *solver;
     if (hasStaticFriction)
         settings.staticFriction = staticFriction;
