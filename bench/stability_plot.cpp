@@ -26,6 +26,7 @@ QColor colourOf(core::Integrator integrator)
     case core::Integrator::Rk4: return QColor(0xCC, 0x79, 0xA7);
     case core::Integrator::ImplicitEuler: return QColor(0xE6, 0x9F, 0x00);
     case core::Integrator::AdaptiveRk45: return QColor(0x00, 0x00, 0x00);
+    case core::Integrator::Xpbd: return QColor(0x56, 0xB4, 0xE9);
     }
     return Qt::gray;
 }

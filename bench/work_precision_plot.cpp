@@ -17,7 +17,7 @@ namespace {
 // the targets the summary table reads costs at, drawn as dashed lines
 constexpr double kTargets[] = {1e-2, 1e-4, 1e-6};
 
-enum class Marker { Circle, Square, TriangleUp, Diamond, TriangleDown, Cross };
+enum class Marker { Circle, Square, TriangleUp, Diamond, TriangleDown, Cross, Plus };
 
 struct CurveStyle {
     QColor colour;
@@ -34,6 +34,7 @@ CurveStyle styleOf(core::Integrator integrator)
     case core::Integrator::Rk4: return {QColor(0xCC, 0x79, 0xA7), Marker::Diamond};
     case core::Integrator::ImplicitEuler: return {QColor(0xE6, 0x9F, 0x00), Marker::TriangleDown};
     case core::Integrator::AdaptiveRk45: return {QColor(0x00, 0x00, 0x00), Marker::Cross};
+    case core::Integrator::Xpbd: return {QColor(0x56, 0xB4, 0xE9), Marker::Plus};
     }
     return {Qt::gray, Marker::Circle};
 }
@@ -64,12 +65,15 @@ void drawMarker(QPainter &painter, Marker marker, QPointF centre, double size)
         path.lineTo(centre.x() - 1.1 * r, centre.y() - 0.8 * r);
         path.closeSubpath();
         break;
-    case Marker::Cross: {
-        // an X drawn with the line pen, thicker so it reads as a marker
+    case Marker::Cross:
+    case Marker::Plus: {
+        // an X or a + drawn with the line pen, thicker so it reads as a marker
         const QPen pen = painter.pen();
         painter.setPen(QPen(pen.color(), 2.2));
-        painter.drawLine(centre + QPointF(-r, -r), centre + QPointF(r, r));
-        painter.drawLine(centre + QPointF(-r, r), centre + QPointF(r, -r));
+        const double a = marker == Marker::Cross ? r : 0.0;
+        const double b = marker == Marker::Cross ? r : 1.3 * r;
+        painter.drawLine(centre + QPointF(-a, -b), centre + QPointF(a, b));
+        painter.drawLine(centre + QPointF(-b, a), centre + QPointF(b, -a));
         painter.setPen(pen);
         return;
     }
@@ -206,7 +210,7 @@ QImage drawWorkPrecision(const QString &title, const std::vector<WorkPrecisionCu
         painter.drawPolyline(line);
         painter.setBrush(style.colour);
         painter.setPen(QPen(style.colour.darker(130), 1.0));
-        if (style.marker == Marker::Cross)
+        if (style.marker == Marker::Cross || style.marker == Marker::Plus)
             painter.setPen(QPen(style.colour, 1.0));
         for (const QPointF &p : line)
             drawMarker(painter, style.marker, p, 8.0);
@@ -234,7 +238,8 @@ QImage drawWorkPrecision(const QString &title, const std::vector<WorkPrecisionCu
         painter.setPen(QPen(style.colour, 2.0));
         painter.drawLine(QPointF(x, y + 9.0), QPointF(x + 34.0, y + 9.0));
         painter.setBrush(style.colour);
-        painter.setPen(style.marker == Marker::Cross ? QPen(style.colour, 1.0) : QPen(style.colour.darker(130), 1.0));
+        painter.setPen(style.marker == Marker::Cross || style.marker == Marker::Plus ? QPen(style.colour, 1.0)
+                                                                                   : QPen(style.colour.darker(130), 1.0));
         drawMarker(painter, style.marker, QPointF(x + 17.0, y + 9.0), 8.0);
         painter.setPen(Qt::black);
         const std::string_view name = core::integratorName(curve.integrator);

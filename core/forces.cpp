@@ -11,8 +11,11 @@ void addApplied(const Model &, State &state, Workspace &work)
     work.force += state.applied;
 }
 
-// all forces at the state's (x, v) into work.force; each pass runs only if the plan needs it
-void computeForces(const Model &model, State &state, Workspace &work)
+namespace {
+
+// the forces at the state's (x, v) into work.force, with or without the drag and the springs;
+// each pass runs only if the plan needs it
+void forces(const Model &model, State &state, Workspace &work, bool internal)
 {
     const StepPlan &plan = model.plan;
     Profile &profile = work.profile;
@@ -23,10 +26,22 @@ void computeForces(const Model &model, State &state, Workspace &work)
         timed(profile, Stage::Gravity, true, [&] { startWithGravity(model, state, work); });
     else
         work.force.setZero();
-    timed(profile, Stage::Drag, plan.drag, [&] { addDrag(model, state, work); });
-    timed(profile, Stage::Springs, plan.springs, [&] { addSprings(model, state, work); });
+    timed(profile, Stage::Drag, internal && plan.drag, [&] { addDrag(model, state, work); });
+    timed(profile, Stage::Springs, internal && plan.springs, [&] { addSprings(model, state, work); });
     timed(profile, Stage::Applied, state.appliedCount > 0, [&] { addApplied(model, state, work); });
     work.profile.forceEvaluations += 1;
+}
+
+}  // namespace
+
+void computeForces(const Model &model, State &state, Workspace &work)
+{
+    forces(model, state, work, true);
+}
+
+void computeExternalForces(const Model &model, State &state, Workspace &work)
+{
+    forces(model, state, work, false);
 }
 
 // accelerations of the free particles from work.force (zero for pinned ones)

@@ -104,6 +104,7 @@ bool integrate(const Model &model, State &state, Workspace &work, double h)
     case Integrator::Rk4: rk4(model, state, work, h); return false;
     case Integrator::ImplicitEuler: implicitEuler(model, state, work, h); return false;
     case Integrator::AdaptiveRk45: adaptiveRk45(model, state, work, h); return false;
+    case Integrator::Xpbd: xpbd(model, state, work, h); return false;
     }
     return false;
 }

@@ -11,6 +11,7 @@ std::string_view integratorName(Integrator integrator)
     case Integrator::Rk4: return "rk4";
     case Integrator::ImplicitEuler: return "implicit-euler";
     case Integrator::AdaptiveRk45: return "adaptive-rk45";
+    case Integrator::Xpbd: return "xpbd";
     }
     return "unknown";
 }
@@ -24,6 +25,7 @@ int integratorOrder(Integrator integrator)
     case Integrator::Rk4: return 4;
     case Integrator::ImplicitEuler: return 1;
     case Integrator::AdaptiveRk45: return 5;
+    case Integrator::Xpbd: return 1;
     }
     return 1;
 }

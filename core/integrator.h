@@ -13,12 +13,14 @@ enum class Integrator {
     Rk4,              // classic fourth-order Runge-Kutta: four force evaluations per step
     ImplicitEuler,    // backward Euler linearised once per step, conjugate-gradient solve; first order
     AdaptiveRk45,     // Dormand-Prince 5(4) with step-size control to a tolerance
+    Xpbd,             // extended position-based dynamics: springs as compliant constraints (xpbd.cpp)
 };
 
 // every integrator, in the order menus list them
 inline constexpr Integrator kIntegrators[] = {Integrator::SymplecticEuler, Integrator::ExplicitEuler,
                                               Integrator::VelocityVerlet,  Integrator::Rk4,
-                                              Integrator::ImplicitEuler,   Integrator::AdaptiveRk45};
+                                              Integrator::ImplicitEuler,   Integrator::AdaptiveRk45,
+                                              Integrator::Xpbd};
 
 // the order of accuracy of the global error (for adaptive-rk45: of the solution it keeps)
 int integratorOrder(Integrator integrator);

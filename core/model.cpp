@@ -4,6 +4,7 @@
 #include "stability.h"
 #include "state.h"
 #include "validate.h"
+#include "xpbd.h"
 
 #include <cassert>
 
@@ -131,6 +132,13 @@ void setIntegrator(Model &model, Integrator integrator)
     // block (its springs reach no further than the next block of particles)
     const bool euler = integrator == Integrator::SymplecticEuler || integrator == Integrator::ExplicitEuler;
     model.plan.subStep = euler && model.springLayout.blocks ? SubStepPath::FusedLattice : SubStepPath::Stages;
+    // xpbd's colours, only while it is the integrator (a scene that never runs it pays nothing)
+    if (integrator == Integrator::Xpbd && model.plan.springs) {
+        colourSprings(model);
+    } else {
+        model.xpbdOrder.clear();
+        model.xpbdColourStart.clear();
+    }
 }
 
 }  // namespace core

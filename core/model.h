@@ -75,6 +75,11 @@ struct Model {
     std::vector<int> springEnds;
     // the same list as the vectorised kernels walk it, and the spring pass it takes
     SpringLayout springLayout;
+    // for xpbd, set only while it is the integrator: the springs by colour, no two of a colour
+    // moving the same particle, so that each colour is solved on all threads at once with the same
+    // bits as on one; colour c is xpbdOrder[xpbdColourStart[c] .. xpbdColourStart[c + 1])
+    std::vector<int> xpbdOrder;
+    std::vector<int> xpbdColourStart;
 
     // planes n·p = offset, unit normals
     Eigen::Matrix3Xd planeNormal;

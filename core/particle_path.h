@@ -15,7 +15,7 @@
 namespace core {
 
 enum class PathShape {
-    KickDrift,  // symplectic and implicit Euler: v changes at the start, x moves with the new v
+    KickDrift,  // symplectic and implicit Euler, xpbd: v changes at the start, x moves with the new v
     DriftKick,  // explicit Euler: x moves with the old v, v changes at the end
     Hermite,    // velocity Verlet, RK4, adaptive RK45
 };
@@ -25,6 +25,7 @@ inline PathShape pathShape(Integrator integrator)
     switch (integrator) {
     case Integrator::SymplecticEuler:
     case Integrator::ImplicitEuler:
+    case Integrator::Xpbd:  // its velocity is the move it made: (x1 - x0) / h
         return PathShape::KickDrift;
     case Integrator::ExplicitEuler:
         return PathShape::DriftKick;

@@ -23,6 +23,9 @@ void addSpringsGathered(const Model &model, State &state, Workspace &work);
 void addSpringsReference(const Model &model, State &state, Workspace &work);  // springs.cpp: the plain scatter loop
 void addApplied(const Model &model, State &state, Workspace &work);           // forces.cpp: forces from outside
 void computeForces(const Model &model, State &state, Workspace &work);        // forces.cpp: all of the above
+// gravity and the applied forces alone, for xpbd, which takes the springs as constraints and the
+// drag in its kick (forces.cpp)
+void computeExternalForces(const Model &model, State &state, Workspace &work);
 void accelerations(const Model &model, const Workspace &work, Eigen::Matrix3Xd &out);  // forces.cpp: w F
 
 // advances the free particles by h with the model's integrator, which calls computeForces() as
@@ -33,6 +36,7 @@ bool integrate(const Model &model, State &state, Workspace &work, double h);
 void rk4(const Model &model, State &state, Workspace &work, double h);
 void implicitEuler(const Model &model, State &state, Workspace &work, double h);
 void adaptiveRk45(const Model &model, State &state, Workspace &work, double h);
+void xpbd(const Model &model, State &state, Workspace &work, double h);  // xpbd.cpp
 // the plan's fused path (SubStepPath::FusedLattice): the symplectic or explicit Euler sub-step of a
 // lattice, forces and update fused block by block, the same bits as computeForces() and the
 // update; returns whether every new value of the free particles is finite and bounded

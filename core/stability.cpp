@@ -61,7 +61,8 @@ double dragStepLimit(const Model &model)
     case Integrator::VelocityVerlet: return 2.0 / rate;
     case Integrator::Rk4: return 2.785 / rate;
     case Integrator::ImplicitEuler:
-    case Integrator::AdaptiveRk45: return infinity;
+    case Integrator::AdaptiveRk45:
+    case Integrator::Xpbd: return infinity;  // xpbd: the drag is an external force on its kick alone
     }
     return infinity;
 }
@@ -84,7 +85,8 @@ double StabilityLimit::maxSubStep(Integrator integrator) const
         // λ = -γ/2 ± i√(ω² - γ²/4), so h < γ/ω² (γ ≤ 2ω)
         return dampingRate / (omegaMax * omegaMax);
     case Integrator::ImplicitEuler:
-    case Integrator::AdaptiveRk45: return infinity;
+    case Integrator::AdaptiveRk45:
+    case Integrator::Xpbd: return infinity;  // springs are constraints with compliance 1/k: no explicit limit
     }
     return infinity;
 }

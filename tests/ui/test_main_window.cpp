@@ -496,8 +496,9 @@ void TestMainWindow::integratorChoiceReachesTheWorker()
     ui::ParameterRow *tolerance = m_window->parametersPanel()->row(QStringLiteral("tolerance"));
     QVERIFY(!tolerance->isEnabled());
 
-    // the adaptive one, and its tolerance typed in
+    // the adaptive one (the one before xpbd, the last), and its tolerance typed in
     QTest::keyClick(box, Qt::Key_End);
+    QTest::keyClick(box, Qt::Key_Up);
     QVERIFY(tolerance->isEnabled());
     tolerance->spinBox()->setFocus();
     tolerance->spinBox()->selectAll();
@@ -511,6 +512,8 @@ void TestMainWindow::integratorChoiceReachesTheWorker()
     m_window->viewport()->setFocus();
     press(Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(settledFrame(controller())->model->tolerance, 1e-6);
+    press(Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(settledFrame(controller())->model->integrator, core::Integrator::Xpbd);
     press(Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(settledFrame(controller())->model->integrator, core::Integrator::Rk4);
     QCOMPARE(box->currentText(), QStringLiteral("rk4"));

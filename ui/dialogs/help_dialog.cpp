@@ -87,7 +87,7 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
     addSection(tr("Accuracy"));
     addEntry(tr("Parameters › Integrator"),
              tr("How each sub-step is integrated: symplectic-euler, explicit-euler, velocity-verlet, rk4, "
-                "implicit-euler or adaptive-rk45 (undoable)"));
+                "implicit-euler, adaptive-rk45 or xpbd (springs as constraints, for stiff materials) (undoable)"));
     addEntry(tr("Parameters › Tolerance"), tr("The local error per step adaptive-rk45 keeps under (only for it)"));
     addEntry(tr("Status bar: local error ≈"),
              tr("The local position error of one step of the integrator, by step doubling every few steps"));

@@ -102,6 +102,9 @@ QString integratorTip(core::Integrator integrator)
         return ParametersPanel::tr("First order, stable at any step but damps; a linear solve per step");
     case core::Integrator::AdaptiveRk45:
         return ParametersPanel::tr("Fifth order, shortens its steps to keep the local error under the tolerance");
+    case core::Integrator::Xpbd:
+        return ParametersPanel::tr("Springs as constraints with compliance 1/k: no stability limit, first order; "
+                                   "use many sub-steps");
     }
     return QString();
 }

@@ -170,6 +170,8 @@ StabilityNote stabilityNote(double maxSubStep, double subStep, double timeStep, 
     const std::string_view name = core::integratorName(integrator);
     const QString integratorText = QString::fromUtf8(name.data(), qsizetype(name.size()));
     if (std::isinf(maxSubStep)) {
+        if (integrator == core::Integrator::Xpbd)
+            return {tr("xpbd has no explicit stability limit: its springs are constraints"), StabilityLevel::Safe};
         const bool implicit = integrator == core::Integrator::ImplicitEuler || integrator == core::Integrator::AdaptiveRk45;
         return {implicit ? tr("%1 is stable at any time step").arg(integratorText)
                          : tr("No springs: no stability limit on the time step"),
