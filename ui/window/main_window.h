@@ -28,6 +28,8 @@ struct SceneDesc;
 
 namespace ui {
 
+class StatusBar;
+
 class AccuracyDialog;
 class DocumentFiles;
 class EditTools;
@@ -212,7 +214,7 @@ private:
     QMenu *m_viewMenu = nullptr;
 
     // status bar fields
-    QLabel *m_warningLabel = nullptr;
+    StatusBar *m_statusBar = nullptr;
     QLabel *m_steerLabel = nullptr;
     QLabel *m_timeLabel = nullptr;
     QLabel *m_rateLabel = nullptr;
