@@ -547,6 +547,7 @@ void MainWindow::frameChanged()
     m_viewport->setSnapshot(frame->snapshot);
     showTimeline(*frame);
     m_plots->addFrame(*frame);
+    m_inspector->showSnapshot(frame->snapshot);
     if (m_frameAllAfter != 0 && frame->appliedMessage >= m_frameAllAfter) {
         m_frameAllAfter = 0;
         m_viewport->frameAll();
