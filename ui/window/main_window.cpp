@@ -503,7 +503,13 @@ void MainWindow::accuracyPlanned(const AccuracyPlanReply &reply)
     if (reply.request != m_accuracyRequest || !reply.plan)
         return;
     m_accuracyRequest = 0;
-    applyPlan(*reply.plan);
+    if (m_applyPlan) {
+        applyPlan(*reply.plan);
+        return;
+    }
+    // a preview: shown, and the scene left as it is
+    if (m_accuracy)
+        m_accuracy->showPlan(*reply.plan, planText(*reply.plan) + tr(" (preview: nothing was changed)"));
 }
 
 // so has the state asked for by Use Current State as Initial
@@ -645,16 +651,18 @@ void MainWindow::showAccuracy()
     if (!m_accuracy) {
         m_accuracy = new AccuracyDialog(this);
         connect(m_accuracy, &AccuracyDialog::planRequested, this, &MainWindow::planAccuracy);
+        connect(m_accuracy, &AccuracyDialog::adaptiveRequested, this, &MainWindow::useAdaptive);
     }
     m_accuracy->show();
     m_accuracy->raise();
     m_accuracy->activateWindow();
 }
 
-void MainWindow::planAccuracy(double tolerance)
+void MainWindow::planAccuracy(double tolerance, bool apply)
 {
     // the worker plans from its own state; the answer comes back as a reply
     m_accuracyRequest = m_controller->planAccuracy(tolerance);
+    m_applyPlan = apply;
     if (m_accuracy)
         m_accuracy->setPlanning(true);
 }
@@ -682,6 +690,24 @@ void MainWindow::applyPlan(const core::AccuracyPlan &plan)
     statusBar()->showMessage(summary, kPlanMessageMs);
     if (m_accuracy)
         m_accuracy->showPlan(plan, summary);
+}
+
+void MainWindow::useAdaptive(double tolerance)
+{
+    // adaptive-rk45 at the tolerance typed, both as one step of undo
+    core::Settings settings = m_document->scene().settings;
+    QString summary = tr("adaptive-rk45 keeping each step's local error under %1 m/step").arg(scientificText(tolerance));
+    if (settings.integrator == core::Integrator::AdaptiveRk45 && settings.tolerance == tolerance) {
+        summary += tr("; already in use");
+    } else {
+        settings.integrator = core::Integrator::AdaptiveRk45;
+        settings.tolerance = tolerance;
+        m_document->undoStack()->push(new SettingsCommand(
+            *m_document, tr("Accuracy: adaptive-rk45 at %1 m/step").arg(scientificText(tolerance)), QString(), settings));
+    }
+    statusBar()->showMessage(summary, kPlanMessageMs);
+    if (m_accuracy)
+        m_accuracy->showSummary(summary);
 }
 
 void MainWindow::setRecording(bool on)
