@@ -62,6 +62,7 @@ private slots:
     void deleteRemovesParticlesAndTheirSprings();
     void clickBeforeThePictureCatchesUpPicksNothingGone();
     void copyPasteAndDuplicate();
+    void nothingGrowsPastTheParticleLimit();
     void dragWhilePausedMovesTheSelectionAsOneStep();
     void dragWhileRunningPullsTheParticleAndLetsGo();
     void buildTheHandoutNetByMouse();
@@ -413,6 +414,53 @@ void TestEditing::copyPasteAndDuplicate()
     key(Qt::Key_V, Qt::ControlModifier);
     QCOMPARE(scene().particles.size(), std::size_t(2));
     QCOMPARE(scene().springs.size(), std::size_t(1));
+}
+
+void TestEditing::nothingGrowsPastTheParticleLimit()
+{
+    // a scene at the editor's limit, in a plane below the view: duplicate, paste and add particle
+    // are each refused with a message naming the limit, and leave the scene, the undo history, the
+    // selection and the clipboard as they were
+    core::SceneDesc s = stillScene();
+    const int side = 500;
+    for (int i = 0; i < int(ui::kMaxSceneParticles); ++i)
+        s.particles.push_back(particle({0.01 * (i % side) - 2.5, -1.0, 0.01 * (i / side) - 2.5}, 0.004));
+    open(s);
+    const int commands = undo()->count();
+    key(Qt::Key_A, Qt::ControlModifier);
+    key(Qt::Key_C, Qt::ControlModifier);
+    const ui::Selection all = tools()->selection();
+    QCOMPARE(all.particles.size(), ui::kMaxSceneParticles);
+
+    const QString limit = QString::number(ui::kMaxSceneParticles);
+    key(Qt::Key_D, Qt::ControlModifier);
+    QVERIFY2(m_window->statusWarning().startsWith(QStringLiteral("Not duplicated")), qPrintable(m_window->statusWarning()));
+    QVERIFY2(m_window->statusWarning().contains(limit), qPrintable(m_window->statusWarning()));
+    QVERIFY(scene() == s);
+    QCOMPARE(undo()->count(), commands);
+    QVERIFY(tools()->selection() == all);
+
+    key(Qt::Key_V, Qt::ControlModifier);
+    QVERIFY2(m_window->statusWarning().startsWith(QStringLiteral("Not pasted")), qPrintable(m_window->statusWarning()));
+    QVERIFY(m_window->statusWarning().contains(limit));
+    QVERIFY(scene() == s);
+    QCOMPARE(undo()->count(), commands);
+
+    key(Qt::Key_Escape);
+    key(Qt::Key_2);
+    QCOMPARE(tools()->tool(), ui::Tool::AddParticle);
+    click(pixelOf({0.0, 0.0, 0.0}));
+    QVERIFY2(m_window->statusWarning().startsWith(QStringLiteral("Not added")), qPrintable(m_window->statusWarning()));
+    QVERIFY(m_window->statusWarning().contains(limit));
+    QVERIFY(scene() == s);
+    QCOMPARE(undo()->count(), commands);
+
+    // one fewer, and the particle is added
+    s.particles.pop_back();
+    open(s);
+    key(Qt::Key_2);
+    click(pixelOf({0.0, 0.0, 0.0}));
+    QCOMPARE(scene().particles.size(), ui::kMaxSceneParticles);
 }
 
 void TestEditing::dragWhilePausedMovesTheSelectionAsOneStep()

@@ -205,6 +205,18 @@ private slots:
         QCOMPARE(scene.particles[1].position, Eigen::Vector3d(1.0, 0.0, 0.0));
     }
 
+    void particleLimitCountsTheWholeScene()
+    {
+        // the generators' limit, for the scene as a whole
+        QCOMPARE(ui::kMaxSceneParticles, std::size_t(core::kMaxGeneratedParticles));
+        core::SceneDesc scene;
+        scene.particles.resize(ui::kMaxSceneParticles - 10);
+        QVERIFY(!ui::particlesPastLimit(scene, 10));
+        QCOMPARE(ui::particlesPastLimit(scene, 11), std::optional<std::size_t>(ui::kMaxSceneParticles + 1));
+        scene.particles.resize(ui::kMaxSceneParticles);
+        QCOMPARE(ui::particlesPastLimit(scene, ui::kMaxSceneParticles), std::optional<std::size_t>(2 * ui::kMaxSceneParticles));
+    }
+
     void gridSnapping()
     {
         QVERIFY((ui::snapToGrid({0.26, -0.04, 1.0}, 0.1) - Eigen::Vector3d(0.3, 0.0, 1.0)).norm() < 1e-12);

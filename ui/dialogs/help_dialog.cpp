@@ -15,7 +15,10 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
     setWindowTitle(tr("Keyboard and mouse"));
     m_table->setHorizontalHeaderLabels({tr("Keys"), tr("What they do")});
     m_table->verticalHeader()->hide();
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    // the keys as wide as their longest, kept so whenever the font changes (a desktop's font or
+    // scale applied after the dialog was built), and the descriptions wrapped to what is left
+    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
     m_table->setShowGrid(false);
@@ -135,11 +138,11 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
     addEntry(tr("Plots: lost since reset"),
              tr("The total energy at the last reset less the total now: what damping, drag and inelastic contacts "
                 "took, and also the integrator's own drift and work done by the mouse, the steering or edits"));
-    addEntry(tr("Plots: Export PNG…, Export CSV… (or right-click the plot)"),
-             tr("Save the plot shown as an image, or its samples as CSV: step, time, one column per curve"));
+    addEntry(tr("Plots: Export PNG…, Export CSV…"),
+             tr("Save the plot shown as an image, or its samples as CSV: step, time, one column per curve (also on "
+                "a right-click on the plot)"));
 
-    // keys as wide as they need, descriptions wrapped to what is left
-    m_table->resizeColumnToContents(0);
+    // rows as tall as their wrapped descriptions
     connect(m_table->horizontalHeader(), &QHeaderView::sectionResized, m_table, &QTableWidget::resizeRowsToContents);
 
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);

@@ -51,6 +51,14 @@ void Selection::clamp(const core::SceneDesc &scene)
     drop(springs, scene.springs.size());
 }
 
+std::optional<std::size_t> particlesPastLimit(const core::SceneDesc &scene, std::size_t added)
+{
+    const std::size_t total = scene.particles.size() + added;
+    if (total > kMaxSceneParticles)
+        return total;
+    return std::nullopt;
+}
+
 int addParticle(core::SceneDesc &scene, const core::ParticleDesc &particle)
 {
     scene.particles.push_back(particle);

@@ -4,9 +4,12 @@
 // (SceneCommand, scene_commands.h). Particle indices refer to scene.particles; functions that
 // remove or add particles keep the springs and the steerable index pointing at the same particles.
 
+#include "core/generators.h"
 #include "core/scene.h"
 
 #include <Eigen/Core>
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace ui {
@@ -36,6 +39,14 @@ struct Fragment {
     std::vector<core::SpringDesc> springs;  // indices into particles
     bool empty() const { return particles.empty(); }
 };
+
+// the most particles a scene may grow to in the editor, by Generate, Duplicate, Paste or Add
+// Particle: the generators' limit, so that one number holds everywhere. A scene file with more
+// still opens (core/io has its own, larger limit for files written by springlab-sim and the
+// benchmarks), but the editor adds nothing to it.
+inline constexpr std::size_t kMaxSceneParticles = core::kMaxGeneratedParticles;
+// the particles the scene would have with `added` more, when that is past kMaxSceneParticles
+std::optional<std::size_t> particlesPastLimit(const core::SceneDesc &scene, std::size_t added);
 
 // appends a particle; returns its index
 int addParticle(core::SceneDesc &scene, const core::ParticleDesc &particle);

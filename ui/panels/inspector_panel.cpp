@@ -7,6 +7,8 @@
 #include "ui/document/scene_document.h"
 #include "ui/document/scene_edits.h"
 
+#include "core/snapshot.h"
+
 #include <QCheckBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -140,7 +142,7 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
     auto *particleForm = new QFormLayout(m_particlesGroup);
     particleForm->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
     const QString initialTip = tr("The scene's initial conditions, as saved in its file: the run starts from them "
-                                  "(Reset returns to them); the running simulation's state is not shown here");
+                                  "(Reset returns to them); the running simulation's state is the Current row");
     QHBoxLayout *vectorRow = nullptr;
     for (std::size_t f = 0; f < std::size(kParticleFields); ++f) {
         const ParticleField &field = kParticleFields[f];
@@ -158,7 +160,8 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
         }
         if (field.axis == 0) {
             vectorRow = new QHBoxLayout;
-            const QString name = field.vector == &core::ParticleDesc::position ? tr("Position") : tr("Velocity");
+            const QString name =
+                field.vector == &core::ParticleDesc::position ? tr("Initial position") : tr("Initial velocity");
             particleForm->addRow(withUnit(name, unit), vectorRow);
         }
         vectorRow->addWidget(box);
@@ -168,6 +171,27 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
     m_pinned->setToolTip(tr("A pinned particle never moves (and starts at rest)"));
     // pinned sits after the radius, before the vectors
     particleForm->insertRow(2, QString(), m_pinned);
+    // the run's current position and velocity, read-only, after the initial ones
+    const QString currentTip = tr("The running simulation's, at the time the status bar shows: it changes as "
+                                  "the run goes on and is not for editing (the initial conditions above are)");
+    for (std::size_t c = 0; c < m_currentFields.size(); ++c) {
+        const bool position = c < 3;
+        const char axis = "xyz"[c % 3];
+        auto *value = new QLabel(m_particlesGroup);
+        value->setObjectName(QStringLiteral("inspector-current-%1.%2")
+                                 .arg(position ? QStringLiteral("position") : QStringLiteral("velocity"))
+                                 .arg(QLatin1Char(axis)));
+        value->setToolTip(currentTip);
+        value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        m_currentFields[c] = value;
+        if (c % 3 == 0) {
+            vectorRow = new QHBoxLayout;
+            particleForm->addRow(withUnit(position ? tr("Current position") : tr("Current velocity"),
+                                          unitOf(position ? core::Parameter::Coordinate : core::Parameter::Speed)),
+                                 vectorRow);
+        }
+        vectorRow->addWidget(value, 1);
+    }
     connect(m_pinned, &QCheckBox::clicked, this, &InspectorPanel::pinSelection);
     layout->addWidget(m_particlesGroup);
 
@@ -248,6 +272,42 @@ InspectorSpinBox *InspectorPanel::springField(const QString &key) const
     return nullptr;
 }
 
+QLabel *InspectorPanel::currentField(const QString &key) const
+{
+    for (QLabel *value : m_currentFields)
+        if (value->objectName() == QStringLiteral("inspector-current-") + key)
+            return value;
+    return nullptr;
+}
+
+void InspectorPanel::showSnapshot(std::shared_ptr<const core::Snapshot> snapshot)
+{
+    m_snapshot = std::move(snapshot);
+    refreshCurrent();
+}
+
+void InspectorPanel::refreshCurrent()
+{
+    // the selected particles' values in the latest snapshot; a dash until it has them (none yet,
+    // or the worker has not caught up with an edit that added particles)
+    if (m_particlesGroup->isHidden())
+        return;
+    const std::vector<std::size_t> particles =
+        present(m_tools->selection().particles, m_document->scene().particles.size());
+    const core::Snapshot *snapshot = m_snapshot.get();
+    const bool known = snapshot && !particles.empty() && snapshot->particleCount() == int(m_document->scene().particles.size());
+    for (std::size_t c = 0; c < m_currentFields.size(); ++c) {
+        if (!known) {
+            m_currentFields[c]->setText(QStringLiteral("—"));
+            continue;
+        }
+        const std::vector<float> &values = c < 3 ? snapshot->positions : snapshot->velocities;
+        const std::optional<double> shared =
+            sharedValue(particles, [&](std::size_t i) { return double(values[3 * i + c % 3]); });
+        m_currentFields[c]->setText(shared ? QString::number(*shared, 'g', 6) : tr("mixed"));
+    }
+}
+
 QString InspectorPanel::message() const
 {
     return m_message->isHidden() ? QString() : m_message->text();
@@ -291,6 +351,7 @@ void InspectorPanel::refresh()
         } else {
             m_pinned->setCheckState(Qt::PartiallyChecked);
         }
+        refreshCurrent();
     }
 
     // springs: the same, and which particles they join

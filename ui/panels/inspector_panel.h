@@ -3,18 +3,26 @@
 // pinned, position and velocity; springs show stiffness, damping, rest length and the particles
 // they join; the scene's planes are listed below (InspectorPlanes). With several items selected a
 // field edits all of them; where their values differ it shows "mixed" (a partly checked box for
-// pinned). Positions and velocities are the scene's initial conditions, not the running state.
+// pinned). The particles' position and velocity are shown twice: the running simulation's current
+// ones (read-only, from the latest snapshot the window receives, at its frame rate; the panel never
+// reads the worker's state) and the scene's initial conditions (editable; the run starts from them).
 // Every change is one undo command on the document (InspectorEdits); a value the parameter table
 // does not allow is refused with a message and never reaches the scene. The panel follows the
 // document and the selection: undo, redo or another tool's edit shows at once, without an edit.
 
 #include <QString>
 #include <QWidget>
+#include <array>
+#include <memory>
 #include <vector>
 
 class QCheckBox;
 class QGroupBox;
 class QLabel;
+
+namespace core {
+struct Snapshot;
+}
 
 namespace ui {
 
@@ -44,6 +52,12 @@ public:
     QGroupBox *springsGroup() const { return m_springsGroup; }
     InspectorPlanes *planes() const { return m_planes; }
 
+    // the running simulation's current value of the selection, read-only, by key: "position.x" ..
+    // "position.z", "velocity.x" .. "velocity.z"; "mixed" where the selected particles differ
+    QLabel *currentField(const QString &key) const;
+    // the latest snapshot of the run: the current values follow it (null: none yet)
+    void showSnapshot(std::shared_ptr<const core::Snapshot> snapshot);
+
     // the latest refusal, empty when the latest change was accepted
     QString message() const;
 
@@ -53,6 +67,7 @@ signals:
 
 private:
     void refresh();
+    void refreshCurrent();
     void showRefusal(const QString &message);
     void editParticles(std::size_t field, double value, bool step);
     void editSprings(std::size_t field, double value, bool step);
@@ -66,6 +81,8 @@ private:
     QGroupBox *m_springsGroup = nullptr;
     std::vector<InspectorSpinBox *> m_particleFields;  // in kParticleFields order
     std::vector<InspectorSpinBox *> m_springFields;    // in kSpringFields order
+    std::array<QLabel *, 6> m_currentFields{};  // position x, y, z, then velocity x, y, z
+    std::shared_ptr<const core::Snapshot> m_snapshot;
     QCheckBox *m_pinned = nullptr;
     QLabel *m_springEnds = nullptr;
     InspectorPlanes *m_planes = nullptr;

@@ -1,5 +1,7 @@
 #include "status_text.h"
 
+#include "ui/document/scene_edits.h"
+
 #include "core/parameters.h"
 #include "core/stability.h"
 
@@ -136,6 +138,14 @@ QString selectionText(std::size_t particles, std::size_t springs)
     if (parts.isEmpty())
         return tr("Nothing selected");
     return parts.join(tr(" and ")) + tr(" selected");
+}
+
+QString particleLimitText(const QString &notDone, std::size_t total)
+{
+    return tr("%1: the scene would have %2 particles, more than the %3 the editor allows; nothing was changed")
+        .arg(notDone)
+        .arg(total)
+        .arg(kMaxSceneParticles);
 }
 
 QString planText(const core::AccuracyPlan &plan)

@@ -40,6 +40,10 @@ QString driftText(const core::Energies &initial, double current);
 // "121 particles and 220 springs selected", "1 particle selected", "Nothing selected"
 QString selectionText(std::size_t particles, std::size_t springs);
 
+// why an edit that would add particles past the editor's limit was refused: "Not duplicated: the
+// scene would have 400000 particles, more than the 200000 the editor allows; nothing was changed"
+QString particleLimitText(const QString &notDone, std::size_t total);
+
 // what the planner picked and why: "rk4 with 3 substeps: ≈ 2.1e-7 m/step at 0.8 ms per simulated
 // second, the cheapest of 4 integrators that meet 1e-6 m/step"; or why nothing was picked
 QString planText(const core::AccuracyPlan &plan);

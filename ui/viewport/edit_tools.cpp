@@ -307,6 +307,8 @@ bool EditTools::press(QMouseEvent *event)
             emit message(tr("No place under the cursor: turn the view toward the ground"));
             return true;
         }
+        if (!roomFor(1, tr("Not added")))
+            return true;
         core::ParticleDesc added;
         added.position = *point;
         added.mass = m_defaults.mass;
@@ -345,7 +347,7 @@ bool EditTools::press(QMouseEvent *event)
         }
         const int a = m_springStart;
         auto edited = std::make_shared<core::SceneDesc>(scene);
-        const int spring = addSpring(*edited, a, particle, m_defaults.stiffness, m_defaults.damping);
+        const int spring = ui::addSpring(*edited, a, particle, m_defaults.stiffness, m_defaults.damping);
         m_springStart = -1;
         if (spring < 0) {
             emit message(tr("Particles %1 and %2 are already joined").arg(a).arg(particle));
@@ -481,10 +483,18 @@ Eigen::Vector3d EditTools::copyOffset(const Fragment &fragment) const
     return {highest - lowest + widest, 0.0, 0.0};
 }
 
+bool EditTools::roomFor(std::size_t added, const QString &notDone)
+{
+    const std::optional<std::size_t> total = particlesPastLimit(m_document->scene(), added);
+    if (total)
+        emit refused(particleLimitText(notDone, *total));
+    return !total;
+}
+
 void EditTools::duplicateSelection()
 {
     const Fragment fragment = copyItems(m_document->scene(), m_selection);
-    if (fragment.empty())
+    if (fragment.empty() || !roomFor(fragment.particles.size(), tr("Not duplicated")))
         return;
     Selection added;
     apply(tr("Duplicate"), [&](core::SceneDesc &s) { added = pasteFragment(s, fragment, copyOffset(fragment)); });
@@ -502,7 +512,7 @@ void EditTools::copySelection()
 
 void EditTools::paste()
 {
-    if (m_clipboard.empty())
+    if (m_clipboard.empty() || !roomFor(m_clipboard.particles.size(), tr("Not pasted")))
         return;
     // into the same scene beside the original; into another scene where it was
     const bool besideOriginal = [&] {

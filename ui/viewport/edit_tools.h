@@ -93,6 +93,8 @@ signals:
     void toolChanged(ui::Tool tool);
     // a line for the status bar: what the tool did or waits for
     void message(const QString &text);
+    // an edit was refused (adding particles past kMaxSceneParticles): why, for the warning line
+    void refused(const QString &text);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -114,6 +116,9 @@ private:
     // the particle or spring under the pixel, as an index into the document's scene (-1: none)
     int particleUnder(const QPointF &pixel) const;
     int springUnder(const QPointF &pixel) const;
+    // false, with the reason emitted, when `added` more particles would take the scene past
+    // kMaxSceneParticles; notDone names the edit: "Not duplicated"
+    bool roomFor(std::size_t added, const QString &notDone);
     // how far a pasted or duplicated copy is moved so that it sits beside the original
     Eigen::Vector3d copyOffset(const Fragment &fragment) const;
 

@@ -19,6 +19,7 @@
 #include "session/session_file.h"
 #include "ui/simulation/simulation_controller.h"
 #include "ui/panels/status_text.h"
+#include "status_bar.h"
 #include "ui/viewport/viewport.h"
 
 #include "core/accuracy_planner.h"
@@ -75,6 +76,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_viewport->setObjectName(QStringLiteral("viewport"));
     m_viewport->setFocusPolicy(Qt::StrongFocus);
     m_viewport->setMinimumSize(320, 240);
+    setStatusBar(m_statusBar = new StatusBar(this));
 
     // File › Export, writing where screenshots go
     m_exporter = new Exporter(*m_document, *m_controller, *m_viewport, m_prompts,
@@ -347,35 +349,20 @@ QAction *MainWindow::addHiddenDock(QDockWidget *dock, Qt::DockWidgetArea area, c
 
 void MainWindow::createStatusBar()
 {
-    // the latest warning on the left, the figures of the run on the right
-    auto label = [this](const char *name, int minimumWidth) {
-        auto *field = new QLabel(this);
-        field->setObjectName(QString::fromLatin1(name));
-        field->setMinimumWidth(minimumWidth);
-        return field;
-    };
-    m_warningLabel = label("statusWarning", 0);
-    m_steerLabel = label("statusSteer", 0);
-    m_timeLabel = label("statusTime", 100);
-    m_rateLabel = label("statusRate", 80);
-    m_stepsLabel = label("statusSteps", 90);
-    m_energyLabel = label("statusEnergy", 110);
-    m_errorLabel = label("statusError", 150);
-    m_driftLabel = label("statusDrift", 90);
-    m_timeLabel->setToolTip(tr("Simulated time"));
-    m_rateLabel->setToolTip(tr("Simulated seconds per second of wall-clock time"));
-    m_stepsLabel->setToolTip(tr("Time steps computed per second of wall-clock time"));
-    m_energyLabel->setToolTip(tr("Total energy: kinetic + gravitational + spring"));
-    m_driftLabel->setToolTip(tr("Change of the total energy since the last reset or scene load, relative to it "
-                                "(in joules when it is about zero)"));
-    statusBar()->addWidget(m_warningLabel, 1);
-    statusBar()->addPermanentWidget(m_steerLabel);
-    statusBar()->addPermanentWidget(m_timeLabel);
-    statusBar()->addPermanentWidget(m_rateLabel);
-    statusBar()->addPermanentWidget(m_stepsLabel);
-    statusBar()->addPermanentWidget(m_energyLabel);
-    statusBar()->addPermanentWidget(m_driftLabel);
-    statusBar()->addPermanentWidget(m_errorLabel);
+    // the passing message or the latest warning on the left (StatusBar), the figures of the run
+    // on the right, each as wide as its text
+    m_steerLabel = m_statusBar->addFigure("statusSteer", QString(), tr("The push on the steerable particle (arrow keys)"));
+    m_timeLabel = m_statusBar->addFigure("statusTime", timeText(100.0), tr("Simulated time"));
+    m_rateLabel = m_statusBar->addFigure("statusRate", rateText(true, 1.0),
+                                         tr("Simulated seconds per second of wall-clock time"));
+    m_stepsLabel = m_statusBar->addFigure("statusSteps", stepsText(true, 10000.0),
+                                          tr("Time steps computed per second of wall-clock time"));
+    m_energyLabel = m_statusBar->addFigure("statusEnergy", energyText(-123.456),
+                                           tr("Total energy: kinetic + gravitational + spring"));
+    m_driftLabel = m_statusBar->addFigure("statusDrift", tr("ΔE = +0.1 %"),
+                                          tr("Change of the total energy since the last reset or scene load, "
+                                             "relative to it (in joules when it is about zero)"));
+    m_errorLabel = m_statusBar->addFigure("statusError", localErrorText(1e-6), QString());
     m_steerLabel->hide();
 }
 
@@ -449,7 +436,7 @@ QString MainWindow::statusRate() const
 
 QString MainWindow::statusWarning() const
 {
-    return m_warningLabel->text();
+    return m_statusBar->warning();
 }
 
 QString MainWindow::statusError() const
@@ -495,7 +482,7 @@ void MainWindow::sceneChanged(SceneChange change)
     if (change == SceneChange::Replace) {
         // a new scene: fresh steering and no old warning
         m_steering = Steering{};
-        m_warningLabel->clear();
+        m_statusBar->setWarning(QString());
         // a plan still awaited was made for the old scene: drop it
         if (m_accuracyRequest != 0 && m_accuracy)
             m_accuracy->showPlan(core::AccuracyPlan{}, tr("Another scene was opened; plan again"));
@@ -516,7 +503,13 @@ void MainWindow::accuracyPlanned(const AccuracyPlanReply &reply)
     if (reply.request != m_accuracyRequest || !reply.plan)
         return;
     m_accuracyRequest = 0;
-    applyPlan(*reply.plan);
+    if (m_applyPlan) {
+        applyPlan(*reply.plan);
+        return;
+    }
+    // a preview: shown, and the scene left as it is
+    if (m_accuracy)
+        m_accuracy->showPlan(*reply.plan, planText(*reply.plan) + tr(" (preview: nothing was changed)"));
 }
 
 // so has the state asked for by Use Current State as Initial
@@ -550,7 +543,7 @@ void MainWindow::frameChanged()
     const bool tooFast = !frame->pairSpeedWarning.empty();
     if (tooFast && !m_pairSpeedWarned)
         showWarning(QString::fromStdString(frame->pairSpeedWarning));
-    else if (!tooFast && m_pairSpeedWarned && m_warningLabel->text() == m_pairSpeedWarning)
+    else if (!tooFast && m_pairSpeedWarned && m_statusBar->warning() == m_pairSpeedWarning)
         clearWarning();  // no longer true
     if (tooFast)
         m_pairSpeedWarning = QString::fromStdString(frame->pairSpeedWarning);
@@ -560,6 +553,7 @@ void MainWindow::frameChanged()
     m_viewport->setSnapshot(frame->snapshot);
     showTimeline(*frame);
     m_plots->addFrame(*frame);
+    m_inspector->showSnapshot(frame->snapshot);
     if (m_frameAllAfter != 0 && frame->appliedMessage >= m_frameAllAfter) {
         m_frameAllAfter = 0;
         m_viewport->frameAll();
@@ -587,16 +581,16 @@ void MainWindow::runningChanged(bool running)
 
 void MainWindow::showWarning(const QString &message)
 {
-    m_warningLabel->setText(message);
-    m_warningLabel->setToolTip(message);
+    // a new warning is seen at once, not after a passing message
+    m_statusBar->clearMessage();
+    m_statusBar->setWarning(message);
 }
 
 void MainWindow::clearWarning()
 {
-    if (m_warningLabel->text() == m_pairSpeedWarning)
+    if (m_statusBar->warning() == m_pairSpeedWarning)
         m_pairSpeedWarned = false;
-    m_warningLabel->clear();
-    m_warningLabel->setToolTip(QString());
+    m_statusBar->setWarning(QString());
 }
 
 void MainWindow::updateTitle()
@@ -657,16 +651,18 @@ void MainWindow::showAccuracy()
     if (!m_accuracy) {
         m_accuracy = new AccuracyDialog(this);
         connect(m_accuracy, &AccuracyDialog::planRequested, this, &MainWindow::planAccuracy);
+        connect(m_accuracy, &AccuracyDialog::adaptiveRequested, this, &MainWindow::useAdaptive);
     }
     m_accuracy->show();
     m_accuracy->raise();
     m_accuracy->activateWindow();
 }
 
-void MainWindow::planAccuracy(double tolerance)
+void MainWindow::planAccuracy(double tolerance, bool apply)
 {
     // the worker plans from its own state; the answer comes back as a reply
     m_accuracyRequest = m_controller->planAccuracy(tolerance);
+    m_applyPlan = apply;
     if (m_accuracy)
         m_accuracy->setPlanning(true);
 }
@@ -694,6 +690,24 @@ void MainWindow::applyPlan(const core::AccuracyPlan &plan)
     statusBar()->showMessage(summary, kPlanMessageMs);
     if (m_accuracy)
         m_accuracy->showPlan(plan, summary);
+}
+
+void MainWindow::useAdaptive(double tolerance)
+{
+    // adaptive-rk45 at the tolerance typed, both as one step of undo
+    core::Settings settings = m_document->scene().settings;
+    QString summary = tr("adaptive-rk45 keeping each step's local error under %1 m/step").arg(scientificText(tolerance));
+    if (settings.integrator == core::Integrator::AdaptiveRk45 && settings.tolerance == tolerance) {
+        summary += tr("; already in use");
+    } else {
+        settings.integrator = core::Integrator::AdaptiveRk45;
+        settings.tolerance = tolerance;
+        m_document->undoStack()->push(new SettingsCommand(
+            *m_document, tr("Accuracy: adaptive-rk45 at %1 m/step").arg(scientificText(tolerance)), QString(), settings));
+    }
+    statusBar()->showMessage(summary, kPlanMessageMs);
+    if (m_accuracy)
+        m_accuracy->showSummary(summary);
 }
 
 void MainWindow::setRecording(bool on)

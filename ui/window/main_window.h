@@ -28,6 +28,8 @@ struct SceneDesc;
 
 namespace ui {
 
+class StatusBar;
+
 class AccuracyDialog;
 class DocumentFiles;
 class EditTools;
@@ -161,8 +163,9 @@ private:
     void showAbout();
     void toggleCollisions(bool on);
     void showAccuracy();
-    void planAccuracy(double tolerance);
+    void planAccuracy(double tolerance, bool apply);
     void applyPlan(const core::AccuracyPlan &plan);
+    void useAdaptive(double tolerance);
     void steer(int turn, int change);
     void showGenerate();
     void addGenerated();
@@ -188,6 +191,7 @@ private:
     AccuracyDialog *m_accuracy = nullptr;
     GenerateDialog *m_generate = nullptr;
     std::uint64_t m_accuracyRequest = 0;  // the plan awaited from the worker; 0: none
+    bool m_applyPlan = true;               // whether that plan's pick is applied or only shown
     QString m_screenshotDirectory;
     Exporter *m_exporter = nullptr;
     Steering m_steering;
@@ -212,7 +216,7 @@ private:
     QMenu *m_viewMenu = nullptr;
 
     // status bar fields
-    QLabel *m_warningLabel = nullptr;
+    StatusBar *m_statusBar = nullptr;
     QLabel *m_steerLabel = nullptr;
     QLabel *m_timeLabel = nullptr;
     QLabel *m_rateLabel = nullptr;

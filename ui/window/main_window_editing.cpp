@@ -6,6 +6,7 @@
 #include "ui/viewport/edit_tools.h"
 #include "ui/dialogs/generate_dialog.h"
 #include "ui/panels/inspector_panel.h"
+#include "ui/panels/status_text.h"
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
 #include "ui/panels/value_spin_box.h"
@@ -50,6 +51,7 @@ void MainWindow::createEditing()
     m_tools = new EditTools(m_viewport, m_document, m_controller, this);
     connect(m_tools, &EditTools::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, kToolMessageMs); });
+    connect(m_tools, &EditTools::refused, this, &MainWindow::showWarning);
 
     // the tools, then what new particles and springs get
     m_toolBar = addToolBar(tr("Tools"));
@@ -164,6 +166,10 @@ void MainWindow::addGenerated()
     const std::shared_ptr<const core::SceneDesc> generated = m_generate->generated();
     if (!generated)
         return;
+    if (const std::optional<std::size_t> total = particlesPastLimit(m_document->scene(), generated->particles.size())) {
+        showWarning(particleLimitText(tr("Not generated"), *total));
+        return;
+    }
     auto edited = std::make_shared<core::SceneDesc>(m_document->scene());
     const Selection added = ui::addGenerated(*edited, *generated, m_generate->position());
     if (const std::optional<core::SceneProblem> problem = core::findProblem(*edited)) {
