@@ -76,7 +76,9 @@ private:
     const char *m_begin;
     const char *m_pos;
     const char *m_end;
-    std::vector<Frame> m_frames;  // never shrinks, so that a frame's buffers are reused
+    // never shrinks, so that a frame's buffers are reused; a deque, so that a frame never moves
+    // (its keys are views of its own storage)
+    std::deque<Frame> m_frames;
     std::size_t m_depth = 0;
     bool m_done = false;          // the top-level value has been read
     qsizetype m_errorOffset = -1;
