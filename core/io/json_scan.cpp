@@ -50,10 +50,9 @@ bool isNegativeZero(const char *begin, const char *end)
     return true;
 }
 
-// reads the string starting at the quote json[pos]; returns the position after its closing quote,
-// or -1 when the text ends first. loneSurrogate: set when a \u escape is half of a UTF-16 pair
-// without its other half (which Qt turns into a replacement character without a word)
-qsizetype readString(const QByteArray &json, qsizetype pos, QString &out, bool &loneSurrogate)
+}  // namespace
+
+qsizetype readJsonString(const QByteArray &json, qsizetype pos, QString &out, bool &loneSurrogate)
 {
     out.clear();
     loneSurrogate = false;
@@ -103,6 +102,8 @@ qsizetype readString(const QByteArray &json, qsizetype pos, QString &out, bool &
     loneSurrogate = loneSurrogate || highPending;
     return pos < size ? pos + 1 : -1;
 }
+
+namespace {
 
 QString pathOf(const std::vector<Frame> &stack)
 {
@@ -182,7 +183,7 @@ JsonScan scanJson(const QByteArray &json, qsizetype stopOffset)
             if (!stack.empty() && stack.back().array)
                 stack.back().empty = false;
             bool lone = false;
-            pos = readString(json, pos, text, lone);
+            pos = readJsonString(json, pos, text, lone);
             if (pos < 0) {
                 unterminatedString = true;
                 break;
@@ -226,6 +227,87 @@ JsonScan scanJson(const QByteArray &json, qsizetype stopOffset)
     scan.pathAtStop = pathOf(stack);
     scan.openAtStop = static_cast<int>(stack.size()) + (unterminatedString ? 1 : 0);
     return scan;
+}
+
+QHash<QString, qsizetype> countTopLevelArrays(const QByteArray &json)
+{
+    // per open object or array: an array, its index and whether an element has started; an
+    // object, whether a key is due; only the top-level object's current key is kept
+    struct Level {
+        bool array = false;
+        bool empty = true;
+        bool expectKey = true;
+        qsizetype index = 0;
+    };
+    QHash<QString, qsizetype> lengths;
+    std::vector<Level> stack;
+    QString topKey;
+    bool haveTopKey = false;
+    QString text;
+    const char *bytes = json.constData();
+    const qsizetype size = json.size();
+    const auto started = [&] {
+        if (!stack.empty())
+            stack.back().empty = false;
+    };
+
+    qsizetype pos = json.startsWith("\xEF\xBB\xBF") ? 3 : 0;
+    while (pos < size) {
+        const char c = bytes[pos];
+        if (isSpace(c) || c == ':') {
+            ++pos;
+        } else if (c == '{' || c == '[') {
+            started();
+            if (stack.empty())
+                haveTopKey = false;
+            stack.push_back({c == '[', true, true, 0});
+            ++pos;
+        } else if (c == '}' || c == ']') {
+            if (stack.size() == 2 && stack.back().array && !stack.front().array && haveTopKey)
+                lengths.insert(topKey, stack.back().empty ? 0 : stack.back().index + 1);
+            if (!stack.empty())
+                stack.pop_back();
+            ++pos;
+        } else if (c == ',') {
+            if (!stack.empty()) {
+                Level &top = stack.back();
+                if (top.array)
+                    ++top.index;
+                else
+                    top.expectKey = true;
+                if (stack.size() == 1 && !top.array)
+                    haveTopKey = false;
+            }
+            ++pos;
+        } else if (c == '"') {
+            if (!stack.empty() && stack.back().array)
+                stack.back().empty = false;
+            const bool topLevelKey = stack.size() == 1 && !stack.back().array && stack.back().expectKey;
+            if (topLevelKey) {
+                bool lone = false;
+                pos = readJsonString(json, pos, text, lone);
+                topKey = text;
+                haveTopKey = true;
+            } else {
+                // skipped as readJsonString reads it: an escape takes the next byte, \u four more
+                for (++pos; pos < size && bytes[pos] != '"';)
+                    pos += bytes[pos] != '\\' ? 1 : pos + 1 >= size ? size : bytes[pos + 1] == 'u' ? 6 : 2;
+                pos = pos < size ? pos + 1 : -1;
+            }
+            if (pos < 0)
+                break;
+            if (!stack.empty() && !stack.back().array)
+                stack.back().expectKey = false;
+        } else if (isNumberChar(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) {
+            started();
+            while (pos < size && (isNumberChar(bytes[pos]) || (bytes[pos] >= 'a' && bytes[pos] <= 'z') ||
+                                  (bytes[pos] >= 'A' && bytes[pos] <= 'Z')))
+                ++pos;
+        } else {
+            break;
+        }
+    }
+    return lengths;
 }
 
 }  // namespace io

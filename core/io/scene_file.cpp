@@ -1,19 +1,21 @@
-// Design note. Reading goes through QJsonDocument, then a Reader walks the objects and stops at
-// the first problem with one message; value ranges are checked afterwards by core::findProblem(),
-// so a range is written once (core/parameters.cpp). Writing is done by hand rather than by
-// QJsonDocument::toJson() for two reasons: Qt writes -0.0 as "0" (losing the sign bit), and its
-// indented style puts every number of every vector on a line of its own, which makes a cloth
-// unreadable. Numbers are written with std::to_chars, whose output is the shortest text that
-// reads back as the same double. Qt's parser also turns a "-0" literal into +0; json_scan.h
-// finds those literals so the Reader can give the sign back. The limits (io::LoadLimits) come first:
-// the size before the file is read, the nesting depth by one pass over the bytes before Qt parses
-// them, the item counts before any item is made, so a huge or hostile file gets a message instead
-// of exhausting memory.
+// Design note. Reading goes token by token (scene_reader.h over json_pull.h) straight into a
+// SceneDesc, so that a load needs the file's bytes and the scene and no tree of the document: a
+// QJsonDocument of a scene took 12 to 14 times the file's size. Value ranges are checked
+// afterwards by core::findProblem(), so a range is written once (core/parameters.cpp). Only text
+// that is not one JSON object goes to QJsonDocument, for the words and the place of its syntax
+// error. Writing is done by hand rather than by QJsonDocument::toJson() for two reasons: Qt writes
+// -0.0 as "0" (losing the sign bit), and its indented style puts every number of every vector on a
+// line of its own, which makes a cloth unreadable. Numbers are written with std::to_chars, whose
+// output is the shortest text that reads back as the same double. The limits (io::LoadLimits)
+// come first: the size before the file is read, the nesting depth and the lists' lengths by passes
+// over the bytes that keep nothing, so a huge or hostile file gets a message instead of
+// exhausting memory, and each list is made at its final size.
 
 #include "scene_file.h"
 
 #include "json_scan.h"
 #include "safe_write.h"
+#include "scene_reader.h"
 #include "scene_words.h"
 
 #include "core/solver_names.h"
@@ -34,7 +36,6 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <initializer_list>
 #include <limits>
 #include <system_error>
 
@@ -54,440 +55,6 @@ QByteArray formatNumber(double value)
 namespace {
 
 using namespace Qt::Literals::StringLiterals;
-
-constexpr QLatin1String kFormatName("springlab-scene");
-
-enum class Need { Required, Optional };
-
-// walks a parsed document into a SceneDesc, stopping at the first problem
-class Reader {
-public:
-    // scan: the pass over the text (json_scan.h): its negative zeros, a key that comes twice in
-    // one object (Qt keeps the last), a lone surrogate
-    Reader(const QString &source, JsonScan scan, const LoadLimits &limits) : m_source(source), m_limits(limits)
-    {
-        m_negativeZeros = std::move(scan.negativeZeros);
-        m_duplicateKey = std::move(scan.duplicateKey);
-        m_loneSurrogate = std::move(scan.loneSurrogate);
-    }
-
-    QString error() const { return m_error; }
-    QStringList warnings() const { return m_warnings; }
-
-    bool readScene(const QJsonObject &root, core::SceneDesc &scene);
-
-private:
-    bool fail(const QString &path, const QString &reason)
-    {
-        if (m_error.isEmpty())
-            m_error = path.isEmpty() ? m_source + u": "_s + reason : m_source + u": "_s + path + u": "_s + reason;
-        return false;
-    }
-
-    // a list longer than its limit is refused before anything is made for it
-    bool withinLimit(const QJsonArray &array, const QString &path, qsizetype limit)
-    {
-        if (array.size() <= limit)
-            return true;
-        return fail(path, QStringLiteral("too many %1: %2, more than the limit of %3")
-                              .arg(path)
-                              .arg(array.size())
-                              .arg(limit));
-    }
-
-    bool expected(const QString &path, const QString &what, const QJsonValue &got)
-    {
-        return fail(path, u"expected "_s + what + u", got "_s + describe(got));
-    }
-
-    void warnUnknownKeys(const QJsonObject &object, const QString &path, std::initializer_list<QLatin1String> known)
-    {
-        for (auto it = object.begin(); it != object.end(); ++it)
-            if (std::find(known.begin(), known.end(), it.key()) == known.end())
-                m_warnings += m_source + u": "_s + memberPath(path, it.key()) + u": unknown key, ignored"_s;
-    }
-
-    // one value of each kind
-    bool read(const QJsonValue &value, const QString &path, double &out)
-    {
-        if (!value.isDouble())
-            return expected(path, QStringLiteral("a number"), value);
-        out = value.toDouble();
-        if (out == 0.0 && m_negativeZeros.contains(path))
-            out = -0.0;
-        return true;
-    }
-
-    bool read(const QJsonValue &value, const QString &path, int &out)
-    {
-        if (!value.isDouble())
-            return expected(path, QStringLiteral("an integer"), value);
-        const double number = value.toDouble();
-        if (std::trunc(number) != number)
-            return fail(path, u"expected an integer, got "_s + QString::fromLatin1(formatNumber(number)));
-        if (number < std::numeric_limits<int>::min() || number > std::numeric_limits<int>::max())
-            return fail(path, u"the integer "_s + QString::fromLatin1(formatNumber(number)) + u" is too large"_s);
-        out = static_cast<int>(number);
-        return true;
-    }
-
-    bool read(const QJsonValue &value, const QString &path, bool &out)
-    {
-        if (!value.isBool())
-            return expected(path, QStringLiteral("true or false"), value);
-        out = value.toBool();
-        return true;
-    }
-
-    bool read(const QJsonValue &value, const QString &path, QString &out)
-    {
-        if (!value.isString())
-            return expected(path, QStringLiteral("a string"), value);
-        out = value.toString();
-        return true;
-    }
-
-    bool read(const QJsonValue &value, const QString &path, Eigen::Vector3d &out)
-    {
-        if (!value.isArray())
-            return expected(path, QStringLiteral("an array of 3 numbers"), value);
-        const QJsonArray array = value.toArray();
-        if (array.size() != 3)
-            return fail(path, u"expected an array of 3 numbers, got "_s + QString::number(array.size()));
-        for (int axis = 0; axis < 3; ++axis)
-            if (!read(array[axis], elementPath(path, axis), out[axis]))
-                return false;
-        return true;
-    }
-
-    bool read(const QJsonValue &value, const QString &path, Eigen::Vector2d &out)
-    {
-        if (!value.isArray())
-            return expected(path, QStringLiteral("an array of 2 numbers"), value);
-        const QJsonArray array = value.toArray();
-        if (array.size() != 2)
-            return fail(path, u"expected an array of 2 numbers, got "_s + QString::number(array.size()));
-        for (int axis = 0; axis < 2; ++axis)
-            if (!read(array[axis], elementPath(path, axis), out[axis]))
-                return false;
-        return true;
-    }
-
-    bool read(const QJsonValue &value, const QString &path, QJsonObject &out)
-    {
-        if (!value.isObject())
-            return expected(path, QStringLiteral("an object"), value);
-        out = value.toObject();
-        return true;
-    }
-
-    bool read(const QJsonValue &value, const QString &path, QJsonArray &out)
-    {
-        if (!value.isArray())
-            return expected(path, QStringLiteral("an array"), value);
-        out = value.toArray();
-        return true;
-    }
-
-    // a member of an object; an optional one that is absent leaves out as it was
-    template <typename T>
-    bool member(const QJsonObject &object, const QString &parent, QLatin1String key, Need need, T &out,
-                bool *present = nullptr)
-    {
-        const auto it = object.constFind(key);
-        if (present)
-            *present = it != object.constEnd();
-        if (it == object.constEnd())
-            return need == Need::Optional ||
-                   fail(memberPath(parent, key), QStringLiteral("missing: this key is required"));
-        return read(it.value(), memberPath(parent, key), out);
-    }
-
-    bool readHeader(const QJsonObject &root);
-    bool readSettings(const QJsonObject &root, core::Settings &settings);
-    bool readParticles(const QJsonObject &root, std::vector<core::ParticleDesc> &particles);
-    bool readSprings(const QJsonObject &root, core::SceneDesc &scene);
-    bool readPlanes(const QJsonObject &root, std::vector<core::PlaneDesc> &planes);
-    bool readContactImpulses(const QJsonObject &root, std::vector<core::ContactImpulse> &impulses);
-
-    QString m_source;
-    LoadLimits m_limits;
-    QString m_error;
-    QStringList m_warnings;
-    QSet<QString> m_negativeZeros;
-    QString m_duplicateKey;  // the first member whose key came before in its object (null: none)
-    QString m_loneSurrogate;  // the first string with half a UTF-16 pair (null: none)
-    QSet<QString> m_derivedRestLengths;  // paths of the rest lengths taken from the particles' distance
-};
-
-bool Reader::readHeader(const QJsonObject &root)
-{
-    // format: a file of another kind says only that
-    const auto format = root.constFind(QLatin1String("format"));
-    if (format == root.constEnd())
-        return fail(QStringLiteral("format"),
-                    u"missing: not a Springlab scene (expected \"format\": \""_s + kFormatName + u"\")"_s);
-    if (!format->isString() || format->toString() != kFormatName)
-        return fail(QStringLiteral("format"),
-                    u"not a Springlab scene (expected \""_s + kFormatName + u"\", got "_s +
-                        (format->isString() ? u'"' + format->toString() + u'"' : describe(*format)) + u")"_s);
-
-    // version: this build reads every version up to its own
-    int version = 0;
-    if (!member(root, {}, QLatin1String("version"), Need::Required, version))
-        return false;
-    if (version > kSceneFormatVersion)
-        return fail(QStringLiteral("version"),
-                    QStringLiteral("the file is version %1, newer than this build of Springlab reads "
-                                   "(version %2 at most); open it with a newer Springlab")
-                        .arg(version)
-                        .arg(kSceneFormatVersion));
-    if (version < 1)
-        return fail(QStringLiteral("version"),
-                    QStringLiteral("there is no version %1 (versions start at 1)").arg(version));
-    return true;
-}
-
-bool Reader::readSettings(const QJsonObject &root, core::Settings &settings)
-{
-    // the settings object and every key in it are optional: an absent one keeps its default
-    QJsonObject object;
-    const QString path = QStringLiteral("settings");
-    if (!member(root, {}, QLatin1String("settings"), Need::Optional, object))
-        return false;
-    const std::string_view defaultName = core::integratorName(settings.integrator);
-    QString integrator = QString::fromUtf8(defaultName.data(), static_cast<qsizetype>(defaultName.size()));
-    const std::string_view defaultSolver = core::contactSolverName(settings.contactSolver);
-    QString contactSolver = QString::fromUtf8(defaultSolver.data(), static_cast<qsizetype>(defaultSolver.size()));
-    double staticFriction = 0.0;
-    bool hasStaticFriction = false;
-    double adaptiveStep = 0.0;
-    bool hasAdaptiveStep = false;
-    if (!member(object, path, QLatin1String("timeStep"), Need::Optional, settings.timeStep) ||
-        !member(object, path, QLatin1String("substeps"), Need::Optional, settings.substeps) ||
-        !member(object, path, QLatin1String("autoSubsteps"), Need::Optional, settings.autoSubsteps) ||
-        !member(object, path, QLatin1String("integrator"), Need::Optional, integrator) ||
-        !member(object, path, QLatin1String("tolerance"), Need::Optional, settings.tolerance) ||
-        !member(object, path, QLatin1String("adaptiveStep"), Need::Optional, adaptiveStep, &hasAdaptiveStep) ||
-        !member(object, path, QLatin1String("gravity"), Need::Optional, settings.gravity) ||
-        !member(object, path, QLatin1String("viscosity"), Need::Optional, settings.viscosity) ||
-        !member(object, path, QLatin1String("restitution"), Need::Optional, settings.restitution) ||
-        !member(object, path, QLatin1String("contactSolver"), Need::Optional, contactSolver) ||
-        !member(object, path, QLatin1String("friction"), Need::Optional, settings.friction) ||
-        !member(object, path, QLatin1String("staticFriction"), Need::Optional, staticFriction, &hasStaticFriction) ||
-        !member(object, path, QLatin1String("planeCollisions"), Need::Optional, settings.planeCollisions) ||
-        !member(object, path, QLatin1String("particleCollisions"), Need::Optional, settings.particleCollisions))
-        return false;
-
-    // the integrator by name
-    QString unknown;
-    const auto chosen = integratorNamed(integrator, unknown);
-    if (!chosen)
-        return fail(QStringLiteral("settings.integrator"), unknown);
-    settings.integrator = *chosen;
-
-    // the contact solver by name; the static coefficient only when given (else it follows friction)
-    const auto solver = contactSolverNamed(contactSolver, unknown);
-    if (!solver)
-        return fail(QStringLiteral("settings.contactSolver"), unknown);
-    settings.contactSolver = *solver;
-    if (hasStaticFriction)
-        settings.staticFriction = staticFriction;
-    if (hasAdaptiveStep)
-        settings.adaptiveStep = adaptiveStep;
-
-    warnUnknownKeys(object, path,
-                    {QLatin1String("timeStep"), QLatin1String("substeps"), QLatin1String("autoSubsteps"),
-                     QLatin1String("integrator"),
-                     QLatin1String("tolerance"), QLatin1String("adaptiveStep"), QLatin1String("gravity"), QLatin1String("viscosity"), QLatin1String("restitution"),
-                     QLatin1String("contactSolver"), QLatin1String("friction"), QLatin1String("staticFriction"),
-                     QLatin1String("planeCollisions"), QLatin1String("particleCollisions")});
-    return true;
-}
-
-bool Reader::readParticles(const QJsonObject &root, std::vector<core::ParticleDesc> &particles)
-{
-    QJsonArray array;
-    if (!member(root, {}, QLatin1String("particles"), Need::Required, array) ||
-        !withinLimit(array, QStringLiteral("particles"), m_limits.particles))
-        return false;
-    particles.resize(static_cast<std::size_t>(array.size()));
-    for (qsizetype i = 0; i < array.size(); ++i) {
-        const QString path = elementPath(QStringLiteral("particles"), i);
-        core::ParticleDesc &particle = particles[static_cast<std::size_t>(i)];
-        QJsonObject object;
-        if (!read(array[i], path, object) ||
-            !member(object, path, QLatin1String("position"), Need::Required, particle.position) ||
-            !member(object, path, QLatin1String("velocity"), Need::Optional, particle.velocity) ||
-            !member(object, path, QLatin1String("mass"), Need::Required, particle.mass) ||
-            !member(object, path, QLatin1String("radius"), Need::Required, particle.radius) ||
-            !member(object, path, QLatin1String("pinned"), Need::Optional, particle.pinned))
-            return false;
-        warnUnknownKeys(object, path,
-                        {QLatin1String("position"), QLatin1String("velocity"), QLatin1String("mass"),
-                         QLatin1String("radius"), QLatin1String("pinned")});
-    }
-    return true;
-}
-
-bool Reader::readSprings(const QJsonObject &root, core::SceneDesc &scene)
-{
-    QJsonArray array;
-    if (!member(root, {}, QLatin1String("springs"), Need::Required, array) ||
-        !withinLimit(array, QStringLiteral("springs"), m_limits.springs))
-        return false;
-    scene.springs.resize(static_cast<std::size_t>(array.size()));
-    for (qsizetype i = 0; i < array.size(); ++i) {
-        const QString path = elementPath(QStringLiteral("springs"), i);
-        core::SpringDesc &spring = scene.springs[static_cast<std::size_t>(i)];
-        QJsonObject object;
-        QJsonArray ends;
-        bool hasRestLength = false;
-        if (!read(array[i], path, object) || !member(object, path, QLatin1String("particles"), Need::Required, ends))
-            return false;
-
-        // the two ends: particle indices; findProblem() checks they exist and differ
-        const QString endsPath = memberPath(path, QLatin1String("particles"));
-        if (ends.size() != 2)
-            return fail(endsPath, u"expected an array of 2 particle indices, got "_s + QString::number(ends.size()));
-        if (!read(ends[0], elementPath(endsPath, 0), spring.a) || !read(ends[1], elementPath(endsPath, 1), spring.b))
-            return false;
-
-        if (!member(object, path, QLatin1String("stiffness"), Need::Required, spring.stiffness) ||
-            !member(object, path, QLatin1String("damping"), Need::Required, spring.damping) ||
-            !member(object, path, QLatin1String("restLength"), Need::Optional, spring.restLength, &hasRestLength) ||
-            !member(object, path, QLatin1String("breakStrain"), Need::Optional, spring.breakStrain))
-            return false;
-        warnUnknownKeys(object, path,
-                        {QLatin1String("particles"), QLatin1String("stiffness"), QLatin1String("damping"),
-                         QLatin1String("restLength"), QLatin1String("breakStrain")});
-
-        // no rest length: the spring rests at its initial length
-        const auto count = static_cast<int>(scene.particles.size());
-        if (!hasRestLength && spring.a >= 0 && spring.a < count && spring.b >= 0 && spring.b < count) {
-            spring.restLength = (scene.particles[static_cast<std::size_t>(spring.a)].position -
-                                 scene.particles[static_cast<std::size_t>(spring.b)].position)
-                                    .norm();
-            m_derivedRestLengths.insert(memberPath(path, QLatin1String("restLength")));
-        }
-    }
-    return true;
-}
-
-bool Reader::readPlanes(const QJsonObject &root, std::vector<core::PlaneDesc> &planes)
-{
-    QJsonArray array;
-    if (!member(root, {}, QLatin1String("planes"), Need::Required, array) ||
-        !withinLimit(array, QStringLiteral("planes"), m_limits.planes))
-        return false;
-    planes.resize(static_cast<std::size_t>(array.size()));
-    for (qsizetype i = 0; i < array.size(); ++i) {
-        const QString path = elementPath(QStringLiteral("planes"), i);
-        core::PlaneDesc &plane = planes[static_cast<std::size_t>(i)];
-        QJsonObject object;
-        double friction = 0.0;
-        bool hasFriction = false;
-        if (!read(array[i], path, object) ||
-            !member(object, path, QLatin1String("normal"), Need::Required, plane.normal) ||
-            !member(object, path, QLatin1String("offset"), Need::Required, plane.offset) ||
-            !member(object, path, QLatin1String("twoSided"), Need::Optional, plane.twoSided) ||
-            !member(object, path, QLatin1String("friction"), Need::Optional, friction, &hasFriction) ||
-            !member(object, path, QLatin1String("size"), Need::Optional, plane.size) ||
-            !member(object, path, QLatin1String("centre"), Need::Optional, plane.centre) ||
-            !member(object, path, QLatin1String("axis"), Need::Optional, plane.axis))
-            return false;
-        // a plane without friction of its own takes the settings'
-        if (hasFriction)
-            plane.friction = friction;
-        warnUnknownKeys(object, path,
-                        {QLatin1String("normal"), QLatin1String("offset"), QLatin1String("twoSided"),
-                         QLatin1String("friction"), QLatin1String("size"), QLatin1String("centre"),
-                         QLatin1String("axis")});
-    }
-    return true;
-}
-
-// optional: a saved run's contact impulses, with a particle ("other") or with a plane
-bool Reader::readContactImpulses(const QJsonObject &root, std::vector<core::ContactImpulse> &impulses)
-{
-    QJsonArray array;
-    if (!member(root, {}, QLatin1String("contactImpulses"), Need::Optional, array) ||
-        !withinLimit(array, QStringLiteral("contactImpulses"), m_limits.contactImpulses))
-        return false;
-    impulses.resize(static_cast<std::size_t>(array.size()));
-    for (qsizetype k = 0; k < array.size(); ++k) {
-        const QString path = elementPath(QStringLiteral("contactImpulses"), k);
-        core::ContactImpulse &impulse = impulses[static_cast<std::size_t>(k)];
-        QJsonObject object;
-        int plane = 0;
-        bool hasOther = false;
-        bool hasPlane = false;
-        if (!read(array[k], path, object) ||
-            !member(object, path, QLatin1String("particle"), Need::Required, impulse.i) ||
-            !member(object, path, QLatin1String("other"), Need::Optional, impulse.j, &hasOther) ||
-            !member(object, path, QLatin1String("plane"), Need::Optional, plane, &hasPlane) ||
-            !member(object, path, QLatin1String("normal"), Need::Required, impulse.normal) ||
-            !member(object, path, QLatin1String("friction"), Need::Required, impulse.friction))
-            return false;
-        if (hasOther == hasPlane)
-            return fail(path, QStringLiteral("needs either \"other\" (a particle) or \"plane\", not both or neither"));
-        // findProblem() checks the plane exists
-        if (hasPlane) {
-            if (plane < 0)
-                return fail(memberPath(path, QLatin1String("plane")),
-                            u"plane index "_s + QString::number(plane) + u" is out of range"_s);
-            impulse.j = -1 - plane;
-        } else if (impulse.j < 0) {
-            return fail(memberPath(path, QLatin1String("other")),
-                        u"particle index "_s + QString::number(impulse.j) + u" is out of range"_s);
-        }
-        warnUnknownKeys(object, path,
-                        {QLatin1String("particle"), QLatin1String("other"), QLatin1String("plane"),
-                         QLatin1String("normal"), QLatin1String("friction")});
-    }
-    return true;
-}
-
-bool Reader::readScene(const QJsonObject &root, core::SceneDesc &scene)
-{
-    // structure and types, in file order
-    QString name;
-    if (!readHeader(root))
-        return false;
-    // which of two values for one key was meant cannot be known: neither is taken
-    if (!m_duplicateKey.isNull())
-        return fail(m_duplicateKey, QStringLiteral("this key comes twice in its object: keep one"));
-    // Qt would read it as a replacement character: the text would change without a word
-    if (!m_loneSurrogate.isNull())
-        return fail(m_loneSurrogate, QStringLiteral("a \\u escape is half of a UTF-16 pair (a lone surrogate), "
-                                                    "which is no character"));
-    if (!member(root, {}, QLatin1String("name"), Need::Required, name) ||
-        !readSettings(root, scene.settings) || !readParticles(root, scene.particles) || !readSprings(root, scene) ||
-        !readPlanes(root, scene.planes) ||
-        !member(root, {}, QLatin1String("steerable"), Need::Optional, scene.steerable) ||
-        !readContactImpulses(root, scene.contactImpulses))
-        return false;
-    scene.name = name.toStdString();
-    warnUnknownKeys(root, {},
-                    {QLatin1String("format"), QLatin1String("version"), QLatin1String("name"),
-                     QLatin1String("settings"), QLatin1String("particles"), QLatin1String("springs"),
-                     QLatin1String("planes"), QLatin1String("steerable"), QLatin1String("contactImpulses")});
-
-    // values: the same checks and messages as the editor's
-    if (const auto problem = core::findProblem(scene)) {
-        const QString path = QString::fromStdString(problem->path);
-        // a rest length the file did not give is the distance between the spring's particles
-        const QString why = m_derivedRestLengths.contains(path)
-                                ? u" (the distance between its particles, taken since the spring gives no restLength)"_s
-                                : QString();
-        return fail(path, QString::fromStdString(problem->message) + why);
-    }
-
-    // planes are kept with unit normals
-    for (core::PlaneDesc &plane : scene.planes)
-        plane.normal = core::unitNormal(plane.normal);
-    return true;
-}
 
 bool isWordChar(char c)
 {
@@ -710,41 +277,33 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
         return result;
     }
 
-    // the lists' lengths, counted on the text before the parser builds anything of them
-    JsonScan scan = scanJson(json);
+    // the lists' lengths, counted on the text before anything is made of them
+    const QHash<QString, qsizetype> lengths = countTopLevelArrays(json);
     const std::pair<QString, qsizetype> lists[] = {{QStringLiteral("particles"), limits.particles},
                                                    {QStringLiteral("springs"), limits.springs},
                                                    {QStringLiteral("planes"), limits.planes},
                                                    {QStringLiteral("contactImpulses"), limits.contactImpulses}};
     for (const auto &[key, limit] : lists)
-        if (const qsizetype count = scan.topLevelArrays.value(key, 0); count > limit) {
+        if (const qsizetype count = lengths.value(key, 0); count > limit) {
             result.error = sourceName + u": "_s + key + u": "_s +
                            QStringLiteral("too many %1: %2, more than the limit of %3").arg(key).arg(count).arg(limit);
             return result;
         }
 
-    // syntax
+    // the scene, read token by token into its final lists
+    if (std::optional<LoadResult> read = readSceneText(json, sourceName, lengths))
+        return std::move(*read);
+
+    // not one JSON object: QJsonDocument says why (only a refused file gets this far)
     QJsonParseError parseError{};
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error != QJsonParseError::NoError) {
+    if (parseError.error != QJsonParseError::NoError)
         result.error = syntaxErrorOf(json, parseError, sourceName);
-        return result;
-    }
-    if (!document.isObject()) {
+    else if (!document.isObject())
         result.error = sourceName + u": expected a JSON object at the top level, got "_s +
                        describe(document.isArray() ? QJsonValue(document.array()) : QJsonValue());
-        return result;
-    }
-
-    // structure, types and values; the scene is handed out only when all of it is right
-    Reader reader(sourceName, std::move(scan), limits);
-    core::SceneDesc scene;
-    const bool ok = reader.readScene(document.object(), scene);
-    result.warnings = reader.warnings();
-    if (ok)
-        result.scene = std::move(scene);
     else
-        result.error = reader.error();
+        result.error = sourceName + u": not valid JSON"_s;
     return result;
 }
 
@@ -805,7 +364,7 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
     QByteArray out;
 
     // header
-    out += "{\n    \"format\": \"" + QByteArray(kFormatName.data(), kFormatName.size()) + "\",\n";
+    out += "{\n    \"format\": \"" + QByteArray(kSceneFormatName.data(), kSceneFormatName.size()) + "\",\n";
     out += "    \"version\": " + QByteArray::number(kSceneFormatVersion) + ",\n";
     out += "    \"name\": ";
     appendString(out, scene.name);

@@ -7,6 +7,7 @@
 #include "core/scene.h"
 
 #include <QByteArray>
+#include <QLatin1StringView>
 #include <QString>
 #include <QStringList>
 
@@ -16,6 +17,7 @@ struct QJsonParseError;
 namespace io {
 
 inline constexpr int kSceneFormatVersion = 1;
+inline constexpr QLatin1StringView kSceneFormatName("springlab-scene");
 
 // what a scene file may hold before it is refused with a message, so that a huge or hostile file
 // cannot exhaust memory; generous for real scenes (docs/scene-format.md says why these numbers)
