@@ -1,5 +1,6 @@
 #include "stability.h"
 
+#include "geometry.h"
 #include "parameters.h"
 #include "spring_jacobian.h"
 
@@ -15,6 +16,31 @@ namespace {
 constexpr int kIterations = 300;
 constexpr double kSettled = 1e-6;  // relative change of the Rayleigh quotient that counts as settled
 
+// A spring of rest length 0 pulls its ends together along whatever line joins them, kI in every
+// direction, so the power iteration's vector is any direction of that spring's top mode. Its damper
+// acts along the spring, and as the ends swing through each other the spring turns to follow
+// them: the motion it damps is along any line. The Jacobian at one state has the damper along
+// that state's direction only, so the damping of the vector the iteration lands on was a matter
+// of chance (c cos² of the angle). Counted here in every direction: kc (I - u uᵀ) added to the
+// Jacobian's kc u uᵀ, which is the most damped direction of that mode, the one that sets the
+// symplectic Euler limit.
+void addZeroLengthDampingAcross(const Model &model, const State &state, const Eigen::Matrix3Xd &y,
+                                Eigen::Matrix3Xd &out)
+{
+    for (int k = 0; k < model.springCount(); ++k) {
+        if (model.restLength[k] != 0.0 || model.damping[k] == 0.0 || state.isBroken(k))
+            continue;
+        const int a = model.springA[static_cast<std::size_t>(k)];
+        const int b = model.springB[static_cast<std::size_t>(k)];
+        const Eigen::Vector3d d = state.position.col(a) - state.position.col(b);
+        const Eigen::Vector3d u = directionOr(d, d.norm());
+        const Eigen::Vector3d dy = y.col(a) - y.col(b);
+        const Eigen::Vector3d t = model.damping[k] * (dy - u.dot(dy) * u);
+        out.col(a) += t;
+        out.col(b) -= t;
+    }
+}
+
 // S y = M^-½ K M^-½ y, with pinned particles (inverse mass 0) left out
 void applyScaled(const Model &model, const State &state, const Eigen::VectorXd &rootInvMass,
                  const Eigen::Matrix3Xd &y, Eigen::Matrix3Xd &scaled, Eigen::Matrix3Xd &out, bool damping)
@@ -22,8 +48,10 @@ void applyScaled(const Model &model, const State &state, const Eigen::VectorXd &
     scaled.noalias() = y * rootInvMass.asDiagonal();
     out.setZero();
     addSpringJacobians(model, state, scaled, damping ? 0.0 : 1.0, damping ? 1.0 : 0.0, out);
-    if (damping)
+    if (damping) {
+        addZeroLengthDampingAcross(model, state, scaled, out);
         out += model.viscosity * scaled;
+    }
     out = out * rootInvMass.asDiagonal();
 }
 
@@ -248,10 +276,14 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
         } else if (maxStep > 0.0) {
             // enough digits that the step and the limit read differently (0.201 against 0.2)
             const int digits = distinctDigits(h, maxStep);
+            // the springs' damping, where it moves the limit (symplectic Euler and Verlet narrower,
+            // explicit Euler stable only through it)
+            const bool damped = limit.dampingRate > 0.0 && model.integrator != Integrator::Rk4;
             out << " The time step " << format(h, digits) << " s is "
                 << format(h / maxStep, distinctDigits(h / maxStep, 1.0))
                 << "× the stability limit " << format(maxStep, digits) << " s for stiffness " << format(stiffest)
-                << " N/m with " << name << ": " << advice(maxStep, ", softer springs or heavier particles");
+                << " N/m" << (damped ? " and damping rate " + format(limit.dampingRate) + " 1/s" : std::string())
+                << " with " << name << ": " << advice(maxStep, ", softer springs or heavier particles");
         } else {
             out << " " << name << " is unstable at any step on undamped springs (stiffness up to "
                 << format(stiffest) << " N/m): use symplectic-euler or implicit-euler.";

@@ -15,6 +15,7 @@ class TestStability : public QObject {
 private slots:
     void singleOscillatorIsExact();
     void dampingNarrowsTheLimit();
+    void zeroLengthSpringsDampEveryDirection();
     void measuredLimitMatchesTheory_data();
     void measuredLimitMatchesTheory();
     void implicitAndAdaptiveHaveNoLimit();
@@ -60,6 +61,8 @@ bool stableAt(core::SceneDesc scene, double h, int steps)
     return true;
 }
 
+
+
 }  // namespace
 
 void TestStability::singleOscillatorIsExact()
@@ -91,6 +94,43 @@ void TestStability::dampingNarrowsTheLimit()
     QVERIFY(expected < 0.2);
     // explicit Euler: stable only while damping wins, h < γ/ω² = 0.04 s
     QVERIFY(std::abs(limit.maxSubStep(core::Integrator::ExplicitEuler) - 0.04) < 1e-10);
+}
+
+void TestStability::zeroLengthSpringsDampEveryDirection()
+{
+    // one 1 kg particle between two pinned anchors at x = ±1 m on springs of rest length 0, each
+    // 50 N/m and 2 N·s/m: 100 N/m in every direction (ω = 10 rad/s), and for its motion along x,
+    // where it starts at rest, γ = 4 1/s. The power iteration's vector is any direction, so the
+    // damping must not depend on which
+    core::SceneDesc scene = test::quietScene();
+    scene.particles = {test::particle({-1.0, 0.0, 0.0}, Eigen::Vector3d::Zero(), 1.0, 0.1, true),
+                       test::particle({1.0, 0.0, 0.0}, Eigen::Vector3d::Zero(), 1.0, 0.1, true),
+                       test::particle({0.3, 0.0, 0.0})};
+    scene.springs = {core::SpringDesc{2, 0, 50.0, 2.0, 0.0, 0.0}, core::SpringDesc{2, 1, 50.0, 2.0, 0.0, 0.0}};
+    test::Sim sim = test::compile(scene);
+    const core::State start = sim.state;
+    const core::StabilityLimit limit = core::stabilityLimit(*sim.model, start);
+    QVERIFY(std::abs(limit.omegaMax - 10.0) < 1e-9);
+    QVERIFY2(std::abs(limit.dampingRate - 4.0) < 1e-9, qPrintable(QString::number(limit.dampingRate)));
+    const double symplectic = (std::sqrt(4.0 * 4.0 + 4.0 * 100.0) - 4.0) / 100.0;  // 0.164 s
+    QVERIFY(std::abs(limit.maxSubStep(core::Integrator::SymplecticEuler) - symplectic) < 1e-10);
+    QVERIFY(std::abs(limit.maxSubStep(core::Integrator::ExplicitEuler) - 4.0 / 100.0) < 1e-10);
+
+    // the limit is the one the run meets: stable just under it, blown up at 0.17 s, and the
+    // message blames the springs, not a contact or an applied force
+    QVERIFY(stableAt(scene, 0.97 * symplectic, 4000));
+    scene.settings.timeStep = 0.17;
+    test::Sim run = test::compile(scene);
+    while (run.step()) {
+    }
+    QVERIFY(run.work.blowup.has_value());
+    const std::string message =
+        core::explainBlowup(*run.model, *run.work.blowup, core::stabilityLimit(*run.model, start));
+    const QString text = QString::fromStdString(message);
+    QVERIFY2(text.contains("The time step 0.17 s is 1.04× the stability limit 0.16 s for stiffness 50 N/m and "
+                           "damping rate 4 1/s with symplectic-euler: use ≥ 2 substeps"),
+             message.c_str());
+    QVERIFY2(!text.contains("a contact or an applied force"), message.c_str());
 }
 
 void TestStability::measuredLimitMatchesTheory_data()
