@@ -3,6 +3,8 @@
 #include <QByteArray>
 #include <QFile>
 #include <QThread>
+
+#include <algorithm>
 #include <ctime>
 
 namespace bench {
@@ -25,6 +27,25 @@ double cpuSeconds()
     timespec now{};
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
     return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+RunClock::RunClock() : m_cpuStart(cpuSeconds())
+{
+    m_wall.start();
+}
+
+QString RunClock::text() const
+{
+    return QStringLiteral("%1 s wall, %2 s CPU")
+        .arg(m_wall.elapsed() / 1000.0, 0, 'f', 0)
+        .arg(cpuSeconds() - m_cpuStart, 0, 'f', 0);
+}
+
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    const std::size_t mid = values.size() / 2;
+    return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
 QString nameOf(core::Integrator integrator)

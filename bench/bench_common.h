@@ -5,10 +5,12 @@
 #include "core/integrator.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QString>
 #include <QTextStream>
 
 #include <optional>
+#include <vector>
 
 namespace bench {
 
@@ -16,6 +18,19 @@ namespace bench {
 QString machineDescription();
 // the process's CPU time, s (all threads)
 double cpuSeconds();
+// the wall clock and the process's CPU time since a run began, for the line that ends its output
+class RunClock {
+public:
+    RunClock();
+    // "412 s wall, 380 s CPU"
+    QString text() const;
+
+private:
+    QElapsedTimer m_wall;
+    double m_cpuStart = 0.0;
+};
+// the median of the samples (the mean of the middle two when there is an even number)
+double median(std::vector<double> values);
 // an integrator's name as scene files spell it
 QString nameOf(core::Integrator integrator);
 // the load average over the last minute (/proc/loadavg), or -1 where it cannot be read: other work

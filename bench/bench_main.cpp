@@ -5,6 +5,9 @@
 //                                                    memory bandwidth bound
 //   springlab-bench contacts [--out DIR] [--quick]   stacks, piles and a heap beside Bullet's rigid
 //                                                    spheres: what stands, what settles, the cost
+//   springlab-bench stiff [--out DIR] [--quick]      a stiff cloth: the sub-steps and cost each of
+//                                                    symplectic Euler, implicit Euler and xpbd needs
+//                                                    to stay within 1% stretch
 //   springlab-bench write-references DIR             the reference problems as scene files
 //
 // The plots are painted into images, which needs a QGuiApplication for the fonts but no display:
@@ -14,6 +17,7 @@
 #include "contacts.h"
 #include "reference_problems.h"
 #include "stability.h"
+#include "stiff.h"
 #include "throughput.h"
 
 #include "core/io/scene_file.h"
@@ -34,6 +38,7 @@ const char *const kUsage =
     "       springlab-bench stability [--out DIR] [--quick]\n"
     "       springlab-bench throughput [--out DIR] [--quick]\n"
     "       springlab-bench contacts [--out DIR] [--quick]\n"
+    "       springlab-bench stiff [--out DIR] [--quick]\n"
     "       springlab-bench write-references DIR\n";
 
 int badArguments(QTextStream &err, const QString &message)
@@ -104,6 +109,17 @@ int contacts(const QStringList &arguments, QTextStream &out, QTextStream &err)
         [&](const QString &dir, bool quick) { return bench::runContacts({dir, quick}, out); });
 }
 
+int stiff(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    return sweepMode(
+        arguments, out, err, QStringLiteral("stiff"),
+        QStringLiteral("A stiff cloth draping: the sub-steps and cost symplectic Euler, implicit Euler and xpbd need "
+                       "to keep it within 1% stretch, against a fine reference."),
+        QStringLiteral("Folder for the CSV, the summary and the plot (default: .)."),
+        QStringLiteral("A tiny cloth at two stiffnesses: a smoke test only."),
+        [&](const QString &dir, bool quick) { return bench::runStiff({dir, quick}, out); });
+}
+
 // every reference problem's scene, saved as DIR/<name>.json
 int writeReferences(const QStringList &arguments, QTextStream &out, QTextStream &err)
 {
@@ -149,6 +165,8 @@ int main(int argc, char *argv[])
         return throughput(arguments, out, err);
     if (name == QStringLiteral("contacts"))
         return contacts(arguments, out, err);
+    if (name == QStringLiteral("stiff"))
+        return stiff(arguments, out, err);
     if (name == QStringLiteral("write-references"))
         return writeReferences(arguments, out, err);
     if (name == QStringLiteral("--help") || name == QStringLiteral("-h")) {

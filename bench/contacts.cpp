@@ -252,13 +252,6 @@ Outcome runOnce(const ContactScene &contact, double threshold)
     return outcome;
 }
 
-double median(std::vector<double> values)
-{
-    std::sort(values.begin(), values.end());
-    const std::size_t mid = values.size() / 2;
-    return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
-
 // runs the scene `repetitions` times in the engine; the physics from the first run, the median time
 template <typename Engine>
 ContactRow measure(const ContactScene &contact, const QString &engineName, int repetitions, bool &repeatable)

@@ -1,9 +1,13 @@
 #pragma once
 // What every benchmark plot draws the same way: a white image and the painter's font, the title
 // across the top, and the frame of the
-// plot area with the axis labels below it and, turned, left of it. The plots themselves
-// (accuracy, stability, throughput) draw their own grids, lines and legends.
+// plot area with the axis labels below it and, turned, left of it; for the log-log plots (accuracy,
+// stiff) their decades and grid, and for every plot of integrators their colours. The plots
+// themselves draw their own lines and legends.
 
+#include "core/integrator.h"
+
+#include <QColor>
 #include <QFont>
 #include <QImage>
 #include <QRectF>
@@ -17,6 +21,9 @@ namespace bench {
 // a white image of `size` to draw a plot on
 QImage blankPlot(const QSize &size);
 
+// an integrator's colour, the same in every plot: a colour-blind-safe palette (Okabe and Ito)
+QColor integratorColour(core::Integrator integrator);
+
 // the painter made ready for a plot: antialiased, in the plots' 11-point font, which it returns
 QFont preparePlotPainter(QPainter &painter);
 
@@ -27,5 +34,26 @@ void drawPlotTitle(QPainter &painter, const QSize &size, const QFont &font, cons
 // the frame of `plot` and its axis labels: x centred below, y turned and centred at yLabelX
 void drawPlotFrame(QPainter &painter, const QRectF &plot, const QString &xLabel, const QString &yLabel,
                    double yLabelX = 26.0);
+
+// whole decades around the values, [10^lo, 10^hi], at least one decade wide and leaving a tenth of
+// a decade between the data and the frame
+struct Decades {
+    int lo = 0;
+    int hi = 1;
+};
+Decades decadesAround(double smallest, double largest);
+
+// log-log axes over a plot area: where a value falls, in pixels
+struct LogAxes {
+    QRectF plot;
+    Decades x;
+    Decades y;
+    double toX(double value) const;
+    double toY(double value) const;
+};
+
+// the grid of log-log axes: a grey line at each decade with its label (10 with the exponent
+// raised), short ticks at 2..9 times it
+void drawLogGrid(QPainter &painter, const LogAxes &axes);
 
 }  // namespace bench

@@ -129,9 +129,7 @@ int runStability(const StabilityOptions &options, QTextStream &out)
     if (!folder)
         return 1;
     const QDir &dir = *folder;
-    QElapsedTimer wall;
-    wall.start();
-    const double cpuStart = cpuSeconds();
+    const RunClock clock;
     const Grid grid = gridFor(options.quick);
     out << "machine: " << machineDescription() << '\n';
     if (options.quick)
@@ -211,9 +209,7 @@ int runStability(const StabilityOptions &options, QTextStream &out)
         return 1;
     }
     out << QStringLiteral("wrote %1 rows to stability.csv, and stability.png\n").arg(rows.size());
-    out << QStringLiteral("run time: %1 s wall, %2 s CPU\n")
-               .arg(wall.elapsed() / 1000.0, 0, 'f', 0)
-               .arg(cpuSeconds() - cpuStart, 0, 'f', 0);
+    out << "run time: " << clock.text() << '\n';
     return 0;
 }
 

@@ -16,21 +16,6 @@ namespace bench {
 
 namespace {
 
-// the same colour-blind-safe colours (Okabe and Ito) the work-precision plots give each integrator
-QColor colourOf(core::Integrator integrator)
-{
-    switch (integrator) {
-    case core::Integrator::SymplecticEuler: return QColor(0x00, 0x72, 0xB2);
-    case core::Integrator::ExplicitEuler: return QColor(0xD5, 0x5E, 0x00);
-    case core::Integrator::VelocityVerlet: return QColor(0x00, 0x9E, 0x73);
-    case core::Integrator::Rk4: return QColor(0xCC, 0x79, 0xA7);
-    case core::Integrator::ImplicitEuler: return QColor(0xE6, 0x9F, 0x00);
-    case core::Integrator::AdaptiveRk45: return QColor(0x00, 0x00, 0x00);
-    case core::Integrator::Xpbd: return QColor(0x56, 0xB4, 0xE9);
-    }
-    return Qt::gray;
-}
-
 // a marker shape per integrator, so the plot reads in grey too
 QPainterPath markerOf(core::Integrator integrator, QPointF c, double r)
 {
@@ -58,7 +43,7 @@ QPainterPath markerOf(core::Integrator integrator, QPointF c, double r)
 // filled for the shortest chain, hollow (white inside) for the others
 void drawMarker(QPainter &painter, core::Integrator integrator, bool filled, QPointF centre)
 {
-    const QColor colour = colourOf(integrator);
+    const QColor colour = integratorColour(integrator);
     painter.setPen(QPen(colour.darker(120), 1.6));
     painter.setBrush(filled ? QBrush(colour) : QBrush(Qt::white));
     painter.drawPath(markerOf(integrator, centre, 5.0));

@@ -152,10 +152,7 @@ double timeSteps(StepOnce &&stepOnce, const Plan &plan)
             stepOnce();
         samples.push_back(secondsSince(begin) / steps);
     }
-    std::sort(samples.begin(), samples.end());
-    const std::size_t mid = samples.size() / 2;
-    const double median = samples.size() % 2 == 1 ? samples[mid] : 0.5 * (samples[mid - 1] + samples[mid]);
-    return 1000.0 * median;
+    return 1000.0 * median(samples);
 }
 
 // the largest coordinate difference between the core's positions and a reference's, m

@@ -24,19 +24,20 @@ struct CurveStyle {
     Marker marker;
 };
 
-// a colour-blind-safe palette (Okabe and Ito) and a distinct marker per integrator
+// the integrator's colour (plot_frame.h) and a distinct marker per integrator
 CurveStyle styleOf(core::Integrator integrator)
 {
+    const QColor colour = integratorColour(integrator);
     switch (integrator) {
-    case core::Integrator::SymplecticEuler: return {QColor(0x00, 0x72, 0xB2), Marker::Circle};
-    case core::Integrator::ExplicitEuler: return {QColor(0xD5, 0x5E, 0x00), Marker::Square};
-    case core::Integrator::VelocityVerlet: return {QColor(0x00, 0x9E, 0x73), Marker::TriangleUp};
-    case core::Integrator::Rk4: return {QColor(0xCC, 0x79, 0xA7), Marker::Diamond};
-    case core::Integrator::ImplicitEuler: return {QColor(0xE6, 0x9F, 0x00), Marker::TriangleDown};
-    case core::Integrator::AdaptiveRk45: return {QColor(0x00, 0x00, 0x00), Marker::Cross};
-    case core::Integrator::Xpbd: return {QColor(0x56, 0xB4, 0xE9), Marker::Plus};
+    case core::Integrator::SymplecticEuler: return {colour, Marker::Circle};
+    case core::Integrator::ExplicitEuler: return {colour, Marker::Square};
+    case core::Integrator::VelocityVerlet: return {colour, Marker::TriangleUp};
+    case core::Integrator::Rk4: return {colour, Marker::Diamond};
+    case core::Integrator::ImplicitEuler: return {colour, Marker::TriangleDown};
+    case core::Integrator::AdaptiveRk45: return {colour, Marker::Cross};
+    case core::Integrator::Xpbd: return {colour, Marker::Plus};
     }
-    return {Qt::gray, Marker::Circle};
+    return {colour, Marker::Circle};
 }
 
 void drawMarker(QPainter &painter, Marker marker, QPointF centre, double size)
@@ -87,43 +88,6 @@ bool plottable(const WorkPrecisionPoint &point)
     return !point.blewUp() && point.error > 0.0 && point.error <= kPlotErrorCeiling && point.cost > 0.0;
 }
 
-// whole decades around the values, [10^lo, 10^hi], at least one decade wide and leaving a tenth of
-// a decade between the data and the frame
-struct Decades {
-    int lo = 0;
-    int hi = 1;
-};
-
-Decades decadesAround(double smallest, double largest)
-{
-    constexpr double kMargin = 0.1;  // decades
-    Decades d{static_cast<int>(std::floor(std::log10(smallest) - kMargin)),
-              static_cast<int>(std::ceil(std::log10(largest) + kMargin))};
-    if (d.hi <= d.lo)
-        d.hi = d.lo + 1;
-    return d;
-}
-
-// "10" with the exponent as a superscript, placed by its right edge (y axis) or its centre (x axis)
-void drawPowerOfTen(QPainter &painter, int exponent, QPointF anchor, bool rightAligned)
-{
-    const QFont base = painter.font();
-    QFont small = base;
-    small.setPointSizeF(base.pointSizeF() * 0.72);
-    const QString mantissa = QStringLiteral("10");
-    const QString power = QString::number(exponent).replace(u'-', QChar(0x2212));
-    const double baseWidth = QFontMetricsF(base).horizontalAdvance(mantissa);
-    const double powerWidth = QFontMetricsF(small).horizontalAdvance(power);
-    const double width = baseWidth + powerWidth;
-    const double ascent = QFontMetricsF(base).ascent();
-    const double left = rightAligned ? anchor.x() - width : anchor.x() - 0.5 * width;
-    const double baseline = rightAligned ? anchor.y() + 0.35 * ascent : anchor.y() + ascent;
-    painter.drawText(QPointF(left, baseline), mantissa);
-    painter.setFont(small);
-    painter.drawText(QPointF(left + baseWidth, baseline - 0.45 * ascent), power);
-    painter.setFont(base);
-}
-
 }  // namespace
 
 QImage drawWorkPrecision(const QString &title, const std::vector<WorkPrecisionCurve> &curves, const QSize &size)
@@ -149,49 +113,17 @@ QImage drawWorkPrecision(const QString &title, const std::vector<WorkPrecisionCu
 
     // the frame: title on top, legend on the right, axis labels left and below
     const QRectF plot(QPointF(110.0, 70.0), QPointF(size.width() - 250.0, size.height() - 90.0));
-    const auto toX = [&](double cost) {
-        return plot.left() + (std::log10(cost) - xs.lo) / (xs.hi - xs.lo) * plot.width();
-    };
-    const auto toY = [&](double error) {
-        return plot.bottom() - (std::log10(error) - ys.lo) / (ys.hi - ys.lo) * plot.height();
-    };
+    const LogAxes axes{plot, xs, ys};
 
     drawPlotTitle(painter, size, font, title);
-
-    // grid: a line at each decade, short ticks at 2..9 times it
-    const QPen gridPen(QColor(0xDD, 0xDD, 0xDD), 1.0);
-    const QPen tickPen(QColor(0x55, 0x55, 0x55), 1.0);
-    for (int k = xs.lo; k <= xs.hi; ++k) {
-        const double x = toX(std::pow(10.0, k));
-        painter.setPen(gridPen);
-        painter.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
-        painter.setPen(tickPen);
-        painter.drawLine(QPointF(x, plot.bottom()), QPointF(x, plot.bottom() + 7.0));
-        drawPowerOfTen(painter, k, QPointF(x, plot.bottom() + 10.0), false);
-        for (int m = 2; m <= 9 && k < xs.hi; ++m) {
-            const double xm = toX(m * std::pow(10.0, k));
-            painter.drawLine(QPointF(xm, plot.bottom()), QPointF(xm, plot.bottom() + 4.0));
-        }
-    }
-    for (int k = ys.lo; k <= ys.hi; ++k) {
-        const double y = toY(std::pow(10.0, k));
-        painter.setPen(gridPen);
-        painter.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
-        painter.setPen(tickPen);
-        painter.drawLine(QPointF(plot.left() - 7.0, y), QPointF(plot.left(), y));
-        drawPowerOfTen(painter, k, QPointF(plot.left() - 11.0, y), true);
-        for (int m = 2; m <= 9 && k < ys.hi; ++m) {
-            const double ym = toY(m * std::pow(10.0, k));
-            painter.drawLine(QPointF(plot.left() - 4.0, ym), QPointF(plot.left(), ym));
-        }
-    }
+    drawLogGrid(painter, axes);
 
     // the errors the summary table reads costs at
     QPen targetPen(QColor(0x88, 0x88, 0x88), 1.2, Qt::DashLine);
     painter.setPen(targetPen);
     for (double target : kTargets)
         if (target > std::pow(10.0, ys.lo) && target < std::pow(10.0, ys.hi))
-            painter.drawLine(QPointF(plot.left(), toY(target)), QPointF(plot.right(), toY(target)));
+            painter.drawLine(QPointF(plot.left(), axes.toY(target)), QPointF(plot.right(), axes.toY(target)));
 
     // the frame and the axis labels, with units
     drawPlotFrame(painter, plot, QStringLiteral("cost: CPU seconds per simulated second"),
@@ -204,7 +136,7 @@ QImage drawWorkPrecision(const QString &title, const std::vector<WorkPrecisionCu
         QPolygonF line;
         for (const WorkPrecisionPoint &point : curve.points)
             if (plottable(point))
-                line << QPointF(toX(point.cost), toY(point.error));
+                line << QPointF(axes.toX(point.cost), axes.toY(point.error));
         painter.setPen(QPen(style.colour, 2.0));
         painter.setBrush(Qt::NoBrush);
         painter.drawPolyline(line);
