@@ -82,7 +82,9 @@ void TestHelpDialog::everyKeyShowsWhole()
                 QFont font = help->font();
                 font.setPointSizeF(font.pointSizeF() * fontScale);
                 help->setFont(font);
-                QTest::qWait(50);  // the relayout after the font change is posted
+                // the relayout after the font change is posted: wait until the keys fit, or 2 s
+                // (then the measure below reports what is cut)
+                (void)QTest::qWaitFor([help] { return measure(*help).cut.isEmpty(); }, 2000);
             }
             layout = measure(*help);
         }
