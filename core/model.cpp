@@ -10,6 +10,25 @@
 
 namespace core {
 
+namespace {
+
+// as many sub-steps as the stability limit at the state asks, and no fewer than the scene's own
+int autoSubsteps(const Model &model, const Settings &s, const State &state)
+{
+    return stableSubsteps(stabilityLimit(model, state), s.integrator, s.timeStep, s.substeps,
+                          static_cast<int>(parameterInfo(Parameter::Substeps).maximum));
+}
+
+void setSubsteps(Model &model, int substeps)
+{
+    model.substeps = substeps;
+    // two sub-steps' worth of speed gained under gravity: what a resting contact picks up between
+    // projections, well below any real impact
+    model.restingSpeed = 2.0 * model.gravity.norm() * model.subStep();
+}
+
+}  // namespace
+
 std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
 {
     assert(!findProblem(scene) && "compileModel needs a validated scene");
@@ -115,14 +134,21 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
 
     // auto substeps: as many as the stability limit at the initial state asks, and no fewer than the
     // scene's own
-    if (s.autoSubsteps)
-        model->substeps = stableSubsteps(stabilityLimit(*model, makeState(*model, scene)), s.integrator, s.timeStep,
-                                         s.substeps, static_cast<int>(parameterInfo(Parameter::Substeps).maximum));
-
-    // two sub-steps' worth of speed gained under gravity: what a resting contact picks up between
-    // projections, well below any real impact
-    model->restingSpeed = 2.0 * s.gravity.norm() * model->subStep();
+    setSubsteps(*model, s.autoSubsteps ? autoSubsteps(*model, s, makeState(*model, scene)) : s.substeps);
     return model;
+}
+
+std::shared_ptr<const Model> autoSubstepsAlsoFor(const std::shared_ptr<const Model> &model, const SceneDesc &scene,
+                                                 const State &state)
+{
+    if (!model || !scene.settings.autoSubsteps)
+        return model;
+    const int wanted = autoSubsteps(*model, scene.settings, state);
+    if (wanted <= model->substeps)
+        return model;
+    auto raised = std::make_shared<Model>(*model);
+    setSubsteps(*raised, wanted);
+    return raised;
 }
 
 void setIntegrator(Model &model, Integrator integrator)

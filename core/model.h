@@ -13,6 +13,8 @@
 
 namespace core {
 
+struct State;
+
 // how a sub-step forces and integrates (step.cpp branches on it)
 enum class SubStepPath {
     Stages,        // the force passes one after another, inside the model's integrator
@@ -101,5 +103,11 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene);
 
 // the model's integrator, and the sub-step path the plan takes with it
 void setIntegrator(Model &model, Integrator integrator);
+
+// auto substeps count from the scene's initial state; a run carried on from another state (the
+// editor after a blow-up, its stretched springs vibrating faster) may need more. The model with at
+// least as many as that state asks too, or the same model when it has enough.
+std::shared_ptr<const Model> autoSubstepsAlsoFor(const std::shared_ptr<const Model> &model, const SceneDesc &scene,
+                                                 const State &state);
 
 }  // namespace core

@@ -2,8 +2,9 @@
 // How large a time step the explicit integrators can take on this scene, and what to say when a
 // run blows up. The highest angular frequency ω_max of the linearised springs comes from power
 // iteration on M^-½ K M^-½ (symmetric, so its Rayleigh quotient converges fast), with a Gershgorin
-// bound as the fallback when the iteration has not settled. The damping rate γ of that mode
-// (springs' dampers and the medium's drag) narrows symplectic Euler's limit from 2/ω to
+// bound as the fallback when the iteration has not settled, and its residual as the room kept for
+// the iteration's error where a margin is promised (auto substeps). The damping rate γ of that mode
+// (springs' dampers, a zero-rest-length spring's in every direction, and the medium's drag) narrows symplectic Euler's limit from 2/ω to
 // (√(γ² + 4ω²) - γ)/ω².
 
 #include "blowup.h"
@@ -19,11 +20,16 @@ struct StabilityLimit {
     double omegaMax = 0.0;       // rad/s, the highest angular frequency (0 with no springs)
     double dampingRate = 0.0;    // 1/s, γ of that mode
     double gershgorinOmega = 0.0;  // rad/s, an upper bound on ω_max
+    // rad/s, ω_max with room for the power iteration's error: √(ρ + ‖S y − ρ y‖) for its last unit
+    // vector y and Rayleigh quotient ρ, or the Gershgorin bound where that is less
+    double omegaBound = 0.0;
     bool converged = false;      // the power iteration settled; else omegaMax is the bound
 
     // the largest stable sub-step for the integrator (s); infinity when any step is stable
     // (implicit, adaptive, or nothing to oscillate), 0 when none is (explicit Euler, undamped)
     double maxSubStep(Integrator integrator) const;
+    // the same at omegaBound: never above the true limit, so a share of it keeps its margin
+    double safeSubStep(Integrator integrator) const;
 };
 
 // analyses the scene linearised at the state (allocates: call it off the step path)
@@ -34,7 +40,8 @@ StabilityLimit stabilityLimit(const Model &model, const State &state);
 constexpr double kStableShare = 0.9;
 
 // the fewest substeps, at least `least` and at most `most`, that keep timeStep / substeps under
-// kStableShare of the limit for the integrator
+// kStableShare of the limit for the integrator (its safeSubStep: the power iteration alone can
+// only overestimate the limit)
 int stableSubsteps(const StabilityLimit &limit, Integrator integrator, double timeStep, int least, int most);
 
 // The pair speed limit (docs/physics.md): pairs are looked at only where the sub-steps end, so two

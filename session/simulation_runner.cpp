@@ -237,6 +237,8 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
         restart();
     else if (m_state.step == 0)
         m_diagnostics.restarted(*m_model, m_state);  // nothing ran yet: the drift is measured from the edited scene
+    else
+        m_model = core::autoSubstepsAlsoFor(m_model, *m_scene, m_state);  // the run goes on from this state
     // another scene, or the same one from its start: the recording belongs to the old run
     if (edit.change == SceneChange::Replace || m_state.step == 0)
         m_scrubber.timeline().clear();
