@@ -28,6 +28,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
+
 #include <QTextStream>
 
 #include <cerrno>
@@ -36,6 +37,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <new>
 
 using namespace Qt::Literals::StringLiterals;
 
@@ -116,6 +118,21 @@ QString refusedOutput(const app::SimOptions &options)
 
 int runScene(const app::SimOptions &options, app::RunSummary &summary);
 
+// a scene that needs more memory than the process may have (a file of millions of particles, a
+// crowd of overlapping ones, a cap set with ulimit -v) is a message and exit 2, never an abort.
+// What the run held is freed by the time the exception gets here, so the message can be made;
+// the steps catch their own, to say which step.
+int runSceneWithinMemory(const app::SimOptions &options, app::RunSummary &summary)
+{
+    try {
+        return runScene(options, summary);
+    } catch (const std::bad_alloc &) {
+        summary.error = options.scenePath + u": out of memory while loading and preparing the scene: it needs "
+                                            "more memory than this process may use (see ulimit -v)"_s;
+        return failWith(summary.error);
+    }
+}
+
 // --replay: the recording run again from its start; its final state must hash as recorded
 int replaySession(const app::SimOptions &options)
 {
@@ -125,7 +142,13 @@ int replaySession(const app::SimOptions &options)
     const ui::SessionRecording &recording = *loaded.recording;
     QElapsedTimer clock;
     clock.start();
-    const ui::ReplayResult replayed = ui::replay(recording);
+    ui::ReplayResult replayed;
+    try {
+        replayed = ui::replay(recording);
+    } catch (const std::bad_alloc &) {
+        return failWith(options.scenePath + u": out of memory: the replay needs more memory than this process may "
+                                            "use (see ulimit -v)"_s);
+    }
     if (!replayed.error.empty()) {
         failWith(options.scenePath + u": "_s + QString::fromStdString(replayed.error));
         return kExitReplayDiffers;
@@ -186,7 +209,7 @@ int main(int argc, char *argv[])
     app::RunSummary summary;
     summary.scene = options.scenePath;
     summary.overrides = app::overridesApplied(options);
-    const int code = runScene(options, summary);
+    const int code = runSceneWithinMemory(options, summary);
     return finish(reportSummary(summary, options.summaryJsonPath, options.summaryCsvPath, code));
 }
 
@@ -256,11 +279,17 @@ int runScene(const app::SimOptions &options, app::RunSummary &summary)
         if (rendering)
             until = std::min(until, frames.nextStep(*steps));
         timer.start();
-        while (state.step < until)
-            if (!core::step(*model, state, work)) {
-                blewUp = true;
-                break;
-            }
+        try {
+            while (state.step < until)
+                if (!core::step(*model, state, work)) {
+                    blewUp = true;
+                    break;
+                }
+        } catch (const std::bad_alloc &) {
+            work = core::Workspace{};  // the step's scratch let go before anything else is made
+            return failRun(options.scenePath + u": out of memory in step %1: the step needs more memory than this "
+                                                "process may use (see ulimit -v)"_s.arg(state.step + 1));
+        }
         nanoseconds += timer.nsecsElapsed();
         if (tracing && !blewUp && state.step % options.every == 0)
             trace.writeRows(state);

@@ -72,8 +72,8 @@ struct ContactScratch {
 
     double drift = 0.0;  // s: β h, how far the velocity solve's changes move the sub-step's end, per m/s
 
-    std::vector<Contact> contacts;
-    std::vector<Contact> sorted;  // the same, in the order they are solved
+    std::vector<Contact> contacts;  // as found, then in the order they are solved (sorted by level)
+    std::vector<int> place;         // while sorting: where each contact goes
     // the pair contacts as an adjacency list, for the levels: particle p's neighbours are
     // neighbours[neighbourStart[p] .. neighbourStart[p + 1])
     std::vector<int> neighbourStart;

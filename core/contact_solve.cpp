@@ -210,16 +210,25 @@ void sortByLevel(const Model &model, ContactScratch &scratch)
         scratch.levelStart[std::size_t(c.order) + 1] += 1;
     for (std::size_t l = 1; l < scratch.levelStart.size(); ++l)
         scratch.levelStart[l] += scratch.levelStart[l - 1];
-    scratch.sorted.resize(scratch.contacts.size());
-    for (const Contact &c : scratch.contacts)
-        scratch.sorted[std::size_t(scratch.levelStart[std::size_t(c.order)]++)] = c;
+    // moved into their places in the same array, following the permutation's cycles: a sorted copy
+    // would double the solver's largest scratch (about 200 bytes a contact)
+    std::vector<int> &place = scratch.place;
+    place.resize(scratch.contacts.size());
+    for (std::size_t k = 0; k < scratch.contacts.size(); ++k)
+        place[k] = scratch.levelStart[std::size_t(scratch.contacts[k].order)]++;
+    for (std::size_t k = 0; k < place.size(); ++k)
+        while (place[k] != int(k)) {
+            const auto to = std::size_t(place[k]);
+            std::swap(scratch.contacts[k], scratch.contacts[to]);
+            std::swap(place[k], place[to]);
+        }
 }
 
 // the inverse masses of each contact's two sides, in the iterations and in the last, where the side
 // nearer the ground stands still; found once, since every iteration of both solves reads them
 void setWeights(const Model &model, ContactScratch &scratch)
 {
-    for (Contact &c : scratch.sorted) {
+    for (Contact &c : scratch.contacts) {
         c.weights = {model.invMass[c.i], c.withCollider() ? 0.0 : model.invMass[c.j]};
         c.shockWeights = c.weights;
         if (c.weights.j != 0.0) {
@@ -273,7 +282,7 @@ void warmStart(State &state, ContactScratch &scratch)
     const std::vector<ContactImpulse> &last = state.contactImpulses;
     if (last.empty())
         return;
-    for (Contact &c : scratch.sorted) {
+    for (Contact &c : scratch.contacts) {
         ContactImpulse key;
         key.i = c.i;
         key.j = c.j;
@@ -298,7 +307,7 @@ void keepImpulses(State &state, const ContactScratch &scratch)
 {
     std::vector<ContactImpulse> &kept = state.contactImpulses;
     kept.clear();
-    for (const Contact &c : scratch.sorted)
+    for (const Contact &c : scratch.contacts)
         if (c.normalImpulse > 0.0)
             kept.push_back(ContactImpulse{c.i, c.j, c.normalImpulse, c.frictionImpulse});
     std::sort(kept.begin(), kept.end());
@@ -310,7 +319,7 @@ void solveVelocities(State &state, ContactScratch &scratch)
     warmStart(state, scratch);
     for (int iteration = 0; iteration < kVelocityIterations; ++iteration) {
         const bool shock = iteration == kVelocityIterations - 1;
-        for (Contact &c : scratch.sorted) {
+        for (Contact &c : scratch.contacts) {
             const Weights &w = weights(c, shock);
             if (!(w.sum() > 0.0))
                 continue;
@@ -355,7 +364,7 @@ void solvePositions(const Model &model, State &state, ContactScratch &scratch)
 {
     for (int iteration = 0; iteration < kPositionIterations; ++iteration) {
         const bool shock = iteration == kPositionIterations - 1;
-        for (Contact &c : scratch.sorted) {
+        for (Contact &c : scratch.contacts) {
             const Weights &w = weights(c, shock);
             if (!(w.sum() > 0.0))
                 continue;
@@ -400,7 +409,7 @@ void keepOutOfColliders(const Model &model, State &state, ContactScratch &scratc
                 state.position.col(p) += (model.radius[p] - s.distance) * s.normal;
         }
     };
-    for (const Contact &c : scratch.sorted) {
+    for (const Contact &c : scratch.contacts) {
         keepOut(c.i);
         if (!c.withCollider() && model.invMass[c.j] != 0.0)
             keepOut(c.j);
@@ -412,7 +421,7 @@ void keepOutOfColliders(const Model &model, State &state, ContactScratch &scratc
 // out, so that what stays put also stands still
 void stopStuckSlip(State &state, ContactScratch &scratch)
 {
-    for (const Contact &c : scratch.sorted) {
+    for (const Contact &c : scratch.contacts) {
         if (!c.stuck)
             continue;
         const Weights &w = weights(c, false);

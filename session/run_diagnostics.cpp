@@ -94,6 +94,8 @@ bool RunDiagnostics::updateStability(const std::shared_ptr<const core::Model> &m
 
 std::optional<std::string> RunDiagnostics::takeBlowupMessage(const core::Model &model, const core::State &state)
 {
+    if (m_outOfMemory)
+        return std::exchange(m_outOfMemory, std::nullopt);
     if (!m_blowup)
         return std::nullopt;
     std::optional<core::Blowup> blowup;

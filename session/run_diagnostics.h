@@ -58,6 +58,8 @@ public:
     bool updateStability(const std::shared_ptr<const core::Model> &model, const core::State &state);
     // a blow-up, kept until takeBlowupMessage() explains it at state, the last good one
     void blewUp(std::optional<core::Blowup> blowup) { m_blowup = std::move(blowup); }
+    // a step that could not be taken for want of memory, said by takeBlowupMessage() like a blow-up
+    void ranOutOfMemory(std::string message) { m_outOfMemory = std::move(message); }
     std::optional<std::string> takeBlowupMessage(const core::Model &model, const core::State &state);
     // the integrator and substeps for a tolerance (m per sub-step) at state, with the cost of a
     // force evaluation as measured in the run (profile), else timed now; an empty plan without a model
@@ -87,6 +89,7 @@ private:
     void estimate(bool counted, const std::shared_ptr<const core::Model> &model, const core::State &state);
 
     std::optional<core::Blowup> m_blowup;
+    std::optional<std::string> m_outOfMemory;
     std::optional<core::StabilityLimit> m_stability;
     bool m_stabilityStale = true;  // the model changed since the limit was analysed
     std::string m_pairSpeedWarning;

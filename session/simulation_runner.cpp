@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <new>
 #include <random>
+#include <string>
 #include <utility>
 
 namespace ui {
@@ -325,7 +327,23 @@ void SimulationRunner::applyGrab()
 bool SimulationRunner::stepOnce()
 {
     applyGrab();
-    if (core::step(*m_model, m_state, m_work)) {
+    bool taken = false;
+    try {
+        taken = core::step(*m_model, m_state, m_work);
+    } catch (const std::bad_alloc &) {
+        // a step that needs more memory than there is (a crowd of overlapping particles, a cap
+        // set with ulimit -v): the scratch arrays are let go, and the run stops like a blow-up
+        core::Workspace fresh;
+        fresh.profile = m_work.profile;
+        fresh.interrupt = m_work.interrupt;
+        m_work = std::move(fresh);
+        m_diagnostics.ranOutOfMemory("Out of memory in step " + std::to_string(m_lastGood.step + 1) + " (" +
+                                     std::to_string(m_model->particleCount()) +
+                                     " particles): the step needs more memory than is free. Paused at the "
+                                     "last good state.");
+        return stopAtLastGood();
+    }
+    if (taken) {
         m_scrubber.timeline().afterStep(m_model, m_scene, m_state, heldForces());
         return true;
     }
@@ -333,6 +351,11 @@ bool SimulationRunner::stepOnce()
         return false;  // not taken: the caller goes back to where it began
     // blown up: stop, keep the report, and go back to the last good state
     m_diagnostics.blewUp(std::exchange(m_work.blowup, std::nullopt));
+    return stopAtLastGood();
+}
+
+bool SimulationRunner::stopAtLastGood()
+{
     m_running = false;
     m_owed = 0.0;
     m_state = m_lastGood;

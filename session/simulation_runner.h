@@ -132,6 +132,8 @@ private:
     void grab(const GrabEdit &edit);
     void applyGrab();
     bool stepOnce();
+    // a step that failed: the run stops and goes back to m_lastGood; false, for stepOnce
+    bool stopAtLastGood();
     // one step, timed (m_lastStepSeconds), that the interrupt flag may cut short when start is given
     // (m_state == *start; null: it runs to its end); true if taken (false: blown up, or cut short
     // with m_state back at *start and m_work.interrupted set)

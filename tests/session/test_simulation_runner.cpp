@@ -10,11 +10,14 @@
 #include "core/io/scene_file.h"
 #include "core/step.h"
 
+#include <QFile>
 #include <QRegularExpression>
 #include <QtTest>
 #include <atomic>
 #include <chrono>
 #include <thread>
+
+#include <sys/resource.h>
 
 namespace {
 
@@ -47,6 +50,34 @@ ui::SimulationRunner runnerWith(std::shared_ptr<const core::SceneDesc> scene)
 
 constexpr double kNoBudgetLimit = 1e9;  // s
 
+// the process's address space capped at what it has mapped now plus `room` bytes, while it lives
+// (RLIMIT_AS, as `ulimit -v` sets it: an allocation past the cap throws std::bad_alloc)
+class AddressSpaceCap {
+public:
+    explicit AddressSpaceCap(std::size_t room)
+    {
+        getrlimit(RLIMIT_AS, &m_before);
+        QFile status(QStringLiteral("/proc/self/status"));
+        if (!status.open(QIODevice::ReadOnly))
+            return;
+        const QRegularExpressionMatch size =
+            QRegularExpression(QStringLiteral("VmSize:\\s*(\\d+) kB")).match(QString::fromLatin1(status.readAll()));
+        if (!size.hasMatch())
+            return;
+        rlimit capped = m_before;
+        capped.rlim_cur = static_cast<rlim_t>(size.captured(1).toULongLong() * 1024 + room);
+        m_capped = setrlimit(RLIMIT_AS, &capped) == 0;
+    }
+    ~AddressSpaceCap() { setrlimit(RLIMIT_AS, &m_before); }
+    AddressSpaceCap(const AddressSpaceCap &) = delete;
+    AddressSpaceCap &operator=(const AddressSpaceCap &) = delete;
+    bool capped() const { return m_capped; }
+
+private:
+    rlimit m_before{};
+    bool m_capped = false;
+};
+
 }  // namespace
 
 class TestSimulationRunner : public QObject {
@@ -69,6 +100,7 @@ private slots:
     void steeringPushesTheParticle();
     void steeringSurvivesResetButNotReplace();
     void blowupPausesAndRestoresTheLastGoodState();
+    void outOfMemoryPausesAtTheLastGoodState();
     void stabilityLimitFollowsEdits();
     void pairSpeedWarningFollowsTheRun();
     void examplesStayInsideThePairSpeedLimit_data();
@@ -356,6 +388,43 @@ void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
     // it can go on from there once the scene is fixed
     runner.apply(ui::SetSceneEdit{springScene(100.0, 0.1), ui::SceneChange::Parameters});
     runner.apply(ui::StepOnce{});
+    QVERIFY(!runner.takeBlowupMessage().has_value());
+}
+
+void TestSimulationRunner::outOfMemoryPausesAtTheLastGoodState()
+{
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    QSKIP("the sanitizers reserve terabytes of address space: a cap on it cannot be set");
+#endif
+    // 20 000 particles on one spot: each has up to 64 contacts, and the contact solver's scratch
+    // for them is over 100 MB, more than the 32 MB the step is allowed here
+    auto scene = std::make_shared<core::SceneDesc>();
+    scene->name = "crowd";
+    scene->settings.particleCollisions = true;
+    scene->settings.contactSolver = core::ContactSolver::Iterative;
+    scene->particles.assign(20000, core::ParticleDesc{});
+    ui::SimulationRunner runner = runnerWith(scene);
+    const core::State start = runner.state();
+    {
+        const AddressSpaceCap cap(32u << 20);
+        QVERIFY(cap.capped());
+        runner.apply(ui::StepOnce{});
+    }
+
+    // paused at the state before the step, saying why
+    QVERIFY(!runner.isRunning());
+    QCOMPARE(runner.state().step, std::uint64_t{0});
+    QVERIFY(runner.state().position == start.position);
+    const std::optional<std::string> message = runner.takeBlowupMessage();
+    QVERIFY(message.has_value());
+    QCOMPARE(QString::fromStdString(*message),
+             QStringLiteral("Out of memory in step 1 (20000 particles): the step needs more memory than is free. "
+                            "Paused at the last good state."));
+    QVERIFY(!runner.takeBlowupMessage().has_value());
+
+    // with the memory back, the same step is taken
+    runner.apply(ui::StepOnce{});
+    QCOMPARE(runner.state().step, std::uint64_t{1});
     QVERIFY(!runner.takeBlowupMessage().has_value());
 }
 
