@@ -301,7 +301,7 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
             << format(1.0 / model.invMass.maxCoeff()) << " kg) is too strong for the sub-step: " << name
             << " needs sub-steps under " << format(dragStep) << " s, and the sub-step is " << format(h) << " s; "
             << advice(dragStep, ", or a lower viscosity");
-    } else if (maxStep < h) {
+    } else if (!(maxStep >= h)) {  // NaN too: ω² past a double's range leaves the analysis no number
         const double stiffest = model.springCount() > 0 ? model.stiffness.maxCoeff() : 0.0;
         if (!std::isfinite(limit.omegaMax) || (maxStep == 0.0 && model.integrator != Integrator::ExplicitEuler)) {
             out << " The springs' stiffest vibration is faster than a double can hold (stiffness up to "

@@ -272,19 +272,33 @@ void TestStability::blowupAdviceIsPossible_data()
     QTest::addColumn<double>("timeStep");
     QTest::addColumn<QString>("says");
     QTest::addColumn<QString>("neverSays");
+    QTest::addColumn<int>("integrator");
+    const int symplectic = int(core::Integrator::SymplecticEuler);
     // ω = 3e14 rad/s: 1.8e12 substeps would be needed, past the int range and the 10 000 allowed
     QTest::newRow("far too many substeps") << 1e-20 << 1e9 << 0.0 << 0.01
                                            << "it would take 1.8e+12 substeps, more than the 1e+04 allowed: use the "
                                               "implicit-euler or xpbd integrator, softer springs or heavier particles"
-                                           << "use ≥ -";
-    QTest::newRow("more than allowed") << 1e-5 << 1e9 << 0.0 << 0.01 << "more than the 1e+04 allowed" << "use ≥ ";
+                                           << "use ≥ -" << symplectic;
+    QTest::newRow("more than allowed") << 1e-5 << 1e9 << 0.0 << 0.01 << "more than the 1e+04 allowed" << "use ≥ "
+                                       << symplectic;
     // drag 1e6 kg/s on 1e-9 kg: a time constant of 1e-15 s, named as the cause
     QTest::newRow("drag") << 1e-9 << 1.0 << 1e6 << 0.01
                           << "The drag (viscosity 1e+06 kg/s on a particle of 1e-09 kg) is too strong for the sub-step"
-                          << "within the springs' stability limit";
+                          << "within the springs' stability limit" << symplectic;
     // ω = 10 rad/s, limit 0.2 s; a step of 0.201 s reads as such, not as "1× the limit 0.2 s"
     QTest::newRow("just past the limit") << 1.0 << 100.0 << 0.0 << 0.201
-                                         << "The time step 0.201 s is 1.005× the stability limit 0.2 s" << "1× the";
+                                         << "The time step 0.201 s is 1.005× the stability limit 0.2 s" << "1× the"
+                                         << symplectic;
+    // ω² = 1e600 overflows a double: no sub-step is stable, said as such, not as a step within
+    // the limit
+    QTest::newRow("omega overflows") << 1e-300 << 1e300 << 0.0 << 0.01
+                                     << "The springs' stiffest vibration is faster than a double can hold"
+                                     << "within the springs' stability limit" << symplectic;
+    // rk4 has a limit on undamped springs (ω h ≤ 2√2: 0.283 s at ω = 10 rad/s), not "unstable at
+    // any step"
+    QTest::newRow("rk4 past its limit") << 1.0 << 100.0 << 0.0 << 0.5
+                                        << "is 1.8× the stability limit 0.28 s for stiffness 1e+02 N/m with rk4"
+                                        << "at any step" << int(core::Integrator::Rk4);
 }
 
 void TestStability::blowupAdviceIsPossible()
@@ -295,6 +309,7 @@ void TestStability::blowupAdviceIsPossible()
     QFETCH(double, timeStep);
     QFETCH(QString, says);
     QFETCH(QString, neverSays);
+    QFETCH(int, integrator);
     core::OscillatorOptions options;
     options.stiffness = stiffness;
     options.damping = 0.0;
@@ -303,6 +318,7 @@ void TestStability::blowupAdviceIsPossible()
         p.mass = mass;
     scene.settings.viscosity = viscosity;
     scene.settings.timeStep = timeStep;
+    scene.settings.integrator = static_cast<core::Integrator>(integrator);
     test::Sim sim = test::compile(scene);
     const core::Blowup blowup{1, core::Blowup::Quantity::Velocity, 1e12, 3, 2.0 * timeStep};
     const QString text = QString::fromStdString(

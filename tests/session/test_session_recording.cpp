@@ -207,6 +207,15 @@ void TestSessionRecording::indexIntoAnEmptySceneIsNamed()
                                                         QStringLiteral("s.json"));
     QVERIFY(!loaded.recording);
     QVERIFY2(loaded.error.contains(QStringLiteral("expected -1: the scene has no particles")), qPrintable(loaded.error));
+
+    // and a break of a spring in a scene with none: no range "(0 to -1)" either
+    QVERIFY(json.contains("\"positions\": "));
+    const ui::RecordingLoad broken = ui::parseRecording(
+        QByteArray(json).replace("\"positions\": ", "\"breaks\": [{\"spring\": 0, \"step\": 1, \"time\": 0}], \"positions\": "),
+        QStringLiteral("s.json"));
+    QVERIFY(!broken.recording);
+    QVERIFY2(broken.error.contains(QStringLiteral(".spring: expected a spring of the scene, which has none")),
+             qPrintable(broken.error));
 }
 
 void TestSessionRecording::nothingIsRecordedWithoutAStart()
