@@ -13,6 +13,7 @@
 
 #include "scene_file.h"
 
+#include "json_pull.h"
 #include "json_scan.h"
 #include "safe_write.h"
 #include "scene_reader.h"
@@ -37,6 +38,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <system_error>
 
 namespace io {
@@ -54,6 +56,10 @@ QByteArray formatNumber(double value)
 
 namespace {
 
+// the largest text that is not one JSON object whose message QJsonDocument makes (from the whole
+// text, about ten times its size); past it the reader's own place of the fault is the message
+constexpr qsizetype kLargestTextForQtMessage = qsizetype(16) << 20;
+
 using namespace Qt::Literals::StringLiterals;
 
 bool isWordChar(char c)
@@ -68,7 +74,7 @@ QString location(const QByteArray &json, qsizetype offset)
     const qsizetype lineStart = json.lastIndexOf('\n', offset - 1) + 1;
     return QStringLiteral("at byte %1, line %2, column %3")
         .arg(offset)
-        .arg(json.left(offset).count('\n') + 1)
+        .arg(std::count(json.constData(), json.constData() + offset, '\n') + 1)
         .arg(offset - lineStart + 1);
 }
 
@@ -294,6 +300,20 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
     if (std::optional<LoadResult> read = readSceneText(json, sourceName, lengths))
         return std::move(*read);
 
+    // not one JSON object. A large text's message comes from the reader's own place of the fault:
+    // QJsonDocument would build a tree of all the text before it (216 MB for a 21 MB file cut at
+    // its end) only for the words of its message
+    if (json.size() > kLargestTextForQtMessage) {
+        JsonPull pull(json);
+        for (JsonToken token = pull.next(); token != JsonToken::End && token != JsonToken::Error; token = pull.next()) {
+        }
+        const qsizetype offset = pull.errorOffset() >= 0 ? pull.errorOffset() : json.size();
+        const QString path = scanJson(json, offset).pathAtStop;
+        const QString reason = u"not valid JSON (a fault in the text "_s + location(json, offset) + u")"_s;
+        result.error = path.isEmpty() ? sourceName + u": "_s + reason : sourceName + u": "_s + path + u": "_s + reason;
+        return result;
+    }
+
     // not one JSON object: QJsonDocument says why (only a refused file gets this far)
     QJsonParseError parseError{};
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
@@ -347,13 +367,24 @@ QString readFileWithin(const QString &path, qint64 limitBytes, QByteArray &bytes
 
 LoadResult loadScene(const QString &path, const LoadLimits &limits)
 {
-    QByteArray json;
-    if (QString failure = readFileWithin(path, limits.fileBytes, json); !failure.isEmpty()) {
+    // a file within the limits that still needs more memory than is free (a large file where
+    // little is left, or one that is not JSON, whose message QJsonDocument makes from a tree of
+    // all the text before the fault): a message, with the file's bytes let go, never an abort
+    // that takes the editor's unsaved work with it
+    try {
+        QByteArray json;
+        if (QString failure = readFileWithin(path, limits.fileBytes, json); !failure.isEmpty()) {
+            LoadResult result;
+            result.error = std::move(failure);
+            return result;
+        }
+        return parseScene(json, QDir::toNativeSeparators(path), limits);
+    } catch (const std::bad_alloc &) {
         LoadResult result;
-        result.error = std::move(failure);
+        result.error = QDir::toNativeSeparators(path) + u": cannot load: out of memory (reading it needs more "
+                                                        "memory than is free)"_s;
         return result;
     }
-    return parseScene(json, QDir::toNativeSeparators(path), limits);
 }
 
 QByteArray sceneToJson(const core::SceneDesc &scene)

@@ -8,6 +8,7 @@
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
 #include "core/validate.h"
+#include "tests/address_space_cap.h"
 
 #include <QDir>
 #include <QFile>
@@ -275,6 +276,7 @@ class TestSceneFile : public QObject {
 
 private slots:
     void baseIsValid();
+    void outOfMemoryIsAMessage();
     void badFile_data();
     void badFile();
     void unreadableFile_data();
@@ -1234,6 +1236,39 @@ void TestSceneFile::endlessDeviceRefused()
     const io::LoadResult result = io::loadScene(QStringLiteral("/dev/zero"), limits);
     QVERIFY(!result.ok());
     QCOMPARE(result.error, u"/dev/zero: the file is too large: more than the limit of 1000 bytes"_s);
+}
+
+void TestSceneFile::outOfMemoryIsAMessage()
+{
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    QSKIP("the sanitizers reserve terabytes of address space: a cap on it cannot be set");
+#endif
+    // a file of 300 000 particles (26 MB) with 8 MB more than the test has mapped: reading it
+    // runs out of memory, and the load says so instead of aborting; with the memory back it loads
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("big.json"));
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("{\"format\": \"springlab-scene\", \"version\": 1, \"name\": \"big\", \"particles\": [");
+        const QByteArray particle = "{\"position\": [0.125, 1.5, -2.25], \"velocity\": [0, 0, 0], \"mass\": 1, \"radius\": 0.1, \"pinned\": false},\n";
+        for (int i = 0; i < 300000; ++i)
+            file.write(particle);
+        file.write("{\"position\": [0, 0, 0], \"velocity\": [0, 0, 0], \"mass\": 1, \"radius\": 0.1, \"pinned\": false}], \"springs\": [], \"planes\": []}\n");
+    }
+    io::LoadResult starved;
+    {
+        const test::AddressSpaceCap cap(8u << 20);
+        QVERIFY(cap.capped());
+        starved = io::loadScene(path);
+    }
+    QVERIFY(!starved.ok());
+    QCOMPARE(starved.error, QDir::toNativeSeparators(path) +
+                                QStringLiteral(": cannot load: out of memory (reading it needs more memory than is free)"));
+    const io::LoadResult fed = io::loadScene(path);
+    QVERIFY2(fed.ok(), qPrintable(fed.error));
+    QCOMPARE(fed.scene->particles.size(), std::size_t(300001));
 }
 
 QTEST_GUILESS_MAIN(TestSceneFile)

@@ -9,15 +9,13 @@
 #include "core/error_estimate.h"
 #include "core/io/scene_file.h"
 #include "core/step.h"
+#include "tests/address_space_cap.h"
 
-#include <QFile>
 #include <QRegularExpression>
 #include <QtTest>
 #include <atomic>
 #include <chrono>
 #include <thread>
-
-#include <sys/resource.h>
 
 namespace {
 
@@ -49,34 +47,6 @@ ui::SimulationRunner runnerWith(std::shared_ptr<const core::SceneDesc> scene)
 }
 
 constexpr double kNoBudgetLimit = 1e9;  // s
-
-// the process's address space capped at what it has mapped now plus `room` bytes, while it lives
-// (RLIMIT_AS, as `ulimit -v` sets it: an allocation past the cap throws std::bad_alloc)
-class AddressSpaceCap {
-public:
-    explicit AddressSpaceCap(std::size_t room)
-    {
-        getrlimit(RLIMIT_AS, &m_before);
-        QFile status(QStringLiteral("/proc/self/status"));
-        if (!status.open(QIODevice::ReadOnly))
-            return;
-        const QRegularExpressionMatch size =
-            QRegularExpression(QStringLiteral("VmSize:\\s*(\\d+) kB")).match(QString::fromLatin1(status.readAll()));
-        if (!size.hasMatch())
-            return;
-        rlimit capped = m_before;
-        capped.rlim_cur = static_cast<rlim_t>(size.captured(1).toULongLong() * 1024 + room);
-        m_capped = setrlimit(RLIMIT_AS, &capped) == 0;
-    }
-    ~AddressSpaceCap() { setrlimit(RLIMIT_AS, &m_before); }
-    AddressSpaceCap(const AddressSpaceCap &) = delete;
-    AddressSpaceCap &operator=(const AddressSpaceCap &) = delete;
-    bool capped() const { return m_capped; }
-
-private:
-    rlimit m_before{};
-    bool m_capped = false;
-};
 
 }  // namespace
 
@@ -406,7 +376,7 @@ void TestSimulationRunner::outOfMemoryPausesAtTheLastGoodState()
     ui::SimulationRunner runner = runnerWith(scene);
     const core::State start = runner.state();
     {
-        const AddressSpaceCap cap(32u << 20);
+        const test::AddressSpaceCap cap(32u << 20);
         QVERIFY(cap.capped());
         runner.apply(ui::StepOnce{});
     }
