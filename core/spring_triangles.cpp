@@ -217,6 +217,9 @@ SpringTriangles findSpringTriangles(const SceneDesc &scene)
     }
 
     SpringTriangles triangles;
+    triangles.springEnds.reserve(2 * scene.springs.size());
+    for (const SpringDesc &s : scene.springs)
+        triangles.springEnds.insert(triangles.springEnds.end(), {s.a, s.b});
     triangles.corners.reserve(3 * taken.size());
     triangles.sides.reserve(3 * taken.size());
     for (const Candidate &c : taken) {

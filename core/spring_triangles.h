@@ -22,6 +22,9 @@ struct SpringTriangles {
     std::vector<int> corners;
     // the springs of its sides, three per triangle: side s joins corners s and (s + 1) % 3
     std::vector<int> sides;
+    // the ends a and b of every spring of the scene, two per spring, so that a drawing can tell
+    // the springs that lie within the sheet (a cloth's bend springs are no triangle's sides)
+    std::vector<int> springEnds;
 
     int count() const { return static_cast<int>(corners.size() / 3); }
     bool empty() const { return corners.empty(); }

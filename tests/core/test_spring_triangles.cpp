@@ -158,6 +158,7 @@ void TestSpringTriangles::snapshotsShareTheModelsTriangles()
     const auto model = core::compileModel(scene);
     QVERIFY(model->triangles);
     QCOMPARE(model->triangles->count(), 8);
+    QCOMPARE(model->triangles->springEnds.size(), 2 * scene.springs.size());
     const core::State state = core::makeState(*model, scene);
     QCOMPARE(core::makeSnapshot(*model, state)->triangles, model->triangles);
 
