@@ -19,6 +19,7 @@
 #include <QtTest>
 
 #include "editor_test_setup.h"
+#include "line_thickness.h"
 
 #include <cmath>
 
@@ -110,31 +111,6 @@ int springJoining(const core::SceneDesc &scene, int a, int b)
         if (std::minmax(scene.springs[k].a, scene.springs[k].b) == std::minmax(a, b))
             return int(k);
     return -1;
-}
-
-// how many pixels thick the line across column x near row y is: the run of pixels there that
-// differ from the background by more than half the line's contrast
-int lineThickness(const QImage &image, int x, int y)
-{
-    const QColor background = toColour(ui::kBackgroundColour);
-    auto contrast = [&](int row) {
-        const QColor c = image.pixelColor(x, row);
-        return std::max({std::abs(c.red() - background.red()), std::abs(c.green() - background.green()),
-                         std::abs(c.blue() - background.blue())});
-    };
-    int peak = y;
-    for (int row = std::max(0, y - 4); row <= std::min(image.height() - 1, y + 4); ++row)
-        if (contrast(row) > contrast(peak))
-            peak = row;
-    const int half = contrast(peak) / 2;
-    if (half < 20)
-        return 0;
-    int top = peak, bottom = peak;
-    while (top > 0 && contrast(top - 1) > half)
-        --top;
-    while (bottom + 1 < image.height() && contrast(bottom + 1) > half)
-        ++bottom;
-    return bottom - top + 1;
 }
 
 }  // namespace
@@ -771,21 +747,20 @@ void TestViewport::springsAreWideAndScaleWithTheImage()
     const QPoint at = camera.project(QVector3D(-0.5f, 0.0f, 0.0f)).value().toPoint();
 
     // 2 pixels in the view, 8 in an image 4 times its size
-    const int inView = lineThickness(grab(), at.x(), at.y());
-    QCOMPARE_GE(inView, 2);
-    QCOMPARE_LE(inView, 3);
+    const double inView = test::lineThickness(grab(), at.x(), at.y(), 4);
+    QVERIFY2(inView >= 1.5 && inView <= 3.0, qPrintable(QString::number(inView)));
     QString error;
     const QImage large = m_viewport->renderImage(kViewportSize * 4, &error);
     QVERIFY2(!large.isNull(), qPrintable(error));
     QCOMPARE(m_viewport->lineScale(large.height()), 4.0);
-    const int inImage = lineThickness(large, 4 * at.x() + 1, 4 * at.y() + 1);
-    QVERIFY2(inImage >= 3 * inView && inImage <= 5 * inView,
+    const double inImage = test::lineThickness(large, 4 * at.x() + 1, 4 * at.y() + 1, 16);
+    QVERIFY2(inImage >= 3.0 * inView && inImage <= 5.0 * inView,
              qPrintable(QStringLiteral("%1 px in the view, %2 px in the image").arg(inView).arg(inImage)));
 
     // selected: wider, in the selection's colour
     m_viewport->setSpringSelection({0});
     const QImage selected = grab();
-    QCOMPARE_GE(lineThickness(selected, at.x(), at.y()), 2 * inView - 1);
+    QCOMPARE_GE(test::lineThickness(selected, at.x(), at.y(), 4), 1.5 * inView);
     QString why;
     QVERIFY2(sameHue(colourAt(selected, *m_viewport, at), ui::kSelectedColour, &why), qPrintable(why));
 }
