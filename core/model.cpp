@@ -29,7 +29,7 @@ void setSubsteps(Model &model, int substeps)
 
 }  // namespace
 
-std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
+std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *before)
 {
     assert(!findProblem(scene) && "compileModel needs a validated scene");
     auto model = std::make_shared<Model>();
@@ -131,6 +131,14 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene)
                                                       plan.springBreaks});
 
     setIntegrator(*model, s.integrator);
+
+    // the triangles the viewport draws a cloth with: the model's before the edit if it had the
+    // same springs between the same particles
+    if (before && before->particleCount() == n && before->springA == model->springA &&
+        before->springB == model->springB)
+        model->triangles = before->triangles;
+    else if (plan.springs)
+        model->triangles = std::make_shared<const SpringTriangles>(findSpringTriangles(scene));
 
     // auto substeps: as many as the stability limit at the initial state asks, and no fewer than the
     // scene's own

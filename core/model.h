@@ -6,6 +6,7 @@
 #include "colliders.h"
 #include "scene.h"
 #include "spring_layout.h"
+#include "spring_triangles.h"
 
 #include <Eigen/Core>
 #include <memory>
@@ -82,6 +83,9 @@ struct Model {
     // bits as on one; colour c is xpbdOrder[xpbdColourStart[c] .. xpbdColourStart[c + 1])
     std::vector<int> xpbdOrder;
     std::vector<int> xpbdColourStart;
+    // the spring mesh's triangles, for drawing it as a sheet (spring_triangles.h); found once, here,
+    // and shared by every snapshot of the model
+    std::shared_ptr<const SpringTriangles> triangles;
 
     // planes n·p = offset, unit normals
     Eigen::Matrix3Xd planeNormal;
@@ -98,8 +102,10 @@ struct Model {
     double subStep() const { return timeStep / substeps; }
 };
 
-// compiles a scene that findProblem() accepts (asserted in debug builds)
-std::shared_ptr<const Model> compileModel(const SceneDesc &scene);
+// compiles a scene that findProblem() accepts (asserted in debug builds); `before`, the model of
+// the same scene before an edit, lends its triangles when the edit left every spring's ends as
+// they were (finding them is most of the cost of compiling a large cloth)
+std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *before = nullptr);
 
 // the model's integrator, and the sub-step path the plan takes with it
 void setIntegrator(Model &model, Integrator integrator);

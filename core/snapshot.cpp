@@ -42,6 +42,7 @@ std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &st
 
     snapshot->springBroken = state.springBroken;
     snapshot->breakCount = state.breaks.size();
+    snapshot->triangles = model.triangles;
 
     // diagnostics
     snapshot->energies = energies(model, state);

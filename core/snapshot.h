@@ -28,6 +28,8 @@ struct Snapshot {
     // 1 per broken spring (drawn as nothing); empty when no spring of the scene can break
     std::vector<std::uint8_t> springBroken;
     std::uint64_t breakCount = 0;  // springs broken so far
+    // the spring mesh's triangles (the model's, shared); null or empty when it has none
+    std::shared_ptr<const SpringTriangles> triangles;
 
     Energies energies;
     Eigen::Vector3d momentum = Eigen::Vector3d::Zero();

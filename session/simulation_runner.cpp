@@ -233,7 +233,8 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
 {
     const std::shared_ptr<const core::SceneDesc> previous = m_scene;
     m_scene = edit.scene;
-    m_model = core::compileModel(*m_scene);
+    // another scene is compiled afresh; an edit keeps the spring triangles if it left the springs
+    m_model = core::compileModel(*m_scene, edit.change == SceneChange::Replace ? nullptr : m_model.get());
     // the run goes on through the edit as far as it can (carry_across_edit.h), else starts afresh
     if (!carryAcrossEdit(previous.get(), *m_scene, *m_model, edit.change, m_state))
         restart();

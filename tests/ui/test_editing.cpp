@@ -4,6 +4,7 @@
 // after. Waits are on the worker's frames, never fixed sleeps.
 
 #include "ui/viewport/edit_tools.h"
+#include "ui/viewport/guide_line.h"
 #include "ui/window/main_window.h"
 #include "ui/document/scene_document.h"
 #include "ui/simulation/simulation_controller.h"
@@ -56,6 +57,7 @@ private slots:
     void addToolSnapsToTheGrid();
     void pinToolPinsAndFrees();
     void springToolJoinsTwoParticlesAtTheirDistance();
+    void springToolDragsARubberBandToTheNextParticle();
     void boxSelectSelectsExactlyTheParticlesInside();
     void clickAndShiftClickSelect();
     void hoverShowsWhatAClickWouldPick();
@@ -249,6 +251,46 @@ void TestEditing::springToolJoinsTwoParticlesAtTheirDistance()
     // the same pair again is refused, the scene unchanged
     click(pixelOf(s.particles[1].position));
     click(pixelOf(s.particles[0].position));
+    QCOMPARE(scene().springs.size(), std::size_t(1));
+}
+
+void TestEditing::springToolDragsARubberBandToTheNextParticle()
+{
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({-1.0, 0.0, 0.0}), particle({1.0, 0.5, 0.3}), particle({0.0, 0.0, 1.0})};
+    open(s);
+    key(Qt::Key_4);
+    const ui::GuideLine *band = tools()->springBand();
+    QVERIFY(band && !band->isVisible());
+
+    // pressed on particle 0 and dragged: a line from it to the cursor, ending on the centre of a
+    // particle under the cursor
+    const QPoint from = pixelOf(s.particles[0].position);
+    const QPoint to = pixelOf(s.particles[1].position);
+    const QPoint between = (from + to) / 2 + QPoint(0, 30);
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(viewport(), between);
+    QVERIFY(band->isVisible());
+    QVERIFY((band->line().p1() - QPointF(from)).manhattanLength() < 2.0);
+    QCOMPARE(band->line().p2(), QPointF(between));
+    QTest::mouseMove(viewport(), to + QPoint(2, 1));
+    QVERIFY((band->line().p2() - viewport()->camera().project(toQt(s.particles[1].position)).value()).manhattanLength() < 0.01);
+
+    // released on particle 1: joined, and the band gone
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to);
+    QCOMPARE(scene().springs.size(), std::size_t(1));
+    QCOMPARE(std::pair(scene().springs[0].a, scene().springs[0].b), std::pair(0, 1));
+    QVERIFY(!band->isVisible());
+
+    // a click on particle 2 shows the band while the mouse moves with no button held; a click on
+    // empty space lets it go
+    click(pixelOf(s.particles[2].position));
+    QTest::mouseMove(viewport(), between);
+    QVERIFY(band->isVisible());
+    QCOMPARE(band->line().p2(), QPointF(between));
+    click(pixelOf({0.0, 0.0, -2.5}));
+    QCOMPARE(tools()->springStart(), -1);
+    QVERIFY(!band->isVisible());
     QCOMPARE(scene().springs.size(), std::size_t(1));
 }
 

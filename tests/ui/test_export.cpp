@@ -39,6 +39,7 @@
 #include <QtTest>
 
 #include "help_entries.h"
+#include "line_thickness.h"
 
 #include "editor_fixture.h"
 #include "tests/io/trace_read.h"
@@ -118,6 +119,7 @@ private slots:
 
     void shiftF2WritesAnImageOfTheTypedSize();
     void tooLargeASideIsSaidNotCut();
+    void linesScaleWithTheImage();
     void dialogStartsBesideTheSceneAndRemembers();
     void sequenceShowsTheStepAtEachFrameTime();
     void sequenceSaysClearlyWhenFfmpegIsNotInstalled();
@@ -238,6 +240,51 @@ void TestExport::shiftF2WritesAnImageOfTheTypedSize()
     QVERIFY(pixel);
     QVERIFY(isFree(image.pixelColor(pixel->toPoint())));
     QVERIFY(m_messages.isEmpty());
+}
+
+void TestExport::linesScaleWithTheImage()
+{
+    // one spring between two small pinned particles, exported at the view's size and at four
+    // times it: the spring is about four times as thick in the large image
+    core::SceneDesc scene = movingScene();
+    for (core::ParticleDesc &p : scene.particles) {
+        p.velocity.setZero();
+        p.pinned = true;
+        p.radius = 0.02;
+    }
+    // high over the grid, so that the sky is behind the spring
+    scene.particles[0].position = {-1.0, 3.0, 0.0};
+    scene.particles[1].position = {1.0, 3.0, 0.0};
+    scene.springs = {{0, 1, 10.0, 0.0, 2.0}};
+    m_window->document()->replace(scene, QString());
+    const auto frame = test::settledFrame(*m_window->controller());
+    QVERIFY(frame);
+    QTRY_VERIFY(m_window->viewport()->snapshot() == frame->snapshot);
+
+    const QSize view = m_window->viewport()->size() * m_window->viewport()->devicePixelRatio();
+    const int scales[2] = {1, 4};
+    double thickness[2] = {0.0, 0.0};
+    for (int k = 0; k < 2; ++k) {
+        const QString path = m_files.filePath(QStringLiteral("spring-%1.png").arg(scales[k]));
+        QString error;
+        QVERIFY2(m_window->exporter()->exportImage({path, view * scales[k]}, &error), qPrintable(error));
+        const QImage image(path);
+        QCOMPARE(image.size(), view * scales[k]);
+        // along a stretch of the spring around a quarter of the way, away from the particles,
+        // averaged over columns, since an image may have no multisampling to blend the edges
+        const ui::Camera camera = cameraFor(image.size());
+        constexpr int kColumns = 24;
+        for (int c = 0; c < kColumns; ++c) {
+            const auto pixel = camera.project(QVector3D(-0.6f + 0.2f * c / kColumns, 3.0f, 0.0f));
+            QVERIFY(pixel);
+            const double seen = test::lineThickness(image, pixel->toPoint().x(), pixel->toPoint().y(), 3 * scales[k]);
+            QVERIFY2(seen > 0.0, qPrintable(QStringLiteral("no line at %1, %2").arg(pixel->x()).arg(pixel->y())));
+            thickness[k] += seen / kColumns;
+        }
+    }
+    const double ratio = thickness[1] / thickness[0];
+    QVERIFY2(thickness[0] >= 1.5 && ratio >= 3.0 && ratio <= 5.0,
+             qPrintable(QStringLiteral("%1 px at the view's size, %2 px at 4 times it").arg(thickness[0]).arg(thickness[1])));
 }
 
 void TestExport::tooLargeASideIsSaidNotCut()

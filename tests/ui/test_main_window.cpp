@@ -85,6 +85,7 @@ private slots:
     void examplesAreAllListed();
     void closingWhileRunningEndsTheWorker();
     void geometryIsRemembered();
+    void clothLayersAreToggledAndRemembered();
     void firstSizeFitsTheScreen();
 
 private:
@@ -717,6 +718,31 @@ void TestMainWindow::geometryIsRemembered()
     // and nothing was written outside the test's own folder
     QSettings settings;
     QVERIFY(settings.fileName().startsWith(settingsPath()));
+}
+
+void TestMainWindow::clothLayersAreToggledAndRemembered()
+{
+    // View › Surface, Spheres on Surface, Springs on Surface: the sheet alone at first
+    auto action = [this](const char *name) { return m_window->findChild<QAction *>(QString::fromLatin1(name)); };
+    QAction *surface = action("actionShowSurface");
+    QAction *spheres = action("actionSurfaceSpheres");
+    QAction *springs = action("actionSurfaceSprings");
+    QVERIFY(surface && spheres && springs);
+    QVERIFY(surface->isChecked() && !spheres->isChecked() && !springs->isChecked());
+    QCOMPARE(m_window->viewport()->layers(), ui::ViewLayers{});
+
+    // each reaches the view; the sheet's options wait while it is off
+    springs->trigger();
+    QVERIFY(m_window->viewport()->layers().surfaceSprings);
+    surface->trigger();
+    QVERIFY(!m_window->viewport()->layers().surface);
+    QVERIFY(!spheres->isEnabled() && !springs->isEnabled());
+
+    // and the next window draws the same way
+    QVERIFY(m_window->close());
+    QVERIFY2(openEditor({.activate = false, .settle = false}), qPrintable(editorFailure()));
+    QCOMPARE(m_window->viewport()->layers(), (ui::ViewLayers{false, false, true}));
+    QVERIFY(!action("actionShowSurface")->isChecked() && action("actionSurfaceSprings")->isChecked());
 }
 
 void TestMainWindow::firstSizeFitsTheScreen()

@@ -1,10 +1,15 @@
 // The viewport on screen, with real events: what grabFramebuffer() shows at the pixels the camera
 // says a particle, a plane or a spring lands on; orbit, pan and zoom by mouse and wheel; frame all
 // by key; the style uploaded only when it changes; drawing again after the context is replaced; and
-// the same view drawn offscreen at any size, with the camera scaled to it.
+// the same view drawn offscreen at any size, with the camera scaled to it and its lines as much
+// wider; a cloth drawn as a sheet between its beads, holes where its springs tore, and the layers
+// that show its spheres and springs too; springs a few pixels wide, wider when selected, with the
+// legend to their colours while any is drawn.
 
+#include "ui/viewport/strain_legend.h"
 #include "ui/viewport/viewport.h"
 
+#include "core/generators.h"
 #include "core/model.h"
 #include "core/snapshot.h"
 #include "core/state.h"
@@ -14,6 +19,7 @@
 #include <QtTest>
 
 #include "editor_test_setup.h"
+#include "line_thickness.h"
 
 #include <cmath>
 
@@ -74,6 +80,39 @@ bool isBackground(const QColor &seen, QString *why)
     return nearColour(seen, toColour(ui::kBackgroundColour), 2, why);
 }
 
+// the lit front of the sheet: bright, and warmer than grey but far from the particles' amber
+bool isSheet(const QColor &seen)
+{
+    const int warmth = seen.red() - seen.blue();
+    return seen.red() > 110 && warmth > 15 && warmth < 90;
+}
+
+// a 4 × 4 cloth of structural, shear and bend springs, level at y = 0, 0.5 m apart
+core::SceneDesc smallCloth()
+{
+    core::ClothOptions options;
+    options.rows = 4;
+    options.cols = 4;
+    options.spacing = 0.5;
+    options.height = 0.0;
+    options.radius = 0.06;
+    return core::makeCloth(options);
+}
+
+std::shared_ptr<const core::Snapshot> snapshotOf(const core::SceneDesc &scene)
+{
+    const auto model = core::compileModel(scene);
+    return core::makeSnapshot(*model, core::makeState(*model, scene));
+}
+
+int springJoining(const core::SceneDesc &scene, int a, int b)
+{
+    for (std::size_t k = 0; k < scene.springs.size(); ++k)
+        if (std::minmax(scene.springs[k].a, scene.springs[k].b) == std::minmax(a, b))
+            return int(k);
+    return -1;
+}
+
 }  // namespace
 
 class TestViewport : public QObject {
@@ -108,6 +147,10 @@ private slots:
     void rendersOffscreenAtAnySize_data();
     void rendersOffscreenAtAnySize();
     void refusesImagesLargerThanTheDriverDraws();
+    void clothIsDrawnAsASheet();
+    void tornSpringsOpenHoles();
+    void layersShowTheSheetsSpheresAndSprings();
+    void springsAreWideAndScaleWithTheImage();
 
 private:
     QPointF projected(int particle) const;
@@ -574,6 +617,152 @@ void TestViewport::refusesImagesLargerThanTheDriverDraws()
     QVERIFY2(error.contains(QStringLiteral("at most %1 px").arg(most)), qPrintable(error));
     QVERIFY(m_viewport->renderImage(QSize(0, 10), &error).isNull());
     QVERIFY2(error.contains(QStringLiteral("at least 1")), qPrintable(error));
+}
+
+void TestViewport::clothIsDrawnAsASheet()
+{
+    // seen from above at an angle: the middle of a cell, between four beads, is the sheet; the
+    // beads and springs it joins are not drawn over it, nor is the legend to springs not drawn
+    const core::SceneDesc scene = smallCloth();
+    const auto snapshot = snapshotOf(scene);
+    QVERIFY(snapshot->triangles && snapshot->triangles->count() == 18);
+    m_snapshot = std::make_shared<core::Snapshot>(*snapshot);
+    m_viewport->setSnapshot(snapshot);
+    m_viewport->frameAll();
+    m_viewport->camera().setAngles(30.0f, 55.0f);
+    QCOMPARE(m_viewport->surfaceTriangles(), 18);
+
+    const QPointF middle = m_viewport->camera().project(0.25f * (positionOf(*snapshot, 5) + positionOf(*snapshot, 6) +
+                                                                 positionOf(*snapshot, 9) + positionOf(*snapshot, 10))).value();
+    QImage image = grab();
+    QVERIFY2(isSheet(colourAt(image, *m_viewport, middle)), qPrintable(colourAt(image, *m_viewport, middle).name()));
+    QVERIFY2(isSheet(colourAt(image, *m_viewport, projected(5))), qPrintable(colourAt(image, *m_viewport, projected(5)).name()));
+    QVERIFY(!m_viewport->strainLegend()->isVisible());
+
+    // without the sheet: the beads, and between them the background (or the grid under it)
+    m_viewport->setLayers({false, false, false});
+    QCOMPARE(m_viewport->surfaceTriangles(), 0);
+    image = grab();
+    QVERIFY(!isSheet(colourAt(image, *m_viewport, middle)));
+    QString why;
+    QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(5)), ui::kFreeColour, &why), qPrintable(why));
+    QVERIFY(m_viewport->strainLegend()->isVisible());
+}
+
+void TestViewport::tornSpringsOpenHoles()
+{
+    // both diagonals of the cell of particles 5, 6, 9 and 10 torn: its two triangles are gone,
+    // the cell beside it stays
+    const core::SceneDesc scene = smallCloth();
+    auto torn = std::make_shared<core::Snapshot>(*snapshotOf(scene));
+    torn->springBroken.assign(scene.springs.size(), 0);
+    for (const auto &[a, b] : {std::pair{5, 10}, std::pair{6, 9}}) {
+        const int k = springJoining(scene, a, b);
+        QVERIFY(k >= 0);
+        torn->springBroken[std::size_t(k)] = 1;
+    }
+    m_snapshot = torn;
+    m_viewport->setSnapshot(torn);
+    m_viewport->frameAll();
+    m_viewport->camera().setAngles(30.0f, 55.0f);
+    QCOMPARE(m_viewport->surfaceTriangles(), 16);
+
+    auto cellMiddle = [&](int corner) {
+        const int cols = 4;
+        return m_viewport->camera()
+            .project(0.25f * (positionOf(*torn, corner) + positionOf(*torn, corner + 1) + positionOf(*torn, corner + cols) +
+                              positionOf(*torn, corner + cols + 1)))
+            .value();
+    };
+    const QImage image = grab();
+    const QColor hole = colourAt(image, *m_viewport, cellMiddle(5));
+    QVERIFY2(!isSheet(hole) && hole.red() < 110, qPrintable(hole.name()));
+    QVERIFY(isSheet(colourAt(image, *m_viewport, cellMiddle(4))));
+    QVERIFY(isSheet(colourAt(image, *m_viewport, cellMiddle(6))));
+}
+
+void TestViewport::layersShowTheSheetsSpheresAndSprings()
+{
+    // every spring stretched, so that a spring drawn over the sheet is red
+    const core::SceneDesc scene = smallCloth();
+    auto stretched = std::make_shared<core::Snapshot>(*snapshotOf(scene));
+    std::fill(stretched->springStrain.begin(), stretched->springStrain.end(), 0.5f);
+    m_snapshot = stretched;
+    m_viewport->setSnapshot(stretched);
+    m_viewport->frameAll();
+    m_viewport->camera().setAngles(30.0f, 55.0f);
+    const QPointF onSpring = m_viewport->camera().project(0.5f * (positionOf(*stretched, 5) + positionOf(*stretched, 6))).value();
+    auto reddest = [&](const QImage &image) {
+        int most = -255;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const QColor c = colourAt(image, *m_viewport, onSpring + QPointF(dx, dy));
+                most = std::max(most, c.red() - c.blue());
+            }
+        return most;
+    };
+
+    // the sheet alone: no spring there, and none to pick
+    QImage image = grab();
+    QCOMPARE_LT(reddest(image), 100);
+    QCOMPARE(m_viewport->springAt(onSpring), -1);
+
+    // with its springs: drawn, picked, and the legend shown
+    m_viewport->setLayers({true, false, true});
+    image = grab();
+    QCOMPARE_GT(reddest(image), 150);
+    QVERIFY(m_viewport->springAt(onSpring) >= 0);
+    QVERIFY(m_viewport->strainLegend()->isVisible());
+
+    // with its spheres: a bead where the sheet was
+    m_viewport->setLayers({true, true, false});
+    image = grab();
+    QString why;
+    QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(5)), ui::kFreeColour, &why), qPrintable(why));
+    QVERIFY(!m_viewport->strainLegend()->isVisible());
+
+    // a selected particle of the sheet is drawn even when its spheres are not
+    m_viewport->setLayers({true, false, false});
+    m_viewport->setSelection({5});
+    image = grab();
+    QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(5)), ui::kSelectedColour, &why), qPrintable(why));
+}
+
+void TestViewport::springsAreWideAndScaleWithTheImage()
+{
+    // one spring across the view, seen from the front; measured a quarter of the way along it
+    auto s = std::make_shared<core::Snapshot>();
+    s->positions = {-1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f};
+    s->radii = {0.02f, 0.02f};
+    s->pinned = {1, 1};
+    s->springEnds = {-1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f};
+    s->springStrain = {0.0f};
+    m_snapshot = s;
+    m_viewport->setSnapshot(s);
+    ui::Camera &camera = m_viewport->camera();
+    camera.setTarget(QVector3D(0.0f, 0.0f, 0.0f));
+    camera.setDistance(4.0f);
+    camera.setAngles(0.0f, 0.0f);
+    QVERIFY(m_viewport->strainLegend()->isVisible());
+    const QPoint at = camera.project(QVector3D(-0.5f, 0.0f, 0.0f)).value().toPoint();
+
+    // 2 pixels in the view, 8 in an image 4 times its size
+    const double inView = test::lineThickness(grab(), at.x(), at.y(), 4);
+    QVERIFY2(inView >= 1.5 && inView <= 3.0, qPrintable(QString::number(inView)));
+    QString error;
+    const QImage large = m_viewport->renderImage(kViewportSize * 4, &error);
+    QVERIFY2(!large.isNull(), qPrintable(error));
+    QCOMPARE(m_viewport->lineScale(large.height()), 4.0);
+    const double inImage = test::lineThickness(large, 4 * at.x() + 1, 4 * at.y() + 1, 16);
+    QVERIFY2(inImage >= 3.0 * inView && inImage <= 5.0 * inView,
+             qPrintable(QStringLiteral("%1 px in the view, %2 px in the image").arg(inView).arg(inImage)));
+
+    // selected: wider, in the selection's colour
+    m_viewport->setSpringSelection({0});
+    const QImage selected = grab();
+    QCOMPARE_GE(test::lineThickness(selected, at.x(), at.y(), 4), 1.5 * inView);
+    QString why;
+    QVERIFY2(sameHue(colourAt(selected, *m_viewport, at), ui::kSelectedColour, &why), qPrintable(why));
 }
 
 QTEST_MAIN(TestViewport)

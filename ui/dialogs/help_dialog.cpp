@@ -46,7 +46,8 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
                 "one selected particle; Snap in the toolbar rounds to the grid"));
     addEntry(tr("Pin tool (3)"), tr("Click a particle to pin or free it"));
     addEntry(tr("Spring tool (4)"),
-             tr("Click one particle, then another: a spring with the toolbar's k and kc, at rest at their distance"));
+             tr("Click one particle, then another, or drag from one to another: a spring with the toolbar's k "
+                "and kc, at rest at their distance; a dashed line follows the cursor meanwhile"));
     addEntry(tr("Drag tool (5)"),
              tr("Running: hold a particle to pull it toward the cursor. Paused: drag to move the selection (one "
                 "undo step)"));

@@ -5,6 +5,7 @@
 #include "ui/document/scene_document.h"
 #include "ui/panels/status_text.h"
 #include "ui/simulation/simulation_controller.h"
+#include "guide_line.h"
 #include "viewport.h"
 
 #include <QAction>
@@ -58,7 +59,8 @@ constexpr ToolInfo kTools[] = {
      "you)",
      Qt::Key_2},
     {Tool::Pin, "toolPin", "Pin", "Click a particle to pin or free it", Qt::Key_3},
-    {Tool::Spring, "toolSpring", "Spring", "Click one particle, then another, to join them with a spring", Qt::Key_4},
+    {Tool::Spring, "toolSpring", "Spring",
+     "Click one particle, then another, or drag from one to another, to join them with a spring", Qt::Key_4},
     {Tool::Drag, "toolDrag", "Drag",
      "Running: press on a particle to pull it toward the cursor. Paused: drag the selection to move it", Qt::Key_5},
 };
@@ -69,6 +71,7 @@ EditTools::EditTools(Viewport *viewport, SceneDocument *document, SimulationCont
     : QObject(parent), m_viewport(viewport), m_document(document), m_controller(controller)
 {
     createActions();
+    m_springBand = new GuideLine(m_viewport);
     m_viewport->installEventFilter(this);
     m_viewport->setMouseTracking(true);  // hover
     connect(m_document, &SceneDocument::sceneChanged, this, &EditTools::sceneChanged);
@@ -129,7 +132,7 @@ void EditTools::setTool(Tool tool)
         m_controller->grab(-1, Eigen::Vector3d::Zero());
     m_gesture = Gesture::None;
     m_grabbed = -1;
-    m_springStart = -1;
+    setSpringStart(-1);
     m_tool = tool;
     toolAction(tool)->setChecked(true);
     m_viewport->setHover(-1, -1);
@@ -157,7 +160,7 @@ void EditTools::sceneChanged()
     kept.clamp(m_document->scene());
     setSelection(kept);
     if (m_springStart >= int(m_document->scene().particles.size()))
-        m_springStart = -1;
+        setSpringStart(-1);
 }
 
 void EditTools::apply(const QString &text, const std::function<void(core::SceneDesc &)> &edit, const QString &mergeKey)
@@ -336,26 +339,19 @@ bool EditTools::press(QMouseEvent *event)
     }
     case Tool::Spring: {
         if (particle < 0) {
-            m_springStart = -1;
+            setSpringStart(-1);
             return false;  // orbit
         }
         if (m_springStart < 0 || m_springStart == particle) {
-            m_springStart = particle;
+            // the first particle; a release on another joins them, a click waits for another click
+            setSpringStart(particle);
             setSelection(Selection{{particle}, {}});
+            m_gesture = Gesture::SpringBand;
+            followSpringBand(pixel);
             emit message(tr("Spring from particle %1: click the particle to join it to").arg(particle));
             return true;
         }
-        const int a = m_springStart;
-        auto edited = std::make_shared<core::SceneDesc>(scene);
-        const int spring = ui::addSpring(*edited, a, particle, m_defaults.stiffness, m_defaults.damping);
-        m_springStart = -1;
-        if (spring < 0) {
-            emit message(tr("Particles %1 and %2 are already joined").arg(a).arg(particle));
-            return true;
-        }
-        m_document->undoStack()->push(new SceneCommand(*m_document, tr("Add Spring"), std::move(edited)));
-        setSelection(Selection{{}, {spring}});
-        emit message(tr("Spring %1 joins particles %2 and %3").arg(spring).arg(a).arg(particle));
+        joinSpring(particle);
         return true;
     }
     case Tool::Drag: {
@@ -389,11 +385,17 @@ bool EditTools::move(QMouseEvent *event)
     const QPointF pixel = event->position();
     switch (m_gesture) {
     case Gesture::None:
-        if (event->buttons() == Qt::NoButton)
+        if (event->buttons() == Qt::NoButton) {
             hover(pixel);
+            followSpringBand(pixel);
+        }
         return false;
     case Gesture::RubberBand:
         m_rubberBand->setGeometry(QRectF(m_pressPixel, pixel).normalized().toRect());
+        return true;
+    case Gesture::SpringBand:
+        hover(pixel);
+        followSpringBand(pixel);
         return true;
     case Gesture::Grab:
         if (const auto target = onViewPlane(pixel, m_dragPlanePoint))
@@ -419,6 +421,12 @@ bool EditTools::release(QMouseEvent *event)
     if (gesture == Gesture::Grab) {
         m_controller->grab(-1, Eigen::Vector3d::Zero());
         m_grabbed = -1;
+    } else if (gesture == Gesture::SpringBand) {
+        // released on another particle: the two are joined; on the first: a click, so the next
+        // click ends the spring
+        const int particle = particleUnder(event->position());
+        if (particle >= 0 && particle != m_springStart)
+            joinSpring(particle);
     } else if (gesture == Gesture::RubberBand) {
         // the particles whose centres lie inside the box on screen
         const QRectF box = QRectF(m_pressPixel, event->position()).normalized();
@@ -435,6 +443,48 @@ bool EditTools::release(QMouseEvent *event)
         emit message(selectionText(m_selection.particles.size(), m_selection.springs.size()));
     }
     return true;
+}
+
+void EditTools::setSpringStart(int particle)
+{
+    m_springStart = particle;
+    if (particle < 0)
+        m_springBand->hide();
+}
+
+void EditTools::followSpringBand(const QPointF &pixel)
+{
+    if (m_tool != Tool::Spring || m_springStart < 0) {
+        m_springBand->hide();
+        return;
+    }
+    auto onScreen = [this](int i) {
+        const Eigen::Vector3d p = shownPosition(i);
+        return m_viewport->camera().project(QVector3D(float(p.x()), float(p.y()), float(p.z())));
+    };
+    const auto from = onScreen(m_springStart);
+    if (!from) {
+        m_springBand->hide();
+        return;
+    }
+    const int under = particleUnder(pixel);
+    const auto to = under >= 0 && under != m_springStart ? onScreen(under) : std::optional<QPointF>(pixel);
+    m_springBand->showLine(QLineF(*from, to.value_or(pixel)));
+}
+
+void EditTools::joinSpring(int particle)
+{
+    const int a = m_springStart;
+    auto edited = std::make_shared<core::SceneDesc>(m_document->scene());
+    const int spring = ui::addSpring(*edited, a, particle, m_defaults.stiffness, m_defaults.damping);
+    setSpringStart(-1);
+    if (spring < 0) {
+        emit message(tr("Particles %1 and %2 are already joined").arg(a).arg(particle));
+        return;
+    }
+    m_document->undoStack()->push(new SceneCommand(*m_document, tr("Add Spring"), std::move(edited)));
+    setSelection(Selection{{}, {spring}});
+    emit message(tr("Spring %1 joins particles %2 and %3").arg(spring).arg(a).arg(particle));
 }
 
 void EditTools::hover(const QPointF &pixel)
@@ -544,7 +594,7 @@ void EditTools::selectAll()
 
 void EditTools::clearSelection()
 {
-    m_springStart = -1;
+    setSpringStart(-1);
     setSelection({});
     emit message(selectionText(0, 0));
 }

@@ -5,7 +5,9 @@
 // camera keeps the buttons the tools leave alone. Every change of the scene is one SceneCommand
 // on the document's undo stack (a drag is one, merged as it goes), so it reaches the running
 // worker like any other edit and undoes exactly. While running, the Drag tool holds the particle
-// with the worker's mouse spring instead, which changes the run, not the scene.
+// with the worker's mouse spring instead, which changes the run, not the scene. The Spring tool
+// joins the particle pressed on to the one clicked or released on next, with a rubber band line
+// from the first to the cursor meanwhile.
 
 #include "ui/document/scene_edits.h"
 
@@ -27,6 +29,7 @@ class QRubberBand;
 
 namespace ui {
 
+class GuideLine;
 class SceneDocument;
 class SimulationController;
 class Viewport;
@@ -73,6 +76,8 @@ public:
 
     // the Spring tool's first particle, -1 while none is chosen
     int springStart() const { return m_springStart; }
+    // the Spring tool's rubber band from it to the cursor (shown while it is chosen)
+    const GuideLine *springBand() const { return m_springBand; }
     // the particle the Drag tool holds with the mouse spring, -1 for none
     int grabbed() const { return m_grabbed; }
 
@@ -105,6 +110,11 @@ private:
     bool move(QMouseEvent *event);
     bool release(QMouseEvent *event);
     void hover(const QPointF &pixel);
+    // the Spring tool: the rubber band from its first particle to the pixel (to the centre of a
+    // particle there), hidden when none is chosen; joining its first particle to another
+    void followSpringBand(const QPointF &pixel);
+    void setSpringStart(int particle);
+    void joinSpring(int particle);
     void sceneChanged();
 
     // pushes one command that replaces the scene with an edited copy
@@ -141,11 +151,12 @@ private:
     QAction *m_pin = nullptr;
 
     // gestures under way
-    enum class Gesture { None, RubberBand, Move, Grab };
+    enum class Gesture { None, RubberBand, Move, Grab, SpringBand };
     Gesture m_gesture = Gesture::None;
     QPointF m_pressPixel;
     bool m_addToSelection = false;
     QRubberBand *m_rubberBand = nullptr;
+    GuideLine *m_springBand = nullptr;
     int m_springStart = -1;
     int m_grabbed = -1;
     Eigen::Vector3d m_dragPlanePoint = Eigen::Vector3d::Zero();  // the plane the drag moves in

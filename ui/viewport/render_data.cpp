@@ -51,7 +51,8 @@ Rgb ParticleStyle::colour(int i) const
     return {v[1], v[2], v[3]};
 }
 
-ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vector<int> &selection, int hover)
+ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vector<int> &selection, int hover,
+                                const std::vector<std::uint8_t> &hidden)
 {
     const int n = snapshot.particleCount();
     std::vector<std::uint8_t> selected(std::size_t(n), 0);
@@ -67,7 +68,8 @@ ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vecto
         const bool isSelected = selected[std::size_t(i)] != 0;
         const Rgb &c = i == hover ? kHoverColour : isSelected ? kSelectedColour : pinned ? kPinnedColour : kFreeColour;
         float *v = style.values.data() + std::size_t(i) * kStyleFloats;
-        v[0] = snapshot.radii[std::size_t(i)];
+        const bool shown = i == hover || isSelected || i >= int(hidden.size()) || hidden[std::size_t(i)] == 0;
+        v[0] = shown ? snapshot.radii[std::size_t(i)] : 0.0f;
         v[1] = c[0];
         v[2] = c[1];
         v[3] = c[2];
@@ -98,29 +100,37 @@ void StyleKey::clear()
     m_pinned.clear();
 }
 
-void packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertices, float fullStrain,
-                     const SpringHighlight &highlight)
+int packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertices, float fullStrain,
+                    const SpringHighlight &highlight, const std::vector<std::uint8_t> &hidden)
 {
     // end a then end b of each spring, both in the spring's colour
     const int springs = snapshot.springCount();
     vertices.clear();
     if (snapshot.springEnds.size() < std::size_t(springs) * 6)
-        return;
+        return 0;
     std::vector<std::uint8_t> selected(std::size_t(springs), 0);
     for (int s : highlight.selected)
         if (s >= 0 && s < springs)
             selected[std::size_t(s)] = 1;
-    vertices.reserve(std::size_t(springs) * 2 * kVertexFloats);
-    for (int s = 0; s < springs; ++s) {
-        if (snapshot.isBroken(s))
-            continue;  // a broken spring is gone from the picture
+    auto highlighted = [&](int s) { return s == highlight.hover || selected[std::size_t(s)] != 0; };
+    auto push = [&](int s, const Rgb &c) {
         const float *e = snapshot.springEnds.data() + std::size_t(s) * 6;
-        const Rgb c = s == highlight.hover        ? kHoverColour
-                      : selected[std::size_t(s)] ? kSelectedColour
-                                                 : strainColour(snapshot.springStrain[s], fullStrain);
         pushVertex(vertices, QVector3D(e[0], e[1], e[2]), c);
         pushVertex(vertices, QVector3D(e[3], e[4], e[5]), c);
-    }
+    };
+    vertices.reserve(std::size_t(springs) * 2 * kVertexFloats);
+
+    // a broken spring is gone from the picture; a hidden one is left out unless highlighted
+    for (int s = 0; s < springs; ++s)
+        if (!snapshot.isBroken(s) && !highlighted(s) && (s >= int(hidden.size()) || hidden[std::size_t(s)] == 0))
+            push(s, strainColour(snapshot.springStrain[s], fullStrain));
+    int last = 0;
+    for (int s = 0; s < springs; ++s)
+        if (!snapshot.isBroken(s) && highlighted(s)) {
+            push(s, s == highlight.hover ? kHoverColour : kSelectedColour);
+            ++last;
+        }
+    return last;
 }
 
 Sphere particleBounds(const core::Snapshot &snapshot)

@@ -30,6 +30,13 @@ inline constexpr Rgb kStretchedColour{1.00f, 0.20f, 0.16f};
 inline constexpr Rgb kGridColour{0.32f, 0.33f, 0.37f};
 inline constexpr Rgb kPlaneColour{0.55f, 0.70f, 0.85f};
 inline constexpr float kPlaneAlpha = 0.22f;
+inline constexpr Rgb kSurfaceFrontColour{0.84f, 0.78f, 0.64f};  // linen: a cloth's side its normals point to
+inline constexpr Rgb kSurfaceBackColour{0.60f, 0.48f, 0.56f};   // mauve: its other side
+
+// line widths on screen, in pixels of the view (an exported image scales them with its size)
+inline constexpr float kSpringPixels = 2.0f;
+inline constexpr float kHighlightedSpringPixels = 4.0f;  // selected or under the cursor
+inline constexpr float kDecorationPixels = 1.0f;         // the grid and the axes
 
 // a strain (l - l0) / l0 of this size or more shows the full compressed or stretched colour
 inline constexpr float kFullStrain = 0.10f;
@@ -50,8 +57,10 @@ struct ParticleStyle {
 };
 
 // selection: indices of selected particles, in any order; those out of range are ignored; hover:
-// the particle under the cursor (-1: none), drawn in the hover colour over any other
-ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vector<int> &selection, int hover = -1);
+// the particle under the cursor (-1: none), drawn in the hover colour over any other; hidden: 1 per
+// particle not to be drawn (radius 0) unless selected or hovered, or empty for none
+ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vector<int> &selection, int hover = -1,
+                                const std::vector<std::uint8_t> &hidden = {});
 
 // what a ParticleStyle was packed from, to tell whether a new snapshot needs a new one
 class StyleKey {
@@ -76,9 +85,11 @@ struct SpringHighlight {
     int hover = -1;
 };
 
-// two vertices per spring, coloured by its strain unless highlighted
-void packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertices, float fullStrain = kFullStrain,
-                     const SpringHighlight &highlight = {});
+// two vertices per spring, coloured by its strain unless highlighted; the highlighted springs come
+// last (drawn wider and over the others), and their number is returned; hidden: 1 per spring not
+// to be drawn unless highlighted, or empty for none
+int packSpringLines(const core::Snapshot &snapshot, std::vector<float> &vertices, float fullStrain = kFullStrain,
+                    const SpringHighlight &highlight = {}, const std::vector<std::uint8_t> &hidden = {});
 
 // the bounding sphere of the particles (their radii included), leaving out any that are not
 // finite; radius 0 when none is left

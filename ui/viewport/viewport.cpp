@@ -1,5 +1,7 @@
 #include "viewport.h"
 
+#include "strain_legend.h"
+
 #include <QFile>
 #include <QKeyEvent>
 #include <QLineF>
@@ -10,6 +12,7 @@
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
 #include <QRegularExpression>
+#include <QVector2D>
 #include <QWheelEvent>
 #include <QtDebug>
 
@@ -26,6 +29,10 @@ constexpr int kPositionLocation = 1;        // the per-particle attributes, as t
 constexpr int kRadiusLocation = 2;
 constexpr int kColourLocation = 3;
 constexpr int kMarksLocation = 4;
+constexpr int kSurfacePositionLocation = 0;  // the sheet's attributes (surface.vert)
+constexpr int kSurfaceNormalLocation = 1;
+// the corners of a line's quad as line.vert takes them: (end, side)
+constexpr float kLineCorners[] = {0.0f, -1.0f, 0.0f, 1.0f, 1.0f, -1.0f, 1.0f, 1.0f};
 
 // a shader from the resources, with its #include "file" lines replaced by that file
 QByteArray shaderSource(const QString &name)
@@ -61,6 +68,8 @@ struct Viewport::Gpu {
     QOpenGLShaderProgram impostorProgram;
     QOpenGLShaderProgram meshProgram;
     QOpenGLShaderProgram flatProgram;
+    QOpenGLShaderProgram lineProgram;
+    QOpenGLShaderProgram surfaceProgram;
 
     // per-vertex geometry of one particle
     QOpenGLBuffer quad{QOpenGLBuffer::VertexBuffer};
@@ -74,19 +83,29 @@ struct Viewport::Gpu {
     int particleCount = 0;  // streamed positions
     int styleCount = 0;     // uploaded styles
 
-    // lines and triangles for the flat program
+    // lines, a pair of vertices each, drawn as instances of the line program's quad
+    QOpenGLBuffer lineCorners{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer springs{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer decorations{QOpenGLBuffer::VertexBuffer};
+    int springLines = 0;
+    int highlightedSprings = 0;  // the last of them, drawn wider
+    int decorationLines = 0;
+
+    // triangles for the flat program
     QOpenGLBuffer planes{QOpenGLBuffer::VertexBuffer};
-    int springVertices = 0;
-    int decorationVertices = 0;
     int planeVertices = 0;
+
+    // the sheet: the particles' positions, their normals and the triangles' corners
+    QOpenGLBuffer normals{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer surfaceIndices{QOpenGLBuffer::IndexBuffer};
+    int surfaceIndexCount = 0;
 
     QOpenGLVertexArrayObject impostorVao;
     QOpenGLVertexArrayObject meshVao;
     QOpenGLVertexArrayObject springsVao;
     QOpenGLVertexArrayObject decorationsVao;
     QOpenGLVertexArrayObject planesVao;
+    QOpenGLVertexArrayObject surfaceVao;
 };
 
 Viewport::Viewport(QWidget *parent) : QOpenGLWidget(parent)
@@ -95,6 +114,8 @@ Viewport::Viewport(QWidget *parent) : QOpenGLWidget(parent)
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
     m_camera.setViewportSize(size());
+    m_legend = new StrainLegend(this);
+    m_legend->hide();
 
     // the frame time runs from the start of paintGL to the frame reaching the screen
     connect(this, &QOpenGLWidget::frameSwapped, this, [this] {
@@ -129,6 +150,7 @@ void Viewport::setSnapshot(std::shared_ptr<const core::Snapshot> snapshot)
 {
     m_snapshot = std::move(snapshot);
     m_positionsStale = true;
+    refreshSurface();
     if (!m_framed && m_snapshot && m_snapshot->particleCount() > 0) {
         frameAll();
         m_autoFramed = true;
@@ -166,6 +188,47 @@ void Viewport::setHover(int particle, int spring)
     m_selectionChanged = true;
     m_positionsStale = true;
     update();
+}
+
+void Viewport::setLayers(const ViewLayers &layers)
+{
+    if (layers == m_layers)
+        return;
+    m_layers = layers;
+    m_surfaceKey.clear();
+    refreshSurface();
+    update();
+}
+
+void Viewport::refreshSurface()
+{
+    if (!m_snapshot) {
+        m_legend->hide();
+        return;
+    }
+    const core::Snapshot &s = *m_snapshot;
+    if (m_surfaceKey.matches(s))
+        return;
+    m_surface = packSurface(s);
+    m_surfaceKey.remember(s);
+    m_surfaceChanged = true;
+    m_selectionChanged = true;  // the particles' style hides the sheet's spheres
+    m_positionsStale = true;    // and the spring lines its springs
+
+    // what the sheet hides: its spheres and springs, unless the layers show them too
+    const bool sheet = m_layers.surface && m_surface.triangleCount() > 0;
+    m_hiddenParticles.clear();
+    m_hiddenSprings.clear();
+    if (sheet && !m_layers.surfaceSpheres)
+        m_hiddenParticles = m_surface.coveredParticles;
+    if (sheet && !m_layers.surfaceSprings)
+        m_hiddenSprings = m_surface.coveredSprings;
+
+    // the legend while any spring is drawn in its strain's colour
+    bool anySpring = false;
+    for (int k = 0; k < s.springCount() && !anySpring; ++k)
+        anySpring = !s.isBroken(k) && (k >= int(m_hiddenSprings.size()) || m_hiddenSprings[std::size_t(k)] == 0);
+    m_legend->setVisible(anySpring);
 }
 
 void Viewport::setParticleDrawing(ParticleDrawing drawing)
@@ -251,7 +314,7 @@ int Viewport::springAt(const QPointF &pixel) const
     int nearest = -1;
     float best = kPickPixels;
     for (int k = 0; k < springs; ++k) {
-        if (s.isBroken(k))
+        if (s.isBroken(k) || (k < int(m_hiddenSprings.size()) && m_hiddenSprings[std::size_t(k)] != 0))
             continue;  // not drawn, so not picked
         const float *e = s.springEnds.data() + std::size_t(k) * 6;
         const auto a = m_camera.project(QVector3D(e[0], e[1], e[2]));
@@ -302,7 +365,9 @@ void Viewport::initializeGL()
         buildProgram(gpu->impostorProgram, QStringLiteral("particle_impostor.vert"),
                      QStringLiteral("particle_impostor.frag")) &&
         buildProgram(gpu->meshProgram, QStringLiteral("particle_mesh.vert"), QStringLiteral("particle_mesh.frag")) &&
-        buildProgram(gpu->flatProgram, QStringLiteral("flat.vert"), QStringLiteral("flat.frag"));
+        buildProgram(gpu->flatProgram, QStringLiteral("flat.vert"), QStringLiteral("flat.frag")) &&
+        buildProgram(gpu->lineProgram, QStringLiteral("line.vert"), QStringLiteral("flat.frag")) &&
+        buildProgram(gpu->surfaceProgram, QStringLiteral("surface.vert"), QStringLiteral("surface.frag"));
     if (!built)
         return;
 
@@ -316,9 +381,12 @@ void Viewport::initializeGL()
     gpu->sphere.bind();
     gpu->sphere.allocate(sphere.vertices.data(), int(sphere.vertices.size() * sizeof(float)));
     gpu->sphereIndexCount = int(sphere.indices.size());
+    gpu->lineCorners.create();
+    gpu->lineCorners.bind();
+    gpu->lineCorners.allocate(kLineCorners, int(sizeof(kLineCorners)));
 
     // dynamic buffers, empty for now
-    for (QOpenGLBuffer *buffer : {&gpu->positions, &gpu->springs}) {
+    for (QOpenGLBuffer *buffer : {&gpu->positions, &gpu->springs, &gpu->normals}) {
         buffer->setUsagePattern(QOpenGLBuffer::StreamDraw);
         buffer->create();
     }
@@ -364,26 +432,56 @@ void Viewport::initializeGL()
     gpu->sphereIndices.allocate(sphere.indices.data(), int(sphere.indices.size() * sizeof(std::uint32_t)));
     bindParticleAttributes();
 
-    // flat lines and triangles: position and colour per vertex
-    const std::pair<QOpenGLVertexArrayObject *, QOpenGLBuffer *> flatArrays[] = {
-        {&gpu->springsVao, &gpu->springs}, {&gpu->decorationsVao, &gpu->decorations}, {&gpu->planesVao, &gpu->planes}};
-    for (auto [vao, buffer] : flatArrays) {
+    // flat triangles: position and colour per vertex
+    gpu->planesVao.create();
+    gpu->planesVao.bind();
+    gpu->planes.bind();
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kVertexFloats * sizeof(float), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, kVertexFloats * sizeof(float),
+                          reinterpret_cast<const void *>(3 * sizeof(float)));
+
+    // lines: the quad's corner per vertex; per line its pair of vertices, read as end a, its
+    // colour and end b
+    for (auto [vao, buffer] : {std::pair{&gpu->springsVao, &gpu->springs}, std::pair{&gpu->decorationsVao, &gpu->decorations}}) {
         vao->create();
         vao->bind();
-        buffer->bind();
+        gpu->lineCorners.bind();
         glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kVertexFloats * sizeof(float), nullptr);
-        glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, kVertexFloats * sizeof(float),
-                              reinterpret_cast<const void *>(3 * sizeof(float)));
+        glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+        buffer->bind();
+        const struct {
+            int location, size, offset;
+        } lineAttributes[] = {{1, 3, 0}, {2, 4, 3}, {3, 3, kVertexFloats}};
+        for (const auto &a : lineAttributes) {
+            glEnableVertexAttribArray(a.location);
+            glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, 2 * kVertexFloats * sizeof(float),
+                                  reinterpret_cast<const void *>(std::uintptr_t(a.offset * sizeof(float))));
+            glVertexAttribDivisor(a.location, 1);
+        }
     }
-    gpu->planesVao.release();
+
+    // the sheet: position and normal per particle, and the corners' indices
+    gpu->surfaceVao.create();
+    gpu->surfaceVao.bind();
+    gpu->positions.bind();
+    glEnableVertexAttribArray(kSurfacePositionLocation);
+    glVertexAttribPointer(kSurfacePositionLocation, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    gpu->normals.bind();
+    glEnableVertexAttribArray(kSurfaceNormalLocation);
+    glVertexAttribPointer(kSurfaceNormalLocation, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    gpu->surfaceIndices.setUsagePattern(QOpenGLBuffer::StaticDraw);
+    gpu->surfaceIndices.create();
+    gpu->surfaceIndices.bind();
+    gpu->surfaceVao.release();
 
     // everything is to be uploaded again into the new buffers
     m_gpu = std::move(gpu);
     m_positionsStale = true;
     m_styleKey.clear();
     m_decorationsChanged = true;
+    m_surfaceChanged = true;
     m_samples = -1;
 }
 
@@ -413,14 +511,15 @@ void Viewport::uploadSnapshot()
     if (!m_snapshot) {
         gpu.particleCount = 0;
         gpu.styleCount = 0;
-        gpu.springVertices = 0;
+        gpu.springLines = 0;
+        gpu.surfaceIndexCount = 0;
         return;
     }
     const core::Snapshot &s = *m_snapshot;
 
     // the style, only when the radii, the pins or the selection changed
     if (m_selectionChanged || !m_styleKey.matches(s)) {
-        const ParticleStyle style = packParticleStyle(s, m_selection, m_hoverParticle);
+        const ParticleStyle style = packParticleStyle(s, m_selection, m_hoverParticle, m_hiddenParticles);
         gpu.styles.bind();
         gpu.styles.allocate(style.values.data(), int(style.values.size() * sizeof(float)));
         gpu.styleCount = style.count();
@@ -433,12 +532,28 @@ void Viewport::uploadSnapshot()
     if (m_positionsStale) {
         gpu.positions.bind();
         gpu.positions.allocate(s.positions.data(), int(s.positions.size() * sizeof(float)));
-        packSpringLines(s, m_springVertices, kFullStrain, m_springHighlight);
+        gpu.highlightedSprings = packSpringLines(s, m_springVertices, kFullStrain, m_springHighlight, m_hiddenSprings);
         gpu.springs.bind();
         gpu.springs.allocate(m_springVertices.data(), int(m_springVertices.size() * sizeof(float)));
-        gpu.springVertices = int(m_springVertices.size() / kVertexFloats);
+        gpu.springLines = int(m_springVertices.size() / (2 * kVertexFloats));
         gpu.particleCount = std::min<int>(s.particleCount(), int(s.positions.size() / 3));
+        // the sheet's normals at these positions
+        if (m_surface.triangleCount() > 0 && m_layers.surface) {
+            surfaceNormals(s, m_surface.indices, m_normals);
+            gpu.normals.bind();
+            gpu.normals.allocate(m_normals.data(), int(m_normals.size() * sizeof(float)));
+        }
         m_positionsStale = false;
+    }
+
+    // the sheet's triangles, when they or the broken springs changed
+    if (m_surfaceChanged) {
+        gpu.surfaceVao.bind();
+        gpu.surfaceIndices.bind();
+        gpu.surfaceIndices.allocate(m_surface.indices.data(), int(m_surface.indices.size() * sizeof(std::uint32_t)));
+        gpu.surfaceVao.release();
+        gpu.surfaceIndexCount = int(m_surface.indices.size());
+        m_surfaceChanged = false;
     }
 }
 
@@ -464,7 +579,7 @@ void Viewport::uploadDecorations()
     lines.insert(lines.end(), axes.begin(), axes.end());
     gpu.decorations.bind();
     gpu.decorations.allocate(lines.data(), int(lines.size() * sizeof(float)));
-    gpu.decorationVertices = int(lines.size() / kVertexFloats);
+    gpu.decorationLines = int(lines.size() / (2 * kVertexFloats));
 
     const std::vector<float> quads = packPlaneQuads(m_planes, m_sceneBounds);
     gpu.planes.bind();
@@ -479,7 +594,10 @@ void Viewport::paintGL()
     m_frameTiming = true;
     if (m_gpu && m_samples < 0)
         glGetIntegerv(GL_SAMPLES, &m_samples);
-    drawScene(m_camera, m_samples);
+    // the framebuffer's size in device pixels, as QOpenGLWidget set the viewport to it
+    GLint viewport[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    drawScene(m_camera, m_samples, QSize(viewport[2], viewport[3]));
 }
 
 QImage Viewport::renderImage(QSize size, QString *error)
@@ -514,7 +632,7 @@ QImage Viewport::renderImage(QSize size, QString *error)
             Camera camera = m_camera;
             camera.setViewportSize(size);
             glViewport(0, 0, size.width(), size.height());
-            drawScene(camera, framebuffer.format().samples());
+            drawScene(camera, framebuffer.format().samples(), size);
             framebuffer.release();
             image = framebuffer.toImage().convertToFormat(QImage::Format_RGB32);
         }
@@ -527,7 +645,12 @@ QImage Viewport::renderImage(QSize size, QString *error)
     return image;
 }
 
-void Viewport::drawScene(const Camera &camera, int samples)
+double Viewport::lineScale(int framebufferHeight) const
+{
+    return height() > 0 && framebufferHeight > 0 ? double(framebufferHeight) / height() : 1.0;
+}
+
+void Viewport::drawScene(const Camera &camera, int samples, QSize pixels)
 {
     glClearColor(kBackgroundColour[0], kBackgroundColour[1], kBackgroundColour[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -543,16 +666,40 @@ void Viewport::drawScene(const Camera &camera, int samples)
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
 
-    // lines: grid and axes, then springs
-    gpu.flatProgram.bind();
-    gpu.flatProgram.setUniformValue("viewProjection", projection * view);
-    if (gpu.decorationVertices > 0) {
+    // lines: grid and axes, then springs (the highlighted ones last and wider), as many pixels
+    // wide in the framebuffer as the view's are scaled to it, and never under one
+    const float scale = float(lineScale(pixels.height()));
+    auto widthOf = [scale](float viewPixels) { return std::max(viewPixels * scale, 1.0f); };
+    gpu.lineProgram.bind();
+    gpu.lineProgram.setUniformValue("viewProjection", projection * view);
+    gpu.lineProgram.setUniformValue("pixels", QVector2D(float(pixels.width()), float(pixels.height())));
+    if (gpu.decorationLines > 0) {
+        gpu.lineProgram.setUniformValue("width", widthOf(kDecorationPixels));
+        gpu.lineProgram.setUniformValue("wideFrom", gpu.decorationLines);
         gpu.decorationsVao.bind();
-        glDrawArrays(GL_LINES, 0, gpu.decorationVertices);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, gpu.decorationLines);
     }
-    if (gpu.springVertices > 0) {
+    if (gpu.springLines > 0) {
+        gpu.lineProgram.setUniformValue("width", widthOf(kSpringPixels));
+        gpu.lineProgram.setUniformValue("wideWidth", widthOf(kHighlightedSpringPixels));
+        gpu.lineProgram.setUniformValue("wideFrom", gpu.springLines - gpu.highlightedSprings);
         gpu.springsVao.bind();
-        glDrawArrays(GL_LINES, 0, gpu.springVertices);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, gpu.springLines);
+    }
+
+    // the sheet, both sides, a little behind the lines that lie in it
+    if (m_layers.surface && gpu.surfaceIndexCount > 0 && gpu.particleCount > 0) {
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1.0f, 1.0f);
+        gpu.surfaceProgram.bind();
+        gpu.surfaceProgram.setUniformValue("view", view);
+        gpu.surfaceProgram.setUniformValue("projection", projection);
+        auto toVector3 = [](const Rgb &c) { return QVector3D(c[0], c[1], c[2]); };
+        gpu.surfaceProgram.setUniformValue("frontColour", toVector3(kSurfaceFrontColour));
+        gpu.surfaceProgram.setUniformValue("backColour", toVector3(kSurfaceBackColour));
+        gpu.surfaceVao.bind();
+        glDrawElements(GL_TRIANGLES, gpu.surfaceIndexCount, GL_UNSIGNED_INT, nullptr);
+        glDisable(GL_POLYGON_OFFSET_FILL);
     }
 
     // particles, one instance each
@@ -588,6 +735,7 @@ void Viewport::drawScene(const Camera &camera, int samples)
         glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         glDepthMask(GL_FALSE);
         gpu.flatProgram.bind();
+        gpu.flatProgram.setUniformValue("viewProjection", projection * view);
         gpu.planesVao.bind();
         glDrawArrays(GL_TRIANGLES, 0, gpu.planeVertices);
         glDepthMask(GL_TRUE);

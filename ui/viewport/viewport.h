@@ -2,7 +2,10 @@
 // Viewport: the 3D view of the simulation (OpenGL 3.3 core). It draws the latest Snapshot it was
 // given and never waits for a step: particles as instanced spheres (ray-cast impostor quads by
 // default, a mesh as the alternative — bench/viewport_fps.cpp compares them), springs as lines
-// coloured by strain, planes as translucent squares around the scene, a ground grid and the axes.
+// coloured by strain (instanced quads a few pixels wide, with a legend in the corner), the
+// triangles of a spring mesh (a cloth) as a shaded two-sided sheet that torn springs open, planes
+// as translucent squares around the scene, a ground grid and the axes. The particles and springs
+// the sheet already shows are hidden unless the layers ask for them (or they are selected).
 // Positions are streamed once per new snapshot; radii, colours and marks are uploaded only when the
 // particles' radii or pins, or the selection, change. GL resources are made in initializeGL and
 // freed when the context goes away, as Qt's hellogl2 example does. renderImage() draws the same
@@ -10,6 +13,7 @@
 
 #include "camera.h"
 #include "render_data.h"
+#include "surface_data.h"
 
 #include "core/scene.h"
 #include "core/snapshot.h"
@@ -25,8 +29,19 @@
 
 namespace ui {
 
+class StrainLegend;
+
 // the mesh drawing's sphere: an icosahedron split this many times (80 triangles)
 inline constexpr int kSphereMeshSubdivisions = 1;
+
+// what is drawn of a scene whose springs make triangles (the View menu's toggles)
+struct ViewLayers {
+    bool surface = true;          // the triangles as a sheet
+    bool surfaceSpheres = false;  // and the spheres of the particles at its corners
+    bool surfaceSprings = false;  // and the springs that lie in it
+
+    bool operator==(const ViewLayers &) const = default;
+};
 
 enum class ParticleDrawing {
     Impostor,  // a camera-facing quad per particle, the sphere found per fragment (the default)
@@ -61,6 +76,13 @@ public:
     int hoveredParticle() const { return m_hoverParticle; }
     int hoveredSpring() const { return m_springHighlight.hover; }
 
+    void setLayers(const ViewLayers &layers);
+    const ViewLayers &layers() const { return m_layers; }
+    // the triangles drawn as the sheet now (none while the surface layer is off)
+    int surfaceTriangles() const { return m_layers.surface ? m_surface.triangleCount() : 0; }
+    // the key to the springs' colours, shown while springs are drawn
+    const StrainLegend *strainLegend() const { return m_legend; }
+
     void setParticleDrawing(ParticleDrawing drawing);
     ParticleDrawing particleDrawing() const { return m_drawing; }
 
@@ -71,17 +93,24 @@ public:
     // centre is within kPickPixels of the pixel on screen, so that tiny or far particles can still
     // be picked; -1 for none
     int particleAt(const QPointF &pixel) const;
-    // the spring whose line on screen passes nearest the pixel, within kPickPixels; -1 for none
+    // the spring whose line on screen passes nearest the pixel, within kPickPixels, of those drawn
+    // (a spring hidden in the sheet is not picked); -1 for none. Particles hidden in the sheet are
+    // picked, so that a cloth can still be selected and dragged by its particles
     int springAt(const QPointF &pixel) const;
     static constexpr float kPickPixels = 6.0f;
 
     // the current view drawn into an offscreen framebuffer of any size (device pixels), with the
-    // same camera and the image's aspect ratio; a null image, and the reason in error, if there is
-    // no GL context yet, the size is empty or larger than maxImageSide(), or GL fails
+    // same camera and the image's aspect ratio, and its lines as much wider than the view's as the
+    // image is taller (lineScale), so that it looks like the view; a null image, and the reason in
+    // error, if there is no GL context yet, the size is empty or larger than maxImageSide(), or GL
+    // fails
     QImage renderImage(QSize size, QString *error = nullptr);
     // the largest side renderImage() accepts: the driver's renderbuffer, texture and viewport
     // limits (0 until GL is initialised)
     int maxImageSide() const { return m_maxImageSide; }
+    // the width of a line drawn into a framebuffer this many pixels tall, over its width in the
+    // view (kSpringPixels and the others are in the view's logical pixels)
+    double lineScale(int framebufferHeight) const;
 
     // how many times the particle style was uploaded, and whether the framebuffer is multisampled
     int styleUploads() const { return m_styleUploads; }
@@ -114,7 +143,11 @@ private:
 
     void cleanupGL();
     // the whole scene as the camera sees it, into the bound framebuffer (paintGL and renderImage)
-    void drawScene(const Camera &camera, int samples);
+    // pixels: the framebuffer's size
+    void drawScene(const Camera &camera, int samples, QSize pixels);
+    // the sheet's triangles and what they hide, again when the triangles, the broken springs or
+    // the layers changed (no GL)
+    void refreshSurface();
     void uploadSnapshot();
     void uploadDecorations();
     void updateSceneBounds(const Sphere &bounds);
@@ -126,6 +159,13 @@ private:
     SpringHighlight m_springHighlight;
     int m_hoverParticle = -1;
     ParticleDrawing m_drawing = ParticleDrawing::Impostor;
+    ViewLayers m_layers;
+    SurfaceDraw m_surface;
+    SurfaceKey m_surfaceKey;
+    std::vector<std::uint8_t> m_hiddenParticles;  // per particle, by the sheet; empty when none
+    std::vector<std::uint8_t> m_hiddenSprings;    // per spring, likewise
+    bool m_surfaceChanged = true;                 // the sheet's indices are to be uploaded
+    StrainLegend *m_legend = nullptr;
 
     // what is on the GPU
     std::unique_ptr<Gpu> m_gpu;
@@ -137,6 +177,7 @@ private:
     int m_samples = 0;
     int m_maxImageSide = 0;
     std::vector<float> m_springVertices;  // kept to reuse its memory
+    std::vector<float> m_normals;         // likewise
 
     // the scene's extent for the grid, the planes and the clip planes
     Sphere m_sceneBounds{QVector3D(0.0f, 0.0f, 0.0f), 1.0f};

@@ -20,6 +20,7 @@
 #include "ui/simulation/simulation_controller.h"
 #include "ui/panels/status_text.h"
 #include "status_bar.h"
+#include "view_layer_actions.h"
 #include "ui/viewport/viewport.h"
 
 #include "core/accuracy_planner.h"
@@ -258,6 +259,8 @@ void MainWindow::createMenus()
     frameAll->setObjectName(QStringLiteral("actionFrameAll"));
     frameAll->setShortcuts({QKeySequence(Qt::Key_F), QKeySequence(Qt::Key_Home)});
     frameAll->setStatusTip(tr("Point the camera at the whole scene"));
+    m_viewMenu->addSeparator();
+    m_viewMenu->addActions((new ViewLayerActions(m_viewport, this))->actions());
     m_viewMenu->addSeparator();
 
     // help
