@@ -200,51 +200,72 @@ void forFree(const Model &model, int begin, int end, Body &&body)
     }
 }
 
-// 1 and 2 for particles [begin, end): the kick by gravity and the applied forces, the drag
-// implicit, and the prediction. The force is summed here as computeExternalForces() sums it (0 + m g,
-// then + the applied force), the same bits, without a pass of its own. Pinned particles have v = 0
-// and keep it; every particle's start is kept and moved by h v
-void kickAndPredict(const Model &model, State &state, Eigen::Matrix3Xd &start, double h, int begin, int end)
+// The kick of free particles [from, to): v ← (v + h w f) / (1 + h c w), f summed as
+// computeExternalForces() sums it (0 + m g, then + the applied force), the same bits, without a pass
+// of its own. Without drag the divisor is exactly 1 and the division is left out (the same bits).
+// One loop with all three components, so that the triples are read and written with shuffles
+template <bool Drag, bool Applied>
+SPRINGLAB_SIMD_CLONES void kickLanes(int from, int to, double h, double c, const double *__restrict g,
+                                     const double *__restrict w, const double *__restrict mass,
+                                     const double *__restrict applied, double *__restrict v)
 {
-    double *v = state.velocity.data();
-    const double *w = model.invMass.data();
-    const double *mass = model.mass.data();
-    const double *applied = state.appliedCount > 0 ? state.applied.data() : nullptr;
-    const bool gravity = model.plan.gravity;
-    const double g[3] = {model.gravity[0], model.gravity[1], model.gravity[2]};
-    const double c = model.viscosity;
-    forFree(model, begin, end, [&](int from, int to) {
 #pragma omp simd
-        for (int i = from; i < to; ++i) {
-            const double kick = h * w[i];
-            const double slow = 1.0 + h * c * w[i];
-            for (int axis = 0; axis < 3; ++axis) {
-                double f = gravity ? startingForce(g[axis], mass[i]) : 0.0;
-                f = applied ? f + applied[3 * i + axis] : f;
-                v[3 * i + axis] = (v[3 * i + axis] + kick * f) / slow;
-            }
+    for (int i = from; i < to; ++i) {
+        const double kick = h * w[i];
+        const double slow = 1.0 + h * c * w[i];
+        for (int axis = 0; axis < 3; ++axis) {
+            double f = startingForce(g[axis], mass[i]);
+            if constexpr (Applied)
+                f = f + applied[3 * i + axis];
+            const double kicked = v[3 * i + axis] + kick * f;
+            v[3 * i + axis] = Drag ? kicked / slow : kicked;
         }
-    });
-    double *x = state.position.data();
-    double *x0 = start.data();
+    }
+}
+
+// values [from, to) of the xyz triples: the start kept, and the prediction x + h v
+SPRINGLAB_SIMD_CLONES void predictLanes(int from, int to, double h, const double *__restrict v, double *__restrict x,
+                                        double *__restrict x0)
+{
 #pragma omp simd
-    for (int k = 3 * begin; k < 3 * end; ++k) {
+    for (int k = from; k < to; ++k) {
         x0[k] = x[k];
         x[k] = x[k] + h * v[k];
     }
 }
 
+// values [from, to) of the xyz triples: the velocity is the move
+SPRINGLAB_SIMD_CLONES void settleLanes(int from, int to, double perSecond, const double *__restrict x,
+                                       const double *__restrict x0, double *__restrict v)
+{
+#pragma omp simd
+    for (int k = from; k < to; ++k)
+        v[k] = (x[k] - x0[k]) * perSecond;
+}
+
+// 1 and 2 for particles [begin, end): the kick of the free ones, and every particle's start kept
+// and moved by h v (pinned particles have v = 0 and keep it)
+void kickAndPredict(const Model &model, State &state, Eigen::Matrix3Xd &start, double h, int begin, int end)
+{
+    double *v = state.velocity.data();
+    const double *applied = state.appliedCount > 0 ? state.applied.data() : nullptr;
+    // no gravity: 0 + 0 m, the 0 the passes start from
+    const double g[3] = {model.plan.gravity ? model.gravity[0] : 0.0, model.plan.gravity ? model.gravity[1] : 0.0,
+                         model.plan.gravity ? model.gravity[2] : 0.0};
+    const auto kick = model.plan.drag ? (applied ? kickLanes<true, true> : kickLanes<true, false>)
+                                      : (applied ? kickLanes<false, true> : kickLanes<false, false>);
+    forFree(model, begin, end, [&](int from, int to) {
+        kick(from, to, h, model.viscosity, g, model.invMass.data(), model.mass.data(), applied, v);
+    });
+    predictLanes(3 * begin, 3 * end, h, v, state.position.data(), start.data());
+}
+
 // 4 for particles [begin, end): the velocity is the move
 void settle(const Model &model, State &state, const Eigen::Matrix3Xd &start, double h, int begin, int end)
 {
-    double *v = state.velocity.data();
-    const double *x = state.position.data();
-    const double *x0 = start.data();
     const double perSecond = 1.0 / h;
     forFree(model, begin, end, [&](int from, int to) {
-#pragma omp simd
-        for (int k = 3 * from; k < 3 * to; ++k)
-            v[k] = (x[k] - x0[k]) * perSecond;
+        settleLanes(3 * from, 3 * to, perSecond, state.position.data(), start.data(), state.velocity.data());
     });
 }
 
