@@ -8,6 +8,10 @@
 //   springlab-bench stiff [--out DIR] [--quick]      a stiff cloth: the sub-steps and cost each of
 //                                                    symplectic Euler, implicit Euler and xpbd needs
 //                                                    to stay within 1% stretch
+//   springlab-bench stiff ... [--size N]... [--stiffness K]...   only those rows of it
+//   springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]
+//                                                    one xpbd sub-step's cost: the core's pass beside
+//                                                    the colour-by-colour pass it replaced
 //   springlab-bench write-references DIR             the reference problems as scene files
 //
 // The plots are painted into images, which needs a QGuiApplication for the fonts but no display:
@@ -19,6 +23,7 @@
 #include "stability.h"
 #include "stiff.h"
 #include "throughput.h"
+#include "xpbd_substep.h"
 
 #include "core/io/scene_file.h"
 
@@ -26,6 +31,8 @@
 #include <QDir>
 #include <QGuiApplication>
 #include <QTextStream>
+
+#include <optional>
 
 namespace {
 
@@ -38,13 +45,29 @@ const char *const kUsage =
     "       springlab-bench stability [--out DIR] [--quick]\n"
     "       springlab-bench throughput [--out DIR] [--quick]\n"
     "       springlab-bench contacts [--out DIR] [--quick]\n"
-    "       springlab-bench stiff [--out DIR] [--quick]\n"
+    "       springlab-bench stiff [--out DIR] [--quick] [--size N]... [--stiffness K]...\n"
+    "       springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]\n"
     "       springlab-bench write-references DIR\n";
 
 int badArguments(QTextStream &err, const QString &message)
 {
     err << "springlab-bench: " << message << '\n' << kUsage;
     return kExitBadArguments;
+}
+
+// parses a mode's arguments: nullopt to go on, else the exit code (bad arguments, or the help printed)
+std::optional<int> parseMode(QCommandLineParser &parser, const QStringList &arguments, QTextStream &out,
+                             QTextStream &err, const QString &mode)
+{
+    if (!parser.parse(arguments))
+        return badArguments(err, parser.errorText());
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << parser.helpText();
+        return kExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return badArguments(err, QStringLiteral("%1 takes no file names").arg(mode));
+    return std::nullopt;
 }
 
 // a mode that takes --out DIR and --quick and nothing else: parses them and calls
@@ -59,14 +82,8 @@ int sweepMode(const QStringList &arguments, QTextStream &out, QTextStream &err, 
     const QCommandLineOption outOption(QStringLiteral("out"), outHelp, QStringLiteral("DIR"), QStringLiteral("."));
     const QCommandLineOption quickOption(QStringLiteral("quick"), quickHelp);
     parser.addOptions({outOption, quickOption});
-    if (!parser.parse(arguments))
-        return badArguments(err, parser.errorText());
-    if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
-        return kExitOk;
-    }
-    if (!parser.positionalArguments().isEmpty())
-        return badArguments(err, QStringLiteral("%1 takes no file names").arg(mode));
+    if (const std::optional<int> done = parseMode(parser, arguments, out, err, mode))
+        return *done;
     return run(parser.value(outOption), parser.isSet(quickOption));
 }
 
@@ -111,13 +128,76 @@ int contacts(const QStringList &arguments, QTextStream &out, QTextStream &err)
 
 int stiff(const QStringList &arguments, QTextStream &out, QTextStream &err)
 {
-    return sweepMode(
-        arguments, out, err, QStringLiteral("stiff"),
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
         QStringLiteral("A stiff cloth draping: the sub-steps and cost symplectic Euler, implicit Euler and xpbd need "
-                       "to keep it within 1% stretch, against a fine reference."),
-        QStringLiteral("Folder for the CSV, the summary and the plot (default: .)."),
-        QStringLiteral("A tiny cloth at two stiffnesses: a smoke test only."),
-        [&](const QString &dir, bool quick) { return bench::runStiff({dir, quick}, out); });
+                       "to keep it within 1% stretch, against a fine reference."));
+    parser.addHelpOption();
+    const QCommandLineOption outOption(QStringLiteral("out"),
+                                       QStringLiteral("Folder for the CSV, the summary and the plot (default: .)."),
+                                       QStringLiteral("DIR"), QStringLiteral("."));
+    const QCommandLineOption quickOption(QStringLiteral("quick"),
+                                         QStringLiteral("A tiny cloth at two stiffnesses: a smoke test only."));
+    const QCommandLineOption sizeOption(QStringLiteral("size"),
+                                        QStringLiteral("Only this cloth size (particles a side); repeatable."),
+                                        QStringLiteral("N"));
+    const QCommandLineOption stiffnessOption(
+        QStringLiteral("stiffness"), QStringLiteral("Only this structural stiffness (N/m); repeatable."),
+        QStringLiteral("K"));
+    parser.addOptions({outOption, quickOption, sizeOption, stiffnessOption});
+    if (const std::optional<int> done = parseMode(parser, arguments, out, err, QStringLiteral("stiff")))
+        return *done;
+    bench::StiffOptions options{parser.value(outOption), parser.isSet(quickOption), {}, {}};
+    for (const QString &text : parser.values(sizeOption)) {
+        bool ok = false;
+        const int size = text.toInt(&ok);
+        if (!ok || size < 2)
+            return badArguments(err, QStringLiteral("--size: expected a whole number from 2, got \"%1\"").arg(text));
+        options.sizes.push_back(size);
+    }
+    for (const QString &text : parser.values(stiffnessOption)) {
+        bool ok = false;
+        const double k = text.toDouble(&ok);
+        if (!ok || !(k > 0.0))
+            return badArguments(err, QStringLiteral("--stiffness: expected a positive number, got \"%1\"").arg(text));
+        options.stiffness.push_back(k);
+    }
+    return bench::runStiff(options, out);
+}
+
+int xpbdSubStep(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("The cost of one xpbd sub-step on the stiff cloth: the core's pass beside the colour-by-colour "
+                       "pass it replaced and symplectic Euler's sub-step, on 1 and 2 threads."));
+    parser.addHelpOption();
+    const bench::XpbdSubStepOptions defaults;
+    const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Particles a side."), QStringLiteral("N"),
+                                  QString::number(defaults.size));
+    const QCommandLineOption stiffness(QStringLiteral("stiffness"), QStringLiteral("Structural stiffness, N/m."),
+                                       QStringLiteral("K"), QString::number(defaults.stiffness));
+    const QCommandLineOption substeps(QStringLiteral("substeps"), QStringLiteral("Sub-steps a 0.01 s step."),
+                                      QStringLiteral("S"), QString::number(defaults.substeps));
+    const QCommandLineOption runs(QStringLiteral("runs"), QStringLiteral("Timed runs of each variant."),
+                                  QStringLiteral("R"), QString::number(defaults.runs));
+    const QCommandLineOption drape(QStringLiteral("drape"),
+                                   QStringLiteral("Seconds of draping to read the stretch over (0: none)."),
+                                   QStringLiteral("SECONDS"), QString::number(defaults.drape));
+    parser.addOptions({size, stiffness, substeps, runs, drape});
+    if (const std::optional<int> done = parseMode(parser, arguments, out, err, QStringLiteral("xpbd-substep")))
+        return *done;
+    bench::XpbdSubStepOptions options;
+    bool ok[5] = {};
+    options.size = parser.value(size).toInt(&ok[0]);
+    options.stiffness = parser.value(stiffness).toDouble(&ok[1]);
+    options.substeps = parser.value(substeps).toInt(&ok[2]);
+    options.runs = parser.value(runs).toInt(&ok[3]);
+    options.drape = parser.value(drape).toDouble(&ok[4]);
+    if (!(ok[0] && ok[1] && ok[2] && ok[3] && ok[4]) || options.size < 2 || !(options.stiffness > 0.0) ||
+        options.substeps < 1 || options.runs < 1 || !(options.drape >= 0.0))
+        return badArguments(err, QStringLiteral("xpbd-substep: a value is not a number in its range"));
+    return bench::runXpbdSubStep(options, out);
 }
 
 // every reference problem's scene, saved as DIR/<name>.json
@@ -167,6 +247,8 @@ int main(int argc, char *argv[])
         return contacts(arguments, out, err);
     if (name == QStringLiteral("stiff"))
         return stiff(arguments, out, err);
+    if (name == QStringLiteral("xpbd-substep"))
+        return xpbdSubStep(arguments, out, err);
     if (name == QStringLiteral("write-references"))
         return writeReferences(arguments, out, err);
     if (name == QStringLiteral("--help") || name == QStringLiteral("-h")) {

@@ -546,7 +546,11 @@ int runStiff(const StiffOptions &options, QTextStream &out)
         return 1;
     const QDir &dir = *folder;
     const RunClock clock;
-    const Plan plan = planFor(options.quick);
+    Plan plan = planFor(options.quick);
+    if (!options.sizes.empty())
+        plan.sizes = options.sizes;
+    if (!options.stiffness.empty())
+        plan.stiffness = options.stiffness;
     const int restoreThreads = core::threadCount();
     core::setThreadCount(1);
 

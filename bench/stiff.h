@@ -7,11 +7,17 @@
 #include <QString>
 #include <QTextStream>
 
+#include <vector>
+
 namespace bench {
 
 struct StiffOptions {
     QString outDir = QStringLiteral(".");  // where stiff.csv, stiff.txt and stiff.png go
     bool quick = false;                    // a tiny cloth, two stiffnesses: a smoke test only
+    // only these cloth sizes and structural stiffnesses of the full plan (empty: all of them), to
+    // rerun some rows where the whole sweep does not fit
+    std::vector<int> sizes;
+    std::vector<double> stiffness;
 };
 
 // runs the sweep, writes stiff.csv, stiff.txt and stiff.png, prints the rows and the issue's

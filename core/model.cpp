@@ -4,7 +4,7 @@
 #include "stability.h"
 #include "state.h"
 #include "validate.h"
-#include "xpbd.h"
+#include "xpbd_layout.h"
 
 #include <cassert>
 
@@ -38,6 +38,7 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *b
     // settings
     model->timeStep = s.timeStep;
     model->substeps = s.substeps;
+    model->xpbdIterations = s.xpbdIterations;
     model->integrator = s.integrator;
     model->tolerance = s.tolerance;
     model->gravity = s.gravity;
@@ -168,10 +169,9 @@ void setIntegrator(Model &model, Integrator integrator)
     model.plan.subStep = euler && model.springLayout.blocks ? SubStepPath::FusedLattice : SubStepPath::Stages;
     // xpbd's colours, only while it is the integrator (a scene that never runs it pays nothing)
     if (integrator == Integrator::Xpbd && model.plan.springs) {
-        colourSprings(model);
+        model.xpbdLayout = xpbdLayout(model);
     } else {
-        model.xpbdOrder.clear();
-        model.xpbdColourStart.clear();
+        model.xpbdLayout = XpbdLayout{};
     }
 }
 

@@ -7,6 +7,7 @@
 #include "scene.h"
 #include "spring_layout.h"
 #include "spring_triangles.h"
+#include "xpbd_layout.h"
 
 #include <Eigen/Core>
 #include <memory>
@@ -43,6 +44,7 @@ struct Model {
     // settings
     double timeStep = 0.01;  // s
     int substeps = 1;
+    int xpbdIterations = 1;  // xpbd's passes over the springs a sub-step
     Integrator integrator = Integrator::SymplecticEuler;
     double tolerance = 1e-6;  // adaptive-rk45's error target per step
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // m/s²
@@ -78,11 +80,9 @@ struct Model {
     std::vector<int> springEnds;
     // the same list as the vectorised kernels walk it, and the spring pass it takes
     SpringLayout springLayout;
-    // for xpbd, set only while it is the integrator: the springs by colour, no two of a colour
-    // moving the same particle, so that each colour is solved on all threads at once with the same
-    // bits as on one; colour c is xpbdOrder[xpbdColourStart[c] .. xpbdColourStart[c + 1])
-    std::vector<int> xpbdOrder;
-    std::vector<int> xpbdColourStart;
+    // for xpbd, set only while it is the integrator: the order it projects the springs in, and their
+    // data in that order (xpbd_layout.h)
+    XpbdLayout xpbdLayout;
     // the spring mesh's triangles, for drawing it as a sheet (spring_triangles.h); found once, here,
     // and shared by every snapshot of the model
     std::shared_ptr<const SpringTriangles> triangles;

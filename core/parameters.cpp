@@ -44,6 +44,10 @@ constexpr ParameterInfo kTable[] = {
      "Coulomb coefficient: the friction a contact can hold, as a share of the force pressing it", 0.0, 2.0},
     {Parameter::Extent, "size", "Size", "m", 0.0, 1.0e6, false, Scale::Linear, 0.0,
      "A side of a rectangle; 0 makes the plane unbounded", 0.0, 20.0},
+    {Parameter::XpbdIterations, "xpbdIterations", "Iterations", "", 1.0, 100.0, false, Scale::Linear, 1.0,
+     "xpbd's passes over the springs in each sub-step: more hold stiff springs closer to their rest length, "
+     "at that many times the cost of the pass",
+     1.0, 20.0},
 };
 
 }  // namespace

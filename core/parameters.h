@@ -31,8 +31,9 @@ enum class Parameter {
     BreakStrain,  // (l - l0) / l0 at which a spring breaks; 0: never
     Friction,     // a Coulomb coefficient, static or kinetic
     Extent,       // a side of a rectangle
+    XpbdIterations,  // xpbd's passes over the springs a sub-step
 };
-inline constexpr int kParameterCount = static_cast<int>(Parameter::Extent) + 1;
+inline constexpr int kParameterCount = static_cast<int>(Parameter::XpbdIterations) + 1;
 
 enum class Scale { Linear, Log };
 

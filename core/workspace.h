@@ -8,6 +8,7 @@
 #include "contact_scratch.h"
 #include "blowup.h"
 #include "profile.h"
+#include "xpbd_layout.h"
 
 #include <Eigen/Core>
 #include <array>
@@ -27,6 +28,9 @@ struct Workspace {
     // the fused lattice sub-step's (spring_blocks.cpp): each thread's window of particles and its
     // block's forces (made again when the thread count changes)
     std::vector<double> blockScratch;
+    // xpbd's λ per spring (in XpbdLayout's order), kept across a sub-step's passes when it has several
+    std::vector<double> xpbdLambda;
+    XpbdConstants xpbdConstants;  // the sub-step's constants per spring, for the last layout and h
     ContactGrid contacts;  // the particle-pair pass's grid and pairs (broad_phase.cpp)
     ContactScratch contactSolver;  // the iterative contact solver's (contacts.cpp)
 

@@ -410,6 +410,9 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
         out += "        \"autoSubsteps\": true,\n";
     out += "        \"integrator\": ";
     appendString(out, integrator);
+    // only when not the default, so that files written before it existed read back byte for byte
+    if (s.xpbdIterations != 1)
+        out += ",\n        \"xpbdIterations\": " + QByteArray::number(s.xpbdIterations);
     out += ",\n        \"tolerance\": " + formatNumber(s.tolerance);
     // only with a state that adaptive-rk45 stepped: the step size it was about to try
     if (s.adaptiveStep)

@@ -111,6 +111,11 @@ const SetCase kSetCases[] = {
          for (auto &spring : s.springs) spring.restLength = 0.3;
          s.settings.gravity = {0.0, -1.62, 0.0};
      }},
+    {"xpbd and its iterations", {u"settings.integrator=xpbd"_s, u"settings.xpbdIterations=3"_s},
+     [](core::SceneDesc &s) {
+         s.settings.integrator = core::Integrator::Xpbd;
+         s.settings.xpbdIterations = 3;
+     }},
     {"later wins", {u"springs.stiffness=100"_s, u"springs[2].stiffness=900"_s, u"particles[1].mass=1"_s,
                     u"particles[1].mass=0.5"_s},
      [](core::SceneDesc &s) {
@@ -230,6 +235,9 @@ void TestSimSweep::setRefusals_data()
                                 << u"is out of range (the scene has 1 planes)"_s;
     QTest::newRow("out of range") << set(u"settings.timeStep=5"_s)
                                   << u"--set settings.timeStep=5: settings.timeStep: must be at most 1 s (got 5 s)"_s;
+    QTest::newRow("xpbd iterations out of range")
+        << set(u"settings.xpbdIterations=0"_s)
+        << u"--set settings.xpbdIterations=0: settings.xpbdIterations: must be at least 1 (got 0)"_s;
     QTest::newRow("every element out of range")
         << set(u"particles.mass=0"_s)
         << u"--set particles.mass=0: particles[0].mass: must be greater than 0 kg (got 0 kg)"_s;

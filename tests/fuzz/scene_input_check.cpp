@@ -51,8 +51,8 @@ double evaluationsPerSubStep(const core::Model &model)
 {
     switch (model.integrator) {
     case core::Integrator::SymplecticEuler:
-    case core::Integrator::ExplicitEuler:
-    case core::Integrator::Xpbd: return 1.0;  // one pass over the springs, as one force evaluation
+    case core::Integrator::ExplicitEuler: return 1.0;
+    case core::Integrator::Xpbd: return model.xpbdIterations;  // a pass over the springs each, as one evaluation
     case core::Integrator::VelocityVerlet: return 2.0;
     case core::Integrator::Rk4: return 4.0;
     case core::Integrator::ImplicitEuler: return 1000.0;  // its conjugate-gradient solve stops at 1000 iterations

@@ -97,7 +97,8 @@ QString bitDifference(const core::SceneDesc &a, const core::SceneDesc &b)
     const core::Settings &t = b.settings;
     if (a.name != b.name)
         return QStringLiteral("name");
-    if (s.substeps != t.substeps || s.integrator != t.integrator || s.planeCollisions != t.planeCollisions ||
+    if (s.substeps != t.substeps || s.xpbdIterations != t.xpbdIterations || s.integrator != t.integrator ||
+        s.planeCollisions != t.planeCollisions ||
         s.particleCollisions != t.particleCollisions || s.contactSolver != t.contactSolver)
         return QStringLiteral("settings");
     if (!sameBits(s.timeStep, t.timeStep, QStringLiteral("timeStep"), d) ||
@@ -169,6 +170,7 @@ core::SceneDesc awkwardScene()
     scene.settings.substeps = 7;
     scene.settings.autoSubsteps = true;
     scene.settings.integrator = core::Integrator::ExplicitEuler;
+    scene.settings.xpbdIterations = 13;
     scene.settings.gravity = {-0.0, -9.81, 1e-300};
     scene.settings.viscosity = denormal;
     scene.settings.restitution = 0.1;
@@ -553,6 +555,12 @@ void TestSceneFile::badFile_data()
     QTest::newRow("adaptive step of 0")
         << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"adaptiveStep\": 0,")
         << QStringLiteral("settings.adaptiveStep") << QStringLiteral("must be greater than 0 s (got 0");
+    QTest::newRow("no xpbd iterations")
+        << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"xpbdIterations\": 0,")
+        << QStringLiteral("settings.xpbdIterations") << QStringLiteral("must be at least 1 (got 0)");
+    QTest::newRow("too many xpbd iterations")
+        << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"xpbdIterations\": 101,")
+        << QStringLiteral("settings.xpbdIterations") << QStringLiteral("must be at most 100 (got 101)");
     QTest::newRow("negative static friction")
         << QByteArray("\"restitution\": 1,") << QByteArray("\"restitution\": 1, \"staticFriction\": -0.1,")
         << QStringLiteral("settings.staticFriction") << QStringLiteral("must be at least 0 (got -0.1)");
@@ -1041,6 +1049,10 @@ void TestSceneFile::saveWritesEveryKey()
     QVERIFY(!json.contains("autoSubsteps"));
     scene.settings.autoSubsteps = true;
     QVERIFY(io::sceneToJson(scene).contains("\"autoSubsteps\": true,"));
+    // and xpbdIterations only when not 1, after the integrator
+    QVERIFY(!json.contains("xpbdIterations"));
+    scene.settings.xpbdIterations = 4;
+    QVERIFY(io::sceneToJson(scene).contains("\"integrator\": \"symplectic-euler\",\n        \"xpbdIterations\": 4,\n"));
     // and the contact keys that can be unset, or that only a rectangle needs, only when they say
     // something (planeKeys has the cases)
     for (const char *key : {"staticFriction", "twoSided", "\"friction\": 0}", "size", "centre", "axis"})

@@ -1,9 +1,10 @@
 // The parameters panel with real widgets: its rows come from the parameter table, a slider move or
 // a typed value edits the document (one undo step per drag), and a value out of range is refused
 // with a message and never reaches the document. The integrator combo box lists every integrator;
-// each choice is one undo step, and the tolerance row is enabled for adaptive-rk45 only. In the
-// contacts group, a friction drag is one undo step, the static friction row follows it until it is
-// set (and can be made to follow again), and the contact solver is a choice like the integrator.
+// each choice is one undo step, the tolerance row is enabled for adaptive-rk45 only and the
+// iterations row for xpbd only. In the contacts group, a friction drag is one undo step, the static
+// friction row follows it until it is set (and can be made to follow again), and the contact solver
+// is a choice like the integrator.
 
 #include "ui/panels/parameter_row.h"
 #include "ui/panels/parameters_panel.h"
@@ -86,6 +87,7 @@ private slots:
     void integratorBoxListsEveryIntegrator();
     void choosingAnIntegratorIsOneUndoStep();
     void toleranceRowIsForTheAdaptiveIntegratorOnly();
+    void iterationsRowIsForXpbdOnly();
     void frictionRowsSayWhichCoefficient();
     void frictionDragIsOneUndoStep();
     void staticFrictionFollowsUntilSet();
@@ -125,6 +127,7 @@ void TestParametersPanel::rowsComeFromTheParameterTable()
         {"gravity.z", core::Parameter::Gravity, " z"}, {"viscosity", core::Parameter::Viscosity, ""},
         {"restitution", core::Parameter::Restitution, ""}, {"stiffness", core::Parameter::Stiffness, ""},
         {"damping", core::Parameter::Damping, ""},     {"tolerance", core::Parameter::Tolerance, ""},
+        {"xpbdIterations", core::Parameter::XpbdIterations, ""},
     };
     for (const auto &e : expected) {
         ui::ParameterRow *row = m_panel->row(QString::fromLatin1(e.key));
@@ -330,6 +333,27 @@ void TestParametersPanel::toleranceRowIsForTheAdaptiveIntegratorOnly()
     type(row->spinBox(), QStringLiteral("5"));
     QVERIFY2(m_panel->message().contains(QStringLiteral("must be at most")), qPrintable(m_panel->message()));
     QCOMPARE(m_document->scene().settings.tolerance, 1e-8);
+
+    QTest::keyClick(box, Qt::Key_Home);
+    QVERIFY(!row->isEnabled());
+}
+
+void TestParametersPanel::iterationsRowIsForXpbdOnly()
+{
+    ui::ParameterRow *row = m_panel->row(QStringLiteral("xpbdIterations"));
+    QVERIFY(!row->isEnabled());
+    QComboBox *box = m_panel->integratorBox();
+    box->setFocus();
+    QTest::keyClick(box, Qt::Key_End);
+    QCOMPARE(m_document->scene().settings.integrator, core::Integrator::Xpbd);
+    QVERIFY(row->isEnabled());
+
+    // a whole number, typed in, and refused out of the table's range
+    type(row->spinBox(), QStringLiteral("4"));
+    QCOMPARE(m_document->scene().settings.xpbdIterations, 4);
+    type(row->spinBox(), QStringLiteral("500"));
+    QVERIFY2(m_panel->message().contains(QStringLiteral("must be at most")), qPrintable(m_panel->message()));
+    QCOMPARE(m_document->scene().settings.xpbdIterations, 4);
 
     QTest::keyClick(box, Qt::Key_Home);
     QVERIFY(!row->isEnabled());

@@ -51,6 +51,9 @@ const Binding kBindings[] = {
     {"substeps", core::Parameter::Substeps, Group::Time, "",
      [](const core::SceneDesc &s) { return double(s.settings.substeps); },
      [](core::Settings &s, double v) { s.substeps = int(v); }, nullptr},
+    {"xpbdIterations", core::Parameter::XpbdIterations, Group::Time, "",
+     [](const core::SceneDesc &s) { return double(s.settings.xpbdIterations); },
+     [](core::Settings &s, double v) { s.xpbdIterations = int(v); }, nullptr},
     {"tolerance", core::Parameter::Tolerance, Group::Time, "",
      [](const core::SceneDesc &s) { return s.settings.tolerance; },
      [](core::Settings &s, double v) { s.tolerance = v; }, nullptr},
@@ -182,7 +185,9 @@ ParametersPanel::ParametersPanel(SceneDocument &document, QWidget *parent)
         const Binding &binding = kBindings[b];
         const core::ParameterInfo &info = core::parameterInfo(binding.parameter);
         const QString label = fromView(info.label) + QString::fromLatin1(binding.suffix);
-        auto *row = new ParameterRow(info, label, binding.parameter == core::Parameter::Substeps, this);
+        const bool integral =
+            binding.parameter == core::Parameter::Substeps || binding.parameter == core::Parameter::XpbdIterations;
+        auto *row = new ParameterRow(info, label, integral, this);
         row->setObjectName(QStringLiteral("parameter-") + QString::fromLatin1(binding.key));
         forms[std::size_t(binding.group)]->addRow(row->label(), row);
         connect(row, &ParameterRow::valueEdited, this, [this, b](double value) { edit(b, value); });
@@ -276,6 +281,7 @@ void ParametersPanel::refresh()
         if (core::kIntegrators[i] == integrator)
             m_integrator->setCurrentIndex(int(i));
     row(QStringLiteral("tolerance"))->setEnabled(integrator == core::Integrator::AdaptiveRk45);
+    row(QStringLiteral("xpbdIterations"))->setEnabled(integrator == core::Integrator::Xpbd);
     for (std::size_t i = 0; i < std::size(core::kContactSolvers); ++i)
         if (core::kContactSolvers[i] == scene.settings.contactSolver)
             m_contactSolver->setCurrentIndex(int(i));

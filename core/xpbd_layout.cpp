@@ -1,0 +1,166 @@
+#include "xpbd_layout.h"
+
+#include "model.h"
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cstdlib>
+
+namespace core {
+
+std::vector<int> greedyColours(const Model &model, const std::vector<int> &springs)
+{
+    // the free ends the springs touch, numbered locally, and how many of the springs each has
+    std::vector<int> ends;
+    ends.reserve(2 * springs.size());
+    for (int k : springs)
+        for (int end : {model.springA[std::size_t(k)], model.springB[std::size_t(k)]})
+            if (!model.isPinned(end))
+                ends.push_back(end);
+    std::sort(ends.begin(), ends.end());
+    int degree = 0;
+    for (std::size_t i = 0; i < ends.size();) {
+        std::size_t j = i;
+        while (j < ends.size() && ends[j] == ends[i])
+            ++j;
+        degree = std::max(degree, int(j - i));
+        i = j;
+    }
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    const auto local = [&](int particle) {
+        return std::size_t(std::lower_bound(ends.begin(), ends.end(), particle) - ends.begin());
+    };
+    // each free end's colours as bits, 64 to a word; a spring's colour is at most the number of
+    // springs at its two ends, so 2 × the largest degree + 1 colours are enough
+    const std::size_t words = std::size_t(2 * degree) / 64 + 1;
+    std::vector<std::uint64_t> used(ends.size() * words, 0);
+    std::vector<int> colour(springs.size(), 0);
+    for (std::size_t s = 0; s < springs.size(); ++s) {
+        const int k = springs[s];
+        std::size_t at[2];
+        int moving = 0;
+        for (int end : {model.springA[std::size_t(k)], model.springB[std::size_t(k)]})
+            if (!model.isPinned(end))
+                at[moving++] = local(end) * words;
+        int c = 0;
+        for (std::size_t word = 0; word < words; ++word) {
+            std::uint64_t taken = 0;
+            for (int e = 0; e < moving; ++e)
+                taken |= used[at[e] + word];
+            if (~taken != 0) {
+                c = int(word) * 64 + std::countr_one(taken);
+                break;
+            }
+        }
+        colour[s] = c;
+        for (int e = 0; e < moving; ++e)
+            used[at[e] + std::size_t(c / 64)] |= std::uint64_t(1) << (c % 64);
+    }
+    return colour;
+}
+
+namespace {
+
+// one slot appended: spring k with its free end as end a
+void addSlot(const Model &model, XpbdLayout &layout, int k)
+{
+    int a = model.springA[std::size_t(k)];
+    int b = model.springB[std::size_t(k)];
+    if (model.isPinned(a))
+        std::swap(a, b);  // the projection gives the same bits either way round (xpbd.cpp)
+    layout.spring.push_back(k);
+    layout.a.push_back(a);
+    layout.b.push_back(b);
+    layout.wa.push_back(model.invMass[a]);
+    layout.wb.push_back(model.invMass[b]);
+    layout.restLength.push_back(model.restLength[k]);
+    layout.stiffness.push_back(model.stiffness[k]);
+    layout.damping.push_back(model.damping[k]);
+}
+
+// a task from springs (in spring order): its colours, each a batch of the springs with both ends
+// free and one of those with one
+void addTask(const Model &model, XpbdLayout &layout, const std::vector<int> &springs)
+{
+    if (springs.empty())
+        return;
+    const std::vector<int> colour = greedyColours(model, springs);
+    // batch 2 c: colour c's springs with both ends free; 2 c + 1: those with one; each in spring order
+    std::vector<int> batch(springs.size());
+    int batches = 0;
+    for (std::size_t s = 0; s < springs.size(); ++s) {
+        const int k = springs[s];
+        const bool pinnedEnd = model.isPinned(model.springA[std::size_t(k)]) || model.isPinned(model.springB[std::size_t(k)]);
+        batch[s] = 2 * colour[s] + (pinnedEnd ? 1 : 0);
+        batches = std::max(batches, batch[s] + 1);
+    }
+    std::vector<int> start(std::size_t(batches) + 1, 0);
+    for (int i : batch)
+        start[std::size_t(i) + 1] += 1;
+    for (int i = 0; i < batches; ++i)
+        start[std::size_t(i) + 1] += start[std::size_t(i)];
+    std::vector<int> sorted(springs.size());
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (std::size_t s = 0; s < springs.size(); ++s)
+        sorted[std::size_t(fill[std::size_t(batch[s])]++)] = springs[s];
+    for (int i = 0; i < batches; ++i) {
+        if (start[std::size_t(i)] == start[std::size_t(i) + 1])
+            continue;
+        for (int s = start[std::size_t(i)]; s < start[std::size_t(i) + 1]; ++s)
+            addSlot(model, layout, sorted[std::size_t(s)]);
+        layout.batchStart.push_back(layout.slotCount());
+        layout.batchMovesB.push_back(i % 2 == 0 ? 1 : 0);
+    }
+    layout.taskStart.push_back(layout.batchCount());
+}
+
+}  // namespace
+
+XpbdLayout xpbdLayout(const Model &model)
+{
+    static std::atomic<std::uint64_t> made{0};
+    XpbdLayout layout;
+    layout.id = made.fetch_add(1, std::memory_order_relaxed) + 1;
+    layout.batchStart = {0};
+    layout.taskStart = {0};
+    layout.phaseStart = {0};
+    // each spring to its block, seam or the far list
+    const int blocks = (model.particleCount() + kXpbdBlock - 1) / kXpbdBlock;
+    std::vector<std::vector<int>> own(static_cast<std::size_t>(blocks));
+    std::vector<std::vector<int>> seam(static_cast<std::size_t>(blocks));
+    std::vector<int> far;
+    for (int k = 0; k < model.springCount(); ++k) {
+        const int a = model.springA[std::size_t(k)];
+        const int b = model.springB[std::size_t(k)];
+        const bool moveA = !model.isPinned(a);
+        const bool moveB = !model.isPinned(b);
+        if ((!moveA && !moveB) || !(model.stiffness[k] > 0.0))
+            continue;  // nothing to move, or no constraint
+        const int qa = (moveA ? a : b) / kXpbdBlock;
+        const int qb = (moveB ? b : a) / kXpbdBlock;
+        if (qa == qb)
+            own[std::size_t(qa)].push_back(k);
+        else if (std::abs(qa - qb) == 1)
+            seam[std::size_t(std::min(qa, qb))].push_back(k);
+        else
+            far.push_back(k);
+    }
+    const auto endPhase = [&] {
+        if (layout.taskCount() > layout.phaseStart.back())
+            layout.phaseStart.push_back(layout.taskCount());
+    };
+    for (const auto &springs : own)
+        addTask(model, layout, springs);
+    endPhase();
+    for (int parity : {0, 1}) {
+        for (int q = parity; q < blocks; q += 2)
+            addTask(model, layout, seam[std::size_t(q)]);
+        endPhase();
+    }
+    addTask(model, layout, far);
+    endPhase();
+    return layout;
+}
+
+}  // namespace core
