@@ -91,55 +91,81 @@ double StabilityLimit::maxSubStep(Integrator integrator) const
     return infinity;
 }
 
-StabilityLimit stabilityLimit(const Model &model, const State &state)
+StabilityAnalysis::StabilityAnalysis(const Model &model, const State &state) : m_model(model), m_state(state)
 {
-    StabilityLimit limit;
     const int n = model.particleCount();
-    if (model.springCount() == 0 || model.freeParticles.empty())
-        return limit;
-    const Eigen::VectorXd rootInvMass = model.invMass.cwiseSqrt();
+    if (model.springCount() == 0 || model.freeParticles.empty()) {
+        m_done = true;
+        return;
+    }
+    m_rootInvMass = model.invMass.cwiseSqrt();
 
     // Gershgorin on the 3×3 blocks: λ ≤ max_i Σ_springs k (w_i + √(w_i w_j))
     Eigen::VectorXd rows = Eigen::VectorXd::Zero(n);
     for (int k = 0; k < model.springCount(); ++k) {
         const int a = model.springA[static_cast<std::size_t>(k)];
         const int b = model.springB[static_cast<std::size_t>(k)];
-        const double cross = rootInvMass[a] * rootInvMass[b];
+        const double cross = m_rootInvMass[a] * m_rootInvMass[b];
         rows[a] += model.stiffness[k] * (model.invMass[a] + cross);
         rows[b] += model.stiffness[k] * (model.invMass[b] + cross);
     }
-    limit.gershgorinOmega = std::sqrt(rows.maxCoeff());
+    m_limit.gershgorinOmega = std::sqrt(rows.maxCoeff());
 
     // power iteration from a fixed, mixed start vector (deterministic)
-    Eigen::Matrix3Xd y(3, n), scaled(3, n), next(3, n);
+    m_y.resize(3, n);
+    m_scaled.resize(3, n);
+    m_next.resize(3, n);
     std::uint32_t seed = 12345u;
     for (int i = 0; i < n; ++i)
         for (int axis = 0; axis < 3; ++axis) {
             seed = seed * 1664525u + 1013904223u;
-            y(axis, i) = model.invMass[i] > 0.0 ? static_cast<double>(seed >> 8) / double(1u << 24) - 0.5 : 0.0;
+            m_y(axis, i) = model.invMass[i] > 0.0 ? static_cast<double>(seed >> 8) / double(1u << 24) - 0.5 : 0.0;
         }
-    y.normalize();
-    double lambda = 0.0;
-    for (int iteration = 0; iteration < kIterations; ++iteration) {
-        applyScaled(model, state, rootInvMass, y, scaled, next, false);
-        const double rayleigh = y.cwiseProduct(next).sum();
-        const double norm = next.norm();
-        if (!(norm > 0.0))
-            break;
-        y = next / norm;
-        if (iteration > 10 && std::abs(rayleigh - lambda) <= kSettled * rayleigh) {
-            lambda = rayleigh;
-            limit.converged = true;
-            break;
+    m_y.normalize();
+}
+
+bool StabilityAnalysis::run(int iterations)
+{
+    for (int count = 0; count < iterations && !m_done; ++count)
+        iterate();
+    return m_done;
+}
+
+void StabilityAnalysis::iterate()
+{
+    // one product with M^-½ K M^-½, until the Rayleigh quotient settles or the iterations run out
+    bool settled = m_iteration >= kIterations;
+    if (!settled) {
+        applyScaled(m_model, m_state, m_rootInvMass, m_y, m_scaled, m_next, false);
+        const double rayleigh = m_y.cwiseProduct(m_next).sum();
+        const double norm = m_next.norm();
+        if (!(norm > 0.0)) {
+            settled = true;
+        } else {
+            m_y = m_next / norm;
+            if (m_iteration > 10 && std::abs(rayleigh - m_lambda) <= kSettled * rayleigh) {
+                m_limit.converged = true;
+                settled = true;
+            }
+            m_lambda = rayleigh;
+            settled = settled || ++m_iteration >= kIterations;
         }
-        lambda = rayleigh;
     }
-    limit.omegaMax = limit.converged ? std::sqrt(std::max(lambda, 0.0)) : limit.gershgorinOmega;
+    if (!settled)
+        return;
+    m_limit.omegaMax = m_limit.converged ? std::sqrt(std::max(m_lambda, 0.0)) : m_limit.gershgorinOmega;
 
     // the damping rate of that mode: its Rayleigh quotient of M^-½ C M^-½
-    applyScaled(model, state, rootInvMass, y, scaled, next, true);
-    limit.dampingRate = std::max(0.0, y.cwiseProduct(next).sum());
-    return limit;
+    applyScaled(m_model, m_state, m_rootInvMass, m_y, m_scaled, m_next, true);
+    m_limit.dampingRate = std::max(0.0, m_y.cwiseProduct(m_next).sum());
+    m_done = true;
+}
+
+StabilityLimit stabilityLimit(const Model &model, const State &state)
+{
+    StabilityAnalysis analysis(model, state);
+    analysis.run(kIterations + 1);
+    return analysis.limit();
 }
 
 std::optional<PairSpeedExcess> pairSpeedExcess(const Model &model, const State &state)

@@ -1,5 +1,6 @@
 #include "run_diagnostics.h"
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -39,6 +40,8 @@ void RunDiagnostics::afterSteps(double seconds, bool blewUp, const std::shared_p
 {
     m_stepSeconds += seconds;
     m_stepSecondsSinceEstimate += seconds;
+    if (m_analysis)
+        m_stabilityCredit += kStabilityShare * seconds;
     checkPairSpeed(*model, state);
 
     // the periodic estimate, of the state these steps ended at: rare enough in wall time, and
@@ -83,12 +86,37 @@ void RunDiagnostics::estimate(bool counted, const std::shared_ptr<const core::Mo
     m_stepSecondsSinceEstimate = 0.0;
 }
 
-bool RunDiagnostics::updateStability(const std::shared_ptr<const core::Model> &model, const core::State &state)
+bool RunDiagnostics::updateStability(const std::shared_ptr<const core::Model> &model, const core::State &state,
+                                     bool running)
 {
-    if (!m_stabilityStale || !model)
+    // an edit: the analysis starts over, at the state as it is now
+    if (m_stabilityStale) {
+        m_stabilityStale = false;
+        m_analysis.reset();
+        m_analysedModel = model;
+        if (!model)
+            return false;
+        m_analysis = std::make_unique<core::StabilityAnalysis>(*model, state);
+        m_stabilityCredit = 0.0;
+    }
+    if (!m_analysis)
         return false;
-    m_stabilityStale = false;
-    m_stability = core::stabilityLimit(*model, state);
+
+    // while running, what the steps have paid for (or the least slice, so that a small scene's
+    // analysis ends within a tick or two); paused, to the end; either way at least one iteration,
+    // and it stops as soon as messages wait, to go on next time
+    const double budget = std::max(m_stabilityCredit, kLeastStabilitySlice);
+    const auto start = Clock::now();
+    while (!m_analysis->run(1)) {
+        if ((m_interrupt && m_interrupt->load(std::memory_order_relaxed)) || (running && secondsSince(start) >= budget))
+            break;
+    }
+    m_stabilityCredit = running ? std::max(0.0, m_stabilityCredit - secondsSince(start)) : 0.0;
+    if (!m_analysis->done())
+        return false;
+    m_stability = m_analysis->limit();
+    m_analysis.reset();
+    m_analysedModel.reset();
     return true;
 }
 
