@@ -11,9 +11,6 @@ namespace ui {
 
 namespace {
 
-// how long rates are averaged before they are shown, s
-constexpr double kRateWindowSeconds = 0.5;
-
 const QEvent::Type kWakeEvent = static_cast<QEvent::Type>(QEvent::registerEventType());
 
 }  // namespace
@@ -90,38 +87,30 @@ void SimulationWorker::tick()
     // the steps asked for that earlier messages cut short
     changed = m_runner.takeOwedSteps() || changed;
 
+    // the steps the run takes by itself: shown at the pace the window asks for (frameInterval)
+    bool stepped = false;
+
     // then the steps that the wall time elapsed since the last tick asks for
     if (m_runner.isRunning()) {
         if (!wasRunning) {
             // just started: time starts counting now, and so do the rates
             m_clock.start();
             m_window.start();
-            m_windowCredited = 0.0;
-            m_windowSteps = 0;
+            m_rates.start();
         } else {
             const double elapsed = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
             m_clock.start();
             const double capped = std::min(elapsed, kMaxTickSeconds);
             const SimulationRunner::Advance advance = m_runner.advance(capped, kStepBudgetSeconds);
-            changed = changed || advance.steps > 0;
-            m_windowCredited += capped - advance.droppedSeconds;
-            m_windowSteps += static_cast<std::uint64_t>(advance.steps);
-        }
-
-        // rates over the window, then a fresh window
-        const double window = static_cast<double>(m_window.nsecsElapsed()) * 1e-9;
-        if (window >= kRateWindowSeconds) {
-            m_realTimeFactor = m_windowCredited / window;
-            m_stepsPerSecond = static_cast<double>(m_windowSteps) / window;
-            m_window.start();
-            m_windowCredited = 0.0;
-            m_windowSteps = 0;
+            stepped = advance.steps > 0;
+            // the rates over a window that holds a step, then a fresh window
+            if (m_rates.add(advance.steps, capped - advance.droppedSeconds,
+                            static_cast<double>(m_window.nsecsElapsed()) * 1e-9))
+                m_window.start();
         }
     }
-    if (!m_runner.isRunning()) {
-        m_realTimeFactor = 0.0;
-        m_stepsPerSecond = 0.0;
-    }
+    if (!m_runner.isRunning())
+        m_rates.start();
 
     // a message or a blow-up changed what the error estimate is of: estimate again
     m_runner.updateEstimate();
@@ -142,12 +131,21 @@ void SimulationWorker::tick()
     else if (!busy && m_timer->isActive())
         m_timer->stop();
 
-    if (changed || m_runner.isRunning() != wasRunning || m_runner.stepsOwed() != owedBefore)
+    // what answers a message, or warns of particles too fast, goes at once; new steps alone once
+    // the window is ready for a frame
+    changed = changed || m_runner.diagnostics().pairSpeedWarning() != m_shownPairSpeedWarning;
+    m_unshownSteps = m_unshownSteps || stepped;
+    const bool frameDue = !m_published.isValid() ||
+                          m_published.nsecsElapsed() >= m_frameIntervalNs.load(std::memory_order_relaxed);
+    if (changed || m_runner.isRunning() != wasRunning || m_runner.stepsOwed() != owedBefore ||
+        (m_unshownSteps && frameDue))
         publish();
 }
 
 void SimulationWorker::publish()
 {
+    m_published.start();
+    m_unshownSteps = false;
     auto frame = std::make_shared<SimulationFrame>();
     frame->snapshot = m_runner.snapshot();
     // the snapshot's own model and scene, the recorded ones while a past step is shown
@@ -156,8 +154,8 @@ void SimulationWorker::publish()
     frame->appliedMessage = m_appliedMessage;
     frame->running = m_runner.isRunning();
     frame->stepsOwed = m_runner.stepsOwed();
-    frame->realTimeFactor = m_realTimeFactor;
-    frame->stepsPerSecond = m_stepsPerSecond;
+    frame->realTimeFactor = m_rates.realTimeFactor();
+    frame->stepsPerSecond = m_rates.stepsPerSecond();
     const RunDiagnostics &diagnostics = m_runner.diagnostics();
     frame->localError = diagnostics.localError();
     frame->localErrorStep = diagnostics.localErrorStep();
@@ -165,6 +163,7 @@ void SimulationWorker::publish()
     frame->estimateShare = diagnostics.estimateShare();
     frame->stability = diagnostics.stability();
     frame->pairSpeedWarning = diagnostics.pairSpeedWarning();
+    m_shownPairSpeedWarning = frame->pairSpeedWarning;
     const Scrubber &scrubber = m_runner.scrubber();
     const Timeline &timeline = scrubber.timeline();
     TimelineInfo &info = frame->timeline;
