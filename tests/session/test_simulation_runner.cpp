@@ -387,8 +387,9 @@ void TestSimulationRunner::stabilityLimitFollowsEdits()
 
 void TestSimulationRunner::stabilityAnalysisYieldsToMessages()
 {
-    // a cloth's analysis takes many products of the power iteration; while messages wait it stops
-    // after one, and goes on from there (not from the start) once they are applied
+    // a cloth's analysis takes many products of the power iteration; while messages wait it does
+    // not run (one product of a 10⁶-particle cloth holds a Pause up for a quarter of a second), and
+    // it is made once they are applied
     core::ClothOptions options;
     options.rows = options.cols = 12;
     auto cloth = std::make_shared<const core::SceneDesc>(core::makeCloth(options));

@@ -56,6 +56,7 @@ private slots:
     void shutDownWhileRunningEndsTheThread();
     void pauseCutsALongStepShort();
     void stepsAloneKeepTheFramePace();
+    void framesOfTheSameStateShareTheSnapshot();
 };
 
 void TestSimulationController::publishesTheSceneItIsGiven()
@@ -285,6 +286,35 @@ void TestSimulationController::stepsAloneKeepTheFramePace()
     QVERIFY(playing);
     QTRY_VERIFY(controller.frame()->appliedMessage == playing->appliedMessage &&
                 controller.frame()->snapshot->step > playing->snapshot->step);
+}
+
+void TestSimulationController::framesOfTheSameStateShareTheSnapshot()
+{
+    // a Sync or a Pause shows the state shown before: the same snapshot, not a new copy of it
+    ui::SimulationController controller;
+    const auto loaded = frameAfter(controller, controller.setScene(netScene(), ui::SceneChange::Replace));
+    QVERIFY(loaded);
+    const auto synced = settledFrame(controller);
+    QVERIFY(synced);
+    QVERIFY(synced.get() != loaded.get());
+    QCOMPARE(synced->snapshot.get(), loaded->snapshot.get());
+    const auto paused = frameAfter(controller, controller.pause());
+    QVERIFY(paused);
+    QCOMPARE(paused->snapshot.get(), loaded->snapshot.get());
+
+    // a step, a tilt or an edit changes what is shown: a new snapshot each time
+    const auto stepped = frameAfter(controller, controller.stepOnce());
+    QVERIFY(stepped);
+    QCOMPARE(stepped->snapshot->step, 1u);
+    QVERIFY(stepped->snapshot.get() != loaded->snapshot.get());
+    const auto tilted = frameAfter(controller, controller.tilt());
+    QVERIFY(tilted);
+    QCOMPARE(tilted->snapshot->step, 1u);
+    QVERIFY(tilted->snapshot.get() != stepped->snapshot.get());
+    QVERIFY(tilted->snapshot->velocities != stepped->snapshot->velocities);
+    const auto edited = frameAfter(controller, controller.setScene(netScene(5e3), ui::SceneChange::Parameters));
+    QVERIFY(edited);
+    QVERIFY(edited->snapshot.get() != tilted->snapshot.get());
 }
 
 QTEST_GUILESS_MAIN(TestSimulationController)

@@ -13,6 +13,17 @@ namespace {
 
 const QEvent::Type kWakeEvent = static_cast<QEvent::Type>(QEvent::registerEventType());
 
+// the messages that leave the state shown as it was, unless they take a step (which the step
+// number tells): after them the latest snapshot still holds
+bool keepsTheShownState(const Message &message)
+{
+    return std::holds_alternative<Pause>(message) || std::holds_alternative<Play>(message) ||
+           std::holds_alternative<Sync>(message) || std::holds_alternative<StepOnce>(message) ||
+           std::holds_alternative<PlanAccuracy>(message) || std::holds_alternative<CaptureState>(message) ||
+           std::holds_alternative<StartRecording>(message) || std::holds_alternative<StopRecording>(message) ||
+           std::holds_alternative<SetTimelineBudget>(message);
+}
+
 }  // namespace
 
 SimulationWorker::SimulationWorker(MessageQueue &messages, ReplyQueue &replies, LatestMailbox<SimulationFrame> &mailbox)
@@ -65,8 +76,10 @@ void SimulationWorker::tick()
 
     // messages first: they land between two steps
     MessageQueue::Batch batch = m_messages.drain();
-    for (const Message &message : batch.messages)
+    for (const Message &message : batch.messages) {
         m_runner.apply(message);
+        m_snapshotStale = m_snapshotStale || !keepsTheShownState(message);
+    }
     bool changed = !batch.messages.empty();
 
     // the answers to one-off requests, each once, ahead of the frame that follows them
@@ -85,7 +98,10 @@ void SimulationWorker::tick()
     }
 
     // the steps asked for that earlier messages cut short
-    changed = m_runner.takeOwedSteps() || changed;
+    if (m_runner.takeOwedSteps()) {
+        changed = true;
+        m_snapshotStale = true;
+    }
 
     // the steps the run takes by itself: shown at the pace the window asks for (frameInterval)
     bool stepped = false;
@@ -103,6 +119,7 @@ void SimulationWorker::tick()
             const double capped = std::min(elapsed, kMaxTickSeconds);
             const SimulationRunner::Advance advance = m_runner.advance(capped, kStepBudgetSeconds);
             stepped = advance.steps > 0;
+            m_snapshotStale = m_snapshotStale || stepped;
             // the rates over a window that holds a step, then a fresh window
             if (m_rates.add(advance.steps, capped - advance.droppedSeconds,
                             static_cast<double>(m_window.nsecsElapsed()) * 1e-9))
@@ -121,6 +138,7 @@ void SimulationWorker::tick()
     // a blow-up paused the run: say what, where, why and what to do
     if (const std::optional<std::string> message = m_runner.takeBlowupMessage()) {
         changed = true;
+        m_snapshotStale = true;
         emit blewUp(QString::fromStdString(*message));
     }
 
@@ -147,10 +165,20 @@ void SimulationWorker::publish()
     m_published.start();
     m_unshownSteps = false;
     auto frame = std::make_shared<SimulationFrame>();
-    frame->snapshot = m_runner.snapshot();
     // the snapshot's own model and scene, the recorded ones while a past step is shown
     frame->model = m_runner.shownModel();
     frame->scene = m_runner.shownScene();
+    // a new snapshot only when what it shows changed: one of 10⁶ particles and 6·10⁶ springs takes
+    // half a second to make, which would hold up the answer to a Pause
+    const bool sameState = !m_snapshotStale && m_snapshot && frame->model == m_snapshotModel &&
+                           m_snapshot->step == m_runner.shownState().step &&
+                           m_snapshot->time == m_runner.shownState().time;
+    if (!sameState) {
+        m_snapshot = m_runner.snapshot();
+        m_snapshotModel = frame->model;
+        m_snapshotStale = false;
+    }
+    frame->snapshot = m_snapshot;
     frame->appliedMessage = m_appliedMessage;
     frame->running = m_runner.isRunning();
     frame->stepsOwed = m_runner.stepsOwed();

@@ -4,7 +4,8 @@
 // hands the replies to one-off requests to the reply queue and publishes a frame to the mailbox.
 // Only this object, on its thread, touches the core::State. A frame that answers a message is
 // published at once; one that only brings new steps waits for the pace the window draws at
-// (frameIntervalNs), since building a snapshot of a large scene nobody will see costs the run.
+// (frameIntervalNs), since building a snapshot of a large scene nobody will see costs the run; and
+// a frame that shows the same state as the one before reuses its snapshot.
 
 #include "session/messages.h"
 #include "session/latest_mailbox.h"
@@ -74,6 +75,11 @@ private:
     QElapsedTimer m_published;   // since the latest frame
     bool m_unshownSteps = false;  // steps taken since the latest frame
     std::string m_shownPairSpeedWarning;  // the latest frame's
+    // the latest snapshot, for the frames that show the same state again (a Pause, a Sync), the
+    // model it was made with, and whether the state changed since
+    std::shared_ptr<const core::Snapshot> m_snapshot;
+    std::shared_ptr<const core::Model> m_snapshotModel;
+    bool m_snapshotStale = true;
 
     // the rates, over the window m_window times
     QElapsedTimer m_window;
