@@ -6,7 +6,9 @@
 // stretch of the same run), several times each, and prints every run, the medians and their
 // ratio. The editor needs a display: run it under a virtual X server, as docs/benchmarks.md does:
 //   xvfb-run -a -s "-screen 0 1280x1024x24" build/release/bench/editor_throughput
-// With --write-scene FILE it only writes the scene (any size, 1000 × 1000 for 10⁶ particles).
+// With --no-contacts the scene's plane and particle contacts are off (a faster step, where what
+// the editor adds to each one weighs more); with --write-scene FILE it only writes the scene (any
+// size, 1000 × 1000 for 10⁶ particles).
 
 #include "bench_common.h"
 
@@ -35,7 +37,7 @@ namespace {
 
 // the scene as the editor makes it: a new scene (its floor and default settings) with the cloth
 // generated into it where the Generate dialog puts it by default
-core::SceneDesc generatedCloth(int rows, int cols)
+core::SceneDesc generatedCloth(int rows, int cols, bool contacts)
 {
     core::ClothOptions options;
     options.rows = rows;
@@ -43,6 +45,7 @@ core::SceneDesc generatedCloth(int rows, int cols)
     core::SceneDesc scene = ui::DocumentFiles::newScene();
     ui::addGenerated(scene, core::makeCloth(options), Eigen::Vector3d(0.0, 1.0, 0.0));
     scene.name = QStringLiteral("cloth-%1x%2").arg(rows).arg(cols).toStdString();
+    scene.settings.planeCollisions = scene.settings.particleCollisions = contacts;
     return scene;
 }
 
@@ -106,7 +109,10 @@ int main(int argc, char **argv)
     const QCommandLineOption writeOption(QStringLiteral("write-scene"),
                                          QStringLiteral("Only write the scene to FILE and exit."),
                                          QStringLiteral("FILE"));
-    parser.addOptions({rowsOption, colsOption, runsOption, secondsOption, editorOption, simOption, writeOption});
+    const QCommandLineOption noContactsOption(QStringLiteral("no-contacts"),
+                                              QStringLiteral("Turn the scene's plane and particle contacts off."));
+    parser.addOptions(
+        {rowsOption, colsOption, runsOption, secondsOption, editorOption, simOption, writeOption, noContactsOption});
     parser.process(app);
     QTextStream out(stdout);
     QTextStream err(stderr);
@@ -117,7 +123,7 @@ int main(int argc, char **argv)
     const double seconds = std::max(1.0, parser.value(secondsOption).toDouble());
 
     // the scene, in a file of its own
-    const core::SceneDesc scene = generatedCloth(rows, cols);
+    const core::SceneDesc scene = generatedCloth(rows, cols, !parser.isSet(noContactsOption));
     QTemporaryDir dir;
     const QString path =
         parser.isSet(writeOption) ? parser.value(writeOption) : dir.filePath(QStringLiteral("cloth.json"));
@@ -128,7 +134,7 @@ int main(int argc, char **argv)
     const double subStep = scene.settings.timeStep / scene.settings.substeps;
     out << "cloth " << rows << " x " << cols << ": " << scene.particles.size() << " particles, "
         << scene.springs.size() << " springs, " << scene.settings.substeps << " sub-steps of " << subStep * 1e3
-        << " ms\n";
+        << " ms, contacts " << (scene.settings.particleCollisions ? "on" : "off") << "\n";
     if (parser.isSet(writeOption)) {
         out << "wrote " << path << '\n';
         return 0;

@@ -98,19 +98,24 @@ bool RunDiagnostics::updateStability(const std::shared_ptr<const core::Model> &m
             return false;
         m_analysis = std::make_unique<core::StabilityAnalysis>(*model, state);
         m_stabilityCredit = 0.0;
+        m_iterationSeconds = 0.0;
     }
     if (!m_analysis)
         return false;
 
-    // while running, what the steps have paid for (or the least slice, so that a small scene's
-    // analysis ends within a tick or two, at least one iteration); paused, to the end; either
-    // way it stops as soon as messages wait (an iteration of 6·10⁶ springs takes a quarter of a
-    // second), to go on next time
-    const double budget = std::max(m_stabilityCredit, kLeastStabilitySlice);
+    // while running, what the steps have paid for, and the least slice (so that a small scene's
+    // analysis ends within a tick or two), an iteration only where the last one fits in what is
+    // left; paused, to the end. Either way it stops as soon as messages wait (one product of
+    // 6·10⁶ springs takes a quarter of a second), to go on next time
+    const double budget = m_stabilityCredit + kLeastStabilitySlice;
     const auto start = Clock::now();
-    const auto waiting = [this] { return m_interrupt && m_interrupt->load(std::memory_order_relaxed); };
-    while (!waiting() && !m_analysis->run(1)) {
-        if (running && secondsSince(start) >= budget)
+    while (!(m_interrupt && m_interrupt->load(std::memory_order_relaxed))) {
+        if (running && secondsSince(start) + m_iterationSeconds > budget)
+            break;
+        const auto iteration = Clock::now();
+        const bool done = m_analysis->run(1);
+        m_iterationSeconds = secondsSince(iteration);
+        if (done)
             break;
     }
     m_stabilityCredit = running ? std::max(0.0, m_stabilityCredit - secondsSince(start)) : 0.0;

@@ -33,10 +33,10 @@ public:
     // the live error estimate: at most this often (s of wall time), and at most this share of the
     // computing time of the steps
     static constexpr double kEstimateInterval = 0.25;
-    static constexpr double kEstimateShare = 0.05;
-    // the stability analysis, while running: this share of the steps' computing time, or this
-    // many seconds a tick, whichever is more
-    static constexpr double kStabilityShare = 0.05;
+    static constexpr double kEstimateShare = 0.02;
+    // the stability analysis, while running: this share of the steps' computing time, and this
+    // many seconds a tick besides
+    static constexpr double kStabilityShare = 0.02;
     static constexpr double kLeastStabilitySlice = 0.001;
 
     // a flag raised when messages wait: an estimate in progress stops and is made again later, the
@@ -109,6 +109,7 @@ private:
     std::unique_ptr<core::StabilityAnalysis> m_analysis;
     std::shared_ptr<const core::Model> m_analysedModel;
     double m_stabilityCredit = 0.0;  // s of computing the steps have paid the analysis, less what it took
+    double m_iterationSeconds = 0.0;  // what its latest product took
     const std::atomic<bool> *m_interrupt = nullptr;
     std::string m_pairSpeedWarning;
 

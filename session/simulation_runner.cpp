@@ -193,7 +193,12 @@ bool SimulationRunner::scrubTo(std::uint64_t step)
         return false;
     m_running = false;
     m_owed = 0.0;
-    return m_scrubber.show(step, m_work);
+    return m_scrubber.show(step, m_work, m_interrupt);
+}
+
+bool SimulationRunner::continueScrub()
+{
+    return hasScene() && m_scrubber.pendingStep() && m_scrubber.goOn(m_work, m_interrupt);
 }
 
 void SimulationRunner::stepBack()

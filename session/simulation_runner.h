@@ -63,12 +63,16 @@ public:
     bool takeOwedSteps();
     // whether the latest step took kInterruptibleStepSeconds or more (or was cut short)
     bool stepsAreSlow() const { return m_lastStepSeconds >= kInterruptibleStepSeconds; }
-    // whether there is work to come back to without a message: owed steps, a missing estimate, a
-    // stability analysis not finished
+    // whether there is work to come back to without a message: owed steps, a replay to a step
+    // scrubbed to cut short, a missing estimate, a stability analysis not finished
     bool hasWorkLeft() const
     {
-        return m_stepsOwed > 0 || m_diagnostics.estimateStale() || m_diagnostics.stabilityPending();
+        return m_stepsOwed > 0 || m_scrubber.pendingStep().has_value() || m_diagnostics.estimateStale() ||
+               m_diagnostics.stabilityPending();
     }
+    // goes on with the replay to a step scrubbed to that messages cut short; true if it showed
+    // another step (it may be cut short again)
+    bool continueScrub();
 
     // applies one message between two steps
     void apply(const Message &message);

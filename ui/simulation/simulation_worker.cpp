@@ -97,8 +97,8 @@ void SimulationWorker::tick()
         changed = false;
     }
 
-    // the steps asked for that earlier messages cut short
-    if (m_runner.takeOwedSteps()) {
+    // the steps asked for that earlier messages cut short, and the replay to a step scrubbed to
+    if (m_runner.takeOwedSteps() || m_runner.continueScrub()) {
         changed = true;
         m_snapshotStale = true;
     }
