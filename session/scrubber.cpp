@@ -20,7 +20,7 @@ bool Scrubber::canShow(std::uint64_t step) const
 
 // the recorded state of a step: the keyframe before it, then the steps after it taken again with
 // the keyframe's model and held forces, exactly as the run took them
-bool Scrubber::show(std::uint64_t step, core::Workspace &work, const std::atomic<bool> *interrupt)
+bool Scrubber::show(std::uint64_t step, core::Workspace &work, const std::atomic<bool> *interrupt, int maxSteps)
 {
     m_pending.reset();
     if (!canShow(step))
@@ -36,9 +36,10 @@ bool Scrubber::show(std::uint64_t step, core::Workspace &work, const std::atomic
         restoreKey(key, shown.state);
     shown.model = key.model;
     shown.scene = key.scene;
-    while (shown.state.step < step) {
-        // messages wait: the step replayed so far is shown, the rest waits for goOn()
-        if (interrupt && interrupt->load(std::memory_order_relaxed)) {
+    for (int replayed = 0; shown.state.step < step; ++replayed) {
+        // messages wait, or enough for now: the step replayed so far is shown, the rest waits for
+        // goOn()
+        if (replayed >= maxSteps || (interrupt && interrupt->load(std::memory_order_relaxed))) {
             m_pending = step;
             return true;
         }
@@ -64,12 +65,12 @@ bool Scrubber::show(std::uint64_t step, core::Workspace &work, const std::atomic
     return true;
 }
 
-bool Scrubber::goOn(core::Workspace &work, const std::atomic<bool> *interrupt)
+bool Scrubber::goOn(core::Workspace &work, const std::atomic<bool> *interrupt, int maxSteps)
 {
     if (!m_pending || !m_shown)
         return false;
     const std::uint64_t before = m_shown->state.step;
-    show(*m_pending, work, interrupt);
+    show(*m_pending, work, interrupt, maxSteps);
     return !m_shown || m_shown->state.step != before;
 }
 

@@ -17,6 +17,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -44,14 +45,15 @@ public:
     // whether the timeline has step and a keyframe to replay it from
     bool canShow(std::uint64_t step) const;
     // shows the recorded state of step, replayed in work; false if it cannot be shown, or if the
-    // replay failed (a recorded step cannot fail; if it does, the run is shown instead). With a
-    // raised interrupt flag the replay stops between sub-steps: the last whole step replayed is
-    // shown and step is pending
-    bool show(std::uint64_t step, core::Workspace &work, const std::atomic<bool> *interrupt = nullptr);
+    // replay failed (a recorded step cannot fail; if it does, the run is shown instead). The
+    // replay takes at most maxSteps steps, and with a raised interrupt flag it stops between
+    // sub-steps: the last whole step replayed is shown and step is pending
+    bool show(std::uint64_t step, core::Workspace &work, const std::atomic<bool> *interrupt = nullptr,
+              int maxSteps = std::numeric_limits<int>::max());
     // the step a replay cut short is on its way to
     std::optional<std::uint64_t> pendingStep() const { return m_pending; }
-    // goes on with a replay cut short; true if it showed another step
-    bool goOn(core::Workspace &work, const std::atomic<bool> *interrupt);
+    // goes on with a replay cut short, for at most maxSteps steps; true if it showed another step
+    bool goOn(core::Workspace &work, const std::atomic<bool> *interrupt, int maxSteps = std::numeric_limits<int>::max());
     // hands the step shown over for the run to go on from it (only while scrubbing): what was
     // recorded after it is gone
     ScrubbedStep resume();

@@ -70,8 +70,8 @@ public:
         return m_stepsOwed > 0 || m_scrubber.pendingStep().has_value() || m_diagnostics.estimateStale() ||
                m_diagnostics.stabilityPending();
     }
-    // goes on with the replay to a step scrubbed to that messages cut short; true if it showed
-    // another step (it may be cut short again)
+    // goes on with the replay to a step scrubbed to that messages cut short, or that slow steps
+    // take a step a tick (so that each is shown); true if it showed another step
     bool continueScrub();
 
     // applies one message between two steps

@@ -52,6 +52,7 @@ private slots:
     void scrubGivesTheRecordedBits();
     void stepsBackAndForthInsideTheRecording();
     void scrubYieldsToMessages();
+    void slowScrubShowsEachStep();
     void playGoesOnFromTheStepShown();
     void editWhileScrubbedDropsTheFuture();
     void scrubbedStepShowsItsOwnScene();
@@ -173,6 +174,33 @@ void TestTimeline::scrubYieldsToMessages()
     waiting = false;
     QVERIFY(runner.continueScrub());
     QCOMPARE(core::stateHash(runner.shownState()), hashes[24]);
+}
+
+void TestTimeline::slowScrubShowsEachStep()
+{
+    // steps slower than kInterruptibleStepSeconds (a 16 × 16 cloth in 4000 sub-steps: tens of ms
+    // even on a fast machine): a scrub shows the keyframe at once, then one replayed step a tick
+    core::ClothOptions options;
+    options.rows = options.cols = 16;
+    core::SceneDesc cloth = core::makeCloth(options);
+    cloth.settings.substeps = 4000;
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{std::make_shared<const core::SceneDesc>(cloth), ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 13, hashes);
+    QVERIFY(runner.stepsAreSlow());
+
+    runner.apply(ui::Scrub{12});
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(10));
+    QCOMPARE(runner.scrubber().pendingStep(), std::optional<std::uint64_t>(12));
+    QVERIFY(runner.continueScrub());
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(11));
+    QCOMPARE(core::stateHash(runner.shownState()), hashes[11]);
+    QVERIFY(runner.continueScrub());
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(12));
+    QCOMPARE(core::stateHash(runner.shownState()), hashes[12]);
+    QVERIFY(!runner.scrubber().pendingStep());
+    QVERIFY(!runner.continueScrub());
 }
 
 void TestTimeline::playGoesOnFromTheStepShown()
