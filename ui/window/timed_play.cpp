@@ -66,7 +66,6 @@ void TimedPlay::frameChanged()
     std::printf("%s\n", line.constData());
     std::fflush(stdout);
     disconnect(m_window.controller(), nullptr, this, nullptr);
-    emit finished(m_figures);
     QCoreApplication::quit();
 }
 

@@ -37,10 +37,6 @@ public:
     // plays (if asked) and starts the clock; call once the scene is open
     void start();
 
-signals:
-    // the figures are in: the line was printed and the application asked to quit
-    void finished(const ui::TimedPlay::Figures &figures);
-
 private:
     void stop();
     void frameChanged();
