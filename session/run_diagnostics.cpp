@@ -46,8 +46,9 @@ void RunDiagnostics::afterSteps(double seconds, bool blewUp, const std::shared_p
 
     // the periodic estimate, of the state these steps ended at: rare enough in wall time, and
     // only once the steps have paid for it many times over
+    const double share = m_lastEstimateSeconds > kCheapEstimateSeconds ? kBigSceneEstimateShare : kEstimateShare;
     if (!blewUp && (m_estimateStale || (m_wallSinceEstimate >= kEstimateInterval &&
-                                        kEstimateShare * m_stepSecondsSinceEstimate >= m_lastEstimateSeconds)))
+                                        share * m_stepSecondsSinceEstimate >= m_lastEstimateSeconds)))
         estimate(true, model, state);
 }
 

@@ -2,8 +2,9 @@
 // RunDiagnostics: how well the run goes, worked out beside it on the runner's own model and state,
 // which the runner passes in. The live error estimate: a step-doubling estimate of the local
 // error, refreshed after a change and, while running, at most every kEstimateInterval of wall time
-// and only once the steps since the last estimate took 1 / kEstimateShare times as long as it did,
-// so that the estimates never cost more than that share of the run. The energies at the last
+// and only once the steps since the last estimate took 1 / kEstimateShare times as long as it did
+// (1 / kBigSceneEstimateShare where an estimate takes over kCheapEstimateSeconds), so that the
+// estimates never cost more than that share of the run. The energies at the last
 // reset, from which the drift is measured. The explicit integrators' stability limit for the model
 // as edited: its power iteration runs a slice at a time (core::StabilityAnalysis), while running
 // only as the steps pay for it (kStabilityShare of their computing time), while paused to its end,
@@ -33,7 +34,11 @@ public:
     // the live error estimate: at most this often (s of wall time), and at most this share of the
     // computing time of the steps
     static constexpr double kEstimateInterval = 0.25;
-    static constexpr double kEstimateShare = 0.02;
+    static constexpr double kEstimateShare = 0.05;
+    // an estimate that takes longer than this (s) is of a big scene: it gets the smaller share,
+    // so that the run keeps its speed (a 200 × 200 cloth's takes 40-90 ms)
+    static constexpr double kCheapEstimateSeconds = 0.005;
+    static constexpr double kBigSceneEstimateShare = 0.02;
     // the stability analysis, while running: this share of the steps' computing time, and this
     // many seconds a tick besides
     static constexpr double kStabilityShare = 0.02;
@@ -105,9 +110,9 @@ private:
     std::optional<core::Blowup> m_blowup;
     std::optional<core::StabilityLimit> m_stability;
     bool m_stabilityStale = true;  // the model changed since the limit was analysed
-    // the analysis under way, and the model it analyses (kept alive for it)
-    std::unique_ptr<core::StabilityAnalysis> m_analysis;
+    // the model under analysis (kept alive for it, so declared before it), and the analysis
     std::shared_ptr<const core::Model> m_analysedModel;
+    std::unique_ptr<core::StabilityAnalysis> m_analysis;
     double m_stabilityCredit = 0.0;  // s of computing the steps have paid the analysis, less what it took
     double m_iterationSeconds = 0.0;  // what its latest product took
     const std::atomic<bool> *m_interrupt = nullptr;
