@@ -137,68 +137,94 @@ double StabilityLimit::safeSubStep(Integrator integrator) const
     return stepLimit(omegaBound, dampingRate, integrator);
 }
 
-StabilityLimit stabilityLimit(const Model &model, const State &state)
+StabilityAnalysis::StabilityAnalysis(const Model &model, const State &state) : m_model(model), m_state(state)
 {
-    StabilityLimit limit;
     const int n = model.particleCount();
-    if (model.springCount() == 0 || model.freeParticles.empty())
-        return limit;
-    const Eigen::VectorXd rootInvMass = model.invMass.cwiseSqrt();
+    if (model.springCount() == 0 || model.freeParticles.empty()) {
+        m_done = true;
+        return;
+    }
+    m_rootInvMass = model.invMass.cwiseSqrt();
 
     // Gershgorin on the 3×3 blocks: λ ≤ max_i Σ_springs k (w_i + √(w_i w_j))
     Eigen::VectorXd rows = Eigen::VectorXd::Zero(n);
     for (int k = 0; k < model.springCount(); ++k) {
         const int a = model.springA[static_cast<std::size_t>(k)];
         const int b = model.springB[static_cast<std::size_t>(k)];
-        const double cross = rootInvMass[a] * rootInvMass[b];
+        const double cross = m_rootInvMass[a] * m_rootInvMass[b];
         rows[a] += model.stiffness[k] * (model.invMass[a] + cross);
         rows[b] += model.stiffness[k] * (model.invMass[b] + cross);
     }
-    limit.gershgorinOmega = std::sqrt(rows.maxCoeff());
+    m_limit.gershgorinOmega = std::sqrt(rows.maxCoeff());
 
     // power iteration from a fixed, mixed start vector (deterministic)
-    Eigen::Matrix3Xd y(3, n), scaled(3, n), next(3, n);
+    m_y.resize(3, n);
+    m_scaled.resize(3, n);
+    m_next.resize(3, n);
     std::uint32_t seed = 12345u;
     for (int i = 0; i < n; ++i)
         for (int axis = 0; axis < 3; ++axis) {
             seed = seed * 1664525u + 1013904223u;
-            y(axis, i) = model.invMass[i] > 0.0 ? static_cast<double>(seed >> 8) / double(1u << 24) - 0.5 : 0.0;
+            m_y(axis, i) = model.invMass[i] > 0.0 ? static_cast<double>(seed >> 8) / double(1u << 24) - 0.5 : 0.0;
         }
-    y.normalize();
-    double lambda = 0.0, residual = 0.0;
-    const int passes = static_cast<int>(
+    m_y.normalize();
+    m_passes = static_cast<int>(
         std::clamp(kSpringPasses / model.springCount(), double(kLeastPasses), double(kMostPasses)));
-    for (int iteration = 0; iteration < passes; ++iteration) {
-        applyScaled(model, state, rootInvMass, y, scaled, next, false);
-        const double rayleigh = y.cwiseProduct(next).sum();
-        const double norm = next.norm();
-        if (!(norm > 0.0))
-            break;
-        // ‖S y − ρ y‖ of this y, before y moves on
-        residual = (next - rayleigh * y).norm();
-        y = next / norm;
-        const double change = std::abs(rayleigh - lambda);
-        lambda = rayleigh;
-        if (iteration > 10 && change <= kSettled * rayleigh)
-            limit.converged = true;
-        if (limit.converged && change <= kTight * rayleigh)
-            break;
+}
+
+bool StabilityAnalysis::run(int iterations)
+{
+    for (int count = 0; count < iterations && !m_done; ++count)
+        iterate();
+    return m_done;
+}
+
+void StabilityAnalysis::iterate()
+{
+    // one product with M^-½ K M^-½, until the Rayleigh quotient has settled tightly or the passes
+    // run out
+    bool settled = m_iteration >= m_passes;
+    if (!settled) {
+        applyScaled(m_model, m_state, m_rootInvMass, m_y, m_scaled, m_next, false);
+        const double rayleigh = m_y.cwiseProduct(m_next).sum();
+        const double norm = m_next.norm();
+        if (!(norm > 0.0)) {
+            settled = true;
+        } else {
+            // ‖S y − ρ y‖ of this y, before y moves on
+            m_residual = (m_next - rayleigh * m_y).norm();
+            m_y = m_next / norm;
+            const double change = std::abs(rayleigh - m_lambda);
+            m_lambda = rayleigh;
+            if (m_iteration > 10 && change <= kSettled * rayleigh)
+                m_limit.converged = true;
+            settled = (m_limit.converged && change <= kTight * rayleigh) || ++m_iteration >= m_passes;
+        }
     }
-    limit.omegaMax = limit.converged ? std::sqrt(std::max(lambda, 0.0)) : limit.gershgorinOmega;
+    if (!settled)
+        return;
+    m_limit.omegaMax = m_limit.converged ? std::sqrt(std::max(m_lambda, 0.0)) : m_limit.gershgorinOmega;
     // The Rayleigh quotient only ever underestimates λ_max: a settled quotient can still be a few
     // per cent low where the top eigenvalues lie close together (a 20-particle network: ω 2.2% low,
     // auto substeps at 91% of the limit). For a unit y whose top eigenvector holds at least half its
     // weight, ρ + ‖S y − ρ y‖ ≥ λ_max (the residual is at least |a₁|/√(1 − a₁²) × (λ_max − ρ)), and
     // the iteration grows that weight every pass; Gershgorin caps it
-    limit.omegaBound = limit.converged
-                           ? std::min(limit.gershgorinOmega, std::sqrt(std::max(lambda + residual, 0.0)))
-                           : limit.gershgorinOmega;
-    limit.omegaBound = std::max(limit.omegaBound, limit.omegaMax);
+    m_limit.omegaBound = m_limit.converged
+                             ? std::min(m_limit.gershgorinOmega, std::sqrt(std::max(m_lambda + m_residual, 0.0)))
+                             : m_limit.gershgorinOmega;
+    m_limit.omegaBound = std::max(m_limit.omegaBound, m_limit.omegaMax);
 
     // the damping rate of that mode: its Rayleigh quotient of M^-½ C M^-½
-    applyScaled(model, state, rootInvMass, y, scaled, next, true);
-    limit.dampingRate = std::max(0.0, y.cwiseProduct(next).sum());
-    return limit;
+    applyScaled(m_model, m_state, m_rootInvMass, m_y, m_scaled, m_next, true);
+    m_limit.dampingRate = std::max(0.0, m_y.cwiseProduct(m_next).sum());
+    m_done = true;
+}
+
+StabilityLimit stabilityLimit(const Model &model, const State &state)
+{
+    StabilityAnalysis analysis(model, state);
+    analysis.run(kMostPasses + 1);
+    return analysis.limit();
 }
 
 std::optional<PairSpeedExcess> pairSpeedExcess(const Model &model, const State &state)

@@ -35,6 +35,34 @@ struct StabilityLimit {
 // analyses the scene linearised at the state (allocates: call it off the step path)
 StabilityLimit stabilityLimit(const Model &model, const State &state);
 
+// The same analysis a few iterations at a time, so that the editor can spread it between the
+// steps of a large scene (a 200 × 200 cloth takes as long as a dozen steps) and stop it for
+// waiting messages: run() as often as wanted, then limit(); the result has the same bits as
+// stabilityLimit's. It keeps a copy of the state it linearises at; the model must outlive it.
+class StabilityAnalysis {
+public:
+    StabilityAnalysis(const Model &model, const State &state);
+    // at most `iterations` more products of the power iteration; true once the limit is known
+    bool run(int iterations);
+    bool done() const { return m_done; }
+    // the limit, once done()
+    const StabilityLimit &limit() const { return m_limit; }
+
+private:
+    void iterate();
+
+    const Model &m_model;
+    State m_state;
+    Eigen::VectorXd m_rootInvMass;
+    Eigen::Matrix3Xd m_y, m_scaled, m_next;
+    double m_lambda = 0.0;
+    double m_residual = 0.0;  // ‖S y − ρ y‖ of the last pass
+    int m_iteration = 0;
+    int m_passes = 0;  // the most passes this model's size allows
+    bool m_done = false;
+    StabilityLimit m_limit;
+};
+
 // the share of the limit a sub-step is kept under where the limit sets the substeps: the energy of
 // a lightly damped mode already swings widely just below it (docs/benchmarks.md, stability)
 constexpr double kStableShare = 0.9;

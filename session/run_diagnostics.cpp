@@ -1,5 +1,6 @@
 #include "run_diagnostics.h"
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -39,12 +40,15 @@ void RunDiagnostics::afterSteps(double seconds, bool blewUp, const std::shared_p
 {
     m_stepSeconds += seconds;
     m_stepSecondsSinceEstimate += seconds;
+    if (m_analysis)
+        m_stabilityCredit += kStabilityShare * seconds;
     checkPairSpeed(*model, state);
 
     // the periodic estimate, of the state these steps ended at: rare enough in wall time, and
     // only once the steps have paid for it many times over
+    const double share = m_lastEstimateSeconds > kCheapEstimateSeconds ? kBigSceneEstimateShare : kEstimateShare;
     if (!blewUp && (m_estimateStale || (m_wallSinceEstimate >= kEstimateInterval &&
-                                        kEstimateShare * m_stepSecondsSinceEstimate >= m_lastEstimateSeconds)))
+                                        share * m_stepSecondsSinceEstimate >= m_lastEstimateSeconds)))
         estimate(true, model, state);
 }
 
@@ -83,12 +87,44 @@ void RunDiagnostics::estimate(bool counted, const std::shared_ptr<const core::Mo
     m_stepSecondsSinceEstimate = 0.0;
 }
 
-bool RunDiagnostics::updateStability(const std::shared_ptr<const core::Model> &model, const core::State &state)
+bool RunDiagnostics::updateStability(const std::shared_ptr<const core::Model> &model, const core::State &state,
+                                     bool running)
 {
-    if (!m_stabilityStale || !model)
+    // an edit: the analysis starts over, at the state as it is now
+    if (m_stabilityStale) {
+        m_stabilityStale = false;
+        m_analysis.reset();
+        m_analysedModel = model;
+        if (!model)
+            return false;
+        m_analysis = std::make_unique<core::StabilityAnalysis>(*model, state);
+        m_stabilityCredit = 0.0;
+        m_iterationSeconds = 0.0;
+    }
+    if (!m_analysis)
         return false;
-    m_stabilityStale = false;
-    m_stability = core::stabilityLimit(*model, state);
+
+    // while running, what the steps have paid for, and the least slice (so that a small scene's
+    // analysis ends within a tick or two), an iteration only where the last one fits in what is
+    // left; paused, to the end. Either way it stops as soon as messages wait (one product of
+    // 6·10⁶ springs takes a quarter of a second), to go on next time
+    const double budget = m_stabilityCredit + kLeastStabilitySlice;
+    const auto start = Clock::now();
+    while (!(m_interrupt && m_interrupt->load(std::memory_order_relaxed))) {
+        if (running && secondsSince(start) + m_iterationSeconds > budget)
+            break;
+        const auto iteration = Clock::now();
+        const bool done = m_analysis->run(1);
+        m_iterationSeconds = secondsSince(iteration);
+        if (done)
+            break;
+    }
+    m_stabilityCredit = running ? std::max(0.0, m_stabilityCredit - secondsSince(start)) : 0.0;
+    if (!m_analysis->done())
+        return false;
+    m_stability = m_analysis->limit();
+    m_analysis.reset();
+    m_analysedModel.reset();
     return true;
 }
 

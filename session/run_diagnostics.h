@@ -2,11 +2,15 @@
 // RunDiagnostics: how well the run goes, worked out beside it on the runner's own model and state,
 // which the runner passes in. The live error estimate: a step-doubling estimate of the local
 // error, refreshed after a change and, while running, at most every kEstimateInterval of wall time
-// and only once the steps since the last estimate took 1 / kEstimateShare times as long as it did,
-// so that the estimates never cost more than that share of the run. The energies at the last
+// and only once the steps since the last estimate took 1 / kEstimateShare times as long as it did
+// (1 / kBigSceneEstimateShare where an estimate takes over kCheapEstimateSeconds), so that the
+// estimates never cost more than that share of the run. The energies at the last
 // reset, from which the drift is measured. The explicit integrators' stability limit for the model
-// as edited, the pair speed warning, the explanation of a blow-up at the last good state, and the
-// accuracy plan asked for. Qt-free.
+// as edited: its power iteration runs a slice at a time (core::StabilityAnalysis), while running
+// only as the steps pay for it (kStabilityShare of their computing time), while paused to its end,
+// and it stops for waiting messages, so that a large scene's analysis (seconds) neither holds up
+// the run nor a Pause. The pair speed warning, the explanation of a blow-up at the last good state,
+// and the accuracy plan asked for. Qt-free.
 
 #include "core/accuracy_planner.h"
 #include "core/diagnostics.h"
@@ -31,9 +35,22 @@ public:
     // computing time of the steps
     static constexpr double kEstimateInterval = 0.25;
     static constexpr double kEstimateShare = 0.05;
+    // an estimate that takes longer than this (s) is of a big scene: it gets the smaller share,
+    // so that the run keeps its speed (a 200 × 200 cloth's takes 40-90 ms)
+    static constexpr double kCheapEstimateSeconds = 0.005;
+    static constexpr double kBigSceneEstimateShare = 0.02;
+    // the stability analysis, while running: this share of the steps' computing time, and this
+    // many seconds a tick besides
+    static constexpr double kStabilityShare = 0.02;
+    static constexpr double kLeastStabilitySlice = 0.001;
 
-    // a flag raised when messages wait: an estimate in progress stops and is made again later
-    void setInterrupt(const std::atomic<bool> *flag) { m_doubling.setInterrupt(flag); }
+    // a flag raised when messages wait: an estimate in progress stops and is made again later, the
+    // stability analysis goes on from where it stopped
+    void setInterrupt(const std::atomic<bool> *flag)
+    {
+        m_interrupt = flag;
+        m_doubling.setInterrupt(flag);
+    }
     // what changed in the run: the state (estimate again), or the model too (and analyse the
     // stability limit again)
     void stateChanged() { m_estimateStale = true; }
@@ -54,8 +71,12 @@ public:
     void checkPairSpeed(const core::Model &model, const core::State &state);
     // estimates the local error now if the model or the state changed since the last estimate
     void updateEstimate(const std::shared_ptr<const core::Model> &model, const core::State &state);
-    // analyses the stability limit again if the model changed since; true if it did
-    bool updateStability(const std::shared_ptr<const core::Model> &model, const core::State &state);
+    // works on the stability limit: starts the analysis when the model changed since the last, then
+    // runs it (while running, as far as the steps since have paid for; else to its end, unless
+    // messages wait); true when a new limit is in
+    bool updateStability(const std::shared_ptr<const core::Model> &model, const core::State &state, bool running);
+    // whether the stability analysis waits to be started or finished
+    bool stabilityPending() const { return m_stabilityStale || m_analysis != nullptr; }
     // a blow-up, kept until takeBlowupMessage() explains it at state, the last good one
     void blewUp(std::optional<core::Blowup> blowup) { m_blowup = std::move(blowup); }
     // a step that could not be taken for want of memory, said by takeBlowupMessage() like a blow-up
@@ -92,6 +113,12 @@ private:
     std::optional<std::string> m_outOfMemory;
     std::optional<core::StabilityLimit> m_stability;
     bool m_stabilityStale = true;  // the model changed since the limit was analysed
+    // the model under analysis (kept alive for it, so declared before it), and the analysis
+    std::shared_ptr<const core::Model> m_analysedModel;
+    std::unique_ptr<core::StabilityAnalysis> m_analysis;
+    double m_stabilityCredit = 0.0;  // s of computing the steps have paid the analysis, less what it took
+    double m_iterationSeconds = 0.0;  // what its latest product took
+    const std::atomic<bool> *m_interrupt = nullptr;
     std::string m_pairSpeedWarning;
 
     // the live error estimate and what it has cost

@@ -3,7 +3,10 @@
 // is shown by replaying it exactly from the keyframe before it, with that keyframe's model and
 // held forces; stepping forward goes on from the step shown rather than from the keyframe. When
 // the run goes on from the step shown, the recording after it is dropped (one line of history, no
-// branches). Qt-free; the runner owns it and lends it its workspace for the replays.
+// branches). A replay may be cut short between two sub-steps by a flag raised while messages wait
+// (a replay of a large scene takes as long as its steps): the last whole step replayed is shown,
+// and the rest is pending, taken up again by goOn(). Qt-free; the runner owns it and lends it its
+// workspace for the replays.
 
 #include "timeline.h"
 
@@ -12,7 +15,9 @@
 #include "core/state.h"
 #include "core/workspace.h"
 
+#include <atomic>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -40,8 +45,15 @@ public:
     // whether the timeline has step and a keyframe to replay it from
     bool canShow(std::uint64_t step) const;
     // shows the recorded state of step, replayed in work; false if it cannot be shown, or if the
-    // replay failed (a recorded step cannot fail; if it does, the run is shown instead)
-    bool show(std::uint64_t step, core::Workspace &work);
+    // replay failed (a recorded step cannot fail; if it does, the run is shown instead). The
+    // replay takes at most maxSteps steps, and with a raised interrupt flag it stops between
+    // sub-steps: the last whole step replayed is shown and step is pending
+    bool show(std::uint64_t step, core::Workspace &work, const std::atomic<bool> *interrupt = nullptr,
+              int maxSteps = std::numeric_limits<int>::max());
+    // the step a replay cut short is on its way to
+    std::optional<std::uint64_t> pendingStep() const { return m_pending; }
+    // goes on with a replay cut short, for at most maxSteps steps; true if it showed another step
+    bool goOn(core::Workspace &work, const std::atomic<bool> *interrupt, int maxSteps = std::numeric_limits<int>::max());
     // hands the step shown over for the run to go on from it (only while scrubbing): what was
     // recorded after it is gone
     ScrubbedStep resume();
@@ -55,6 +67,8 @@ public:
 private:
     Timeline m_timeline;
     std::optional<ScrubbedStep> m_shown;
+    std::optional<std::uint64_t> m_pending;
+    core::State m_stepStart;  // where the step being replayed began, while it may be cut short
     std::uint64_t m_resumes = 0;
     std::uint64_t m_resumedAt = 0;
 };

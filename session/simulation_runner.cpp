@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <new>
 #include <random>
 #include <string>
@@ -195,7 +196,14 @@ bool SimulationRunner::scrubTo(std::uint64_t step)
         return false;
     m_running = false;
     m_owed = 0.0;
-    return m_scrubber.show(step, m_work);
+    // slow steps: the keyframe at once, then a replayed step a tick, each shown (continueScrub)
+    return m_scrubber.show(step, m_work, m_interrupt, stepsAreSlow() ? 0 : std::numeric_limits<int>::max());
+}
+
+bool SimulationRunner::continueScrub()
+{
+    return hasScene() && m_scrubber.pendingStep() &&
+           m_scrubber.goOn(m_work, m_interrupt, stepsAreSlow() ? 1 : std::numeric_limits<int>::max());
 }
 
 void SimulationRunner::stepBack()

@@ -63,8 +63,16 @@ public:
     bool takeOwedSteps();
     // whether the latest step took kInterruptibleStepSeconds or more (or was cut short)
     bool stepsAreSlow() const { return m_lastStepSeconds >= kInterruptibleStepSeconds; }
-    // whether there is work to come back to without a message: owed steps, a missing estimate
-    bool hasWorkLeft() const { return m_stepsOwed > 0 || m_diagnostics.estimateStale(); }
+    // whether there is work to come back to without a message: owed steps, a replay to a step
+    // scrubbed to cut short, a missing estimate, a stability analysis not finished
+    bool hasWorkLeft() const
+    {
+        return m_stepsOwed > 0 || m_scrubber.pendingStep().has_value() || m_diagnostics.estimateStale() ||
+               m_diagnostics.stabilityPending();
+    }
+    // goes on with the replay to a step scrubbed to that messages cut short, or that slow steps
+    // take a step a tick (so that each is shown); true if it showed another step
+    bool continueScrub();
 
     // applies one message between two steps
     void apply(const Message &message);
@@ -111,8 +119,9 @@ public:
     // estimates the local error now if a message or a blow-up changed the model or the state since
     // the last estimate; the worker calls it once a tick, after the messages and the steps
     void updateEstimate() { m_diagnostics.updateEstimate(m_model, m_state); }
-    // analyses the stability limit again if an edit changed the model since; true if it did
-    bool updateStability() { return m_diagnostics.updateStability(m_model, m_state); }
+    // works on the stability limit after an edit changed the model (RunDiagnostics: while running,
+    // a slice the steps paid for; paused, to its end unless messages wait); true when a new one is in
+    bool updateStability() { return m_diagnostics.updateStability(m_model, m_state, m_running); }
     // what stopped the run by blowing up, once, explained at the last good state (what failed,
     // where, why and the fix: core::explainBlowup); the caller reports it
     std::optional<std::string> takeBlowupMessage();

@@ -1,5 +1,6 @@
-// The stability limit: exact on a single oscillator, matched by experiment on chains, and the
-// blow-up message names what failed, where, why and the fix.
+// The stability limit: exact on a single oscillator, matched by experiment on chains, the same
+// bits when analysed a slice at a time, and the blow-up message names what failed, where, why and
+// the fix.
 #include "core/diagnostics.h"
 #include "core/generators.h"
 #include "core/reference.h"
@@ -20,6 +21,7 @@ private slots:
     void measuredLimitMatchesTheory_data();
     void measuredLimitMatchesTheory();
     void implicitAndAdaptiveHaveNoLimit();
+    void analysisInSlicesIsTheWhole();
     void blowupMessage();
     void blowupAdviceIsPossible_data();
     void blowupAdviceIsPossible();
@@ -237,6 +239,40 @@ void TestStability::implicitAndAdaptiveHaveNoLimit()
     // and a scene without springs has nothing to limit
     test::Sim empty = test::compile(test::quietScene());
     QVERIFY(std::isinf(core::stabilityLimit(*empty.model, empty.state).maxSubStep(core::Integrator::SymplecticEuler)));
+}
+
+void TestStability::analysisInSlicesIsTheWhole()
+{
+    // a cloth (many modes near the top: the power iteration takes many products), analysed one
+    // product at a time as the editor does between steps, ends with the bits of the whole analysis
+    core::ClothOptions options;
+    options.rows = options.cols = 12;
+    test::Sim sim = test::compile(core::makeCloth(options));
+    const core::StabilityLimit whole = core::stabilityLimit(*sim.model, sim.state);
+
+    core::StabilityAnalysis analysis(*sim.model, sim.state);
+    int slices = 1;
+    while (!analysis.run(1))
+        ++slices;
+    QVERIFY2(slices > 10, qPrintable(QString::number(slices)));  // it was spread out
+    QVERIFY(analysis.done());
+    const core::StabilityLimit &sliced = analysis.limit();
+    QCOMPARE(sliced.omegaMax, whole.omegaMax);
+    QCOMPARE(sliced.dampingRate, whole.dampingRate);
+    QCOMPARE(sliced.gershgorinOmega, whole.gershgorinOmega);
+    QCOMPARE(sliced.converged, whole.converged);
+    QVERIFY(whole.omegaMax > 0.0);
+
+    // the state it linearises at is its own copy: the run may go on meanwhile
+    core::StabilityAnalysis early(*sim.model, sim.state);
+    early.run(3);
+    sim.step();
+    early.run(1000);
+    QCOMPARE(early.limit().omegaMax, whole.omegaMax);
+
+    // nothing to analyse: done at once
+    test::Sim empty = test::compile(core::SceneDesc{});
+    QVERIFY(core::StabilityAnalysis(*empty.model, empty.state).done());
 }
 
 void TestStability::blowupMessage()

@@ -7,6 +7,8 @@
 #include "session/simulation_runner.h"
 
 #include "core/error_estimate.h"
+#include "core/generators.h"
+#include "core/stability.h"
 #include "core/io/scene_file.h"
 #include "core/step.h"
 #include "tests/address_space_cap.h"
@@ -72,6 +74,7 @@ private slots:
     void blowupPausesAndRestoresTheLastGoodState();
     void outOfMemoryPausesAtTheLastGoodState();
     void stabilityLimitFollowsEdits();
+    void stabilityAnalysisYieldsToMessages();
     void pairSpeedWarningFollowsTheRun();
     void examplesStayInsideThePairSpeedLimit_data();
     void examplesStayInsideThePairSpeedLimit();
@@ -419,6 +422,43 @@ void TestSimulationRunner::stabilityLimitFollowsEdits()
     automatic->settings.autoSubsteps = true;
     runner.apply(ui::SetSceneEdit{automatic, ui::SceneChange::Parameters});
     QCOMPARE(runner.model()->substeps, 3);
+}
+
+void TestSimulationRunner::stabilityAnalysisYieldsToMessages()
+{
+    // a cloth's analysis takes many products of the power iteration; while messages wait it does
+    // not run (one product of a 10⁶-particle cloth holds a Pause up for a quarter of a second), and
+    // it is made once they are applied
+    core::ClothOptions options;
+    options.rows = options.cols = 12;
+    auto cloth = std::make_shared<const core::SceneDesc>(core::makeCloth(options));
+    std::atomic<bool> waiting{true};
+    ui::SimulationRunner runner = runnerWith(cloth);
+    runner.setInterrupt(&waiting);
+    QVERIFY(!runner.updateStability());
+    QVERIFY(!runner.diagnostics().stability().has_value());
+    QVERIFY(runner.diagnostics().stabilityPending());
+    QVERIFY(runner.hasWorkLeft());  // the worker comes back to it without a message
+
+    // the messages are in: paused, it runs to its end, with the bits of the whole analysis
+    waiting = false;
+    QVERIFY(runner.updateStability());
+    QVERIFY(!runner.diagnostics().stabilityPending());
+    const core::StabilityLimit whole = core::stabilityLimit(*runner.model(), runner.state());
+    QCOMPARE(runner.diagnostics().stability()->omegaMax, whole.omegaMax);
+    QCOMPARE(runner.diagnostics().stability()->dampingRate, whole.dampingRate);
+
+    // an edit while one is under way starts it over, on the edited model
+    waiting = true;
+    auto stiffer = std::make_shared<core::SceneDesc>(*cloth);
+    for (core::SpringDesc &spring : stiffer->springs)
+        spring.stiffness *= 4.0;
+    runner.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
+    QVERIFY(!runner.updateStability());
+    runner.apply(ui::SetSceneEdit{cloth, ui::SceneChange::Parameters});
+    waiting = false;
+    QVERIFY(runner.updateStability());
+    QCOMPARE(runner.diagnostics().stability()->omegaMax, whole.omegaMax);
 }
 
 void TestSimulationRunner::pairSpeedWarningFollowsTheRun()

@@ -1,7 +1,8 @@
 // The timeline, through the runner that owns it: a scrub to any recorded step gives the very bits
 // the run had there, edits (a slider, the mouse spring, a tilt, the steering) included; stepping
-// back and forth moves inside the recording; play or an edit goes on from the step shown and
-// drops the recorded future; a long run stays within the memory budget; breaks are marked.
+// back and forth moves inside the recording; a replay cut short by waiting messages shows the
+// steps it got to and goes on after them; play or an edit goes on from the step shown and drops
+// the recorded future; a long run stays within the memory budget; breaks are marked.
 
 #include "session/simulation_runner.h"
 
@@ -9,6 +10,7 @@
 #include "core/state_hash.h"
 
 #include <QtTest>
+#include <atomic>
 #include <map>
 #include <random>
 
@@ -49,6 +51,8 @@ class TestTimeline : public QObject {
 private slots:
     void scrubGivesTheRecordedBits();
     void stepsBackAndForthInsideTheRecording();
+    void scrubYieldsToMessages();
+    void slowScrubShowsEachStep();
     void playGoesOnFromTheStepShown();
     void editWhileScrubbedDropsTheFuture();
     void scrubbedStepShowsItsOwnScene();
@@ -133,6 +137,70 @@ void TestTimeline::stepsBackAndForthInsideTheRecording()
     QVERIFY(!runner.scrubber().isScrubbing());
     QCOMPARE(runner.state().step, std::uint64_t(41));
     QCOMPARE(runner.scrubber().timeline().lastStep(), std::uint64_t(41));
+}
+
+void TestTimeline::scrubYieldsToMessages()
+{
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{clothScene(), ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 25, hashes);
+    std::atomic<bool> waiting{false};
+    runner.setInterrupt(&waiting);
+
+    // step 19 is replayed from the keyframe at step 10; with messages waiting the replay does not
+    // go on: the keyframe is shown, the rest pending, and the worker comes back to it
+    waiting = true;
+    runner.apply(ui::Scrub{19});
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(10));
+    QCOMPARE(runner.scrubber().pendingStep(), std::optional<std::uint64_t>(19));
+    QVERIFY(runner.hasWorkLeft());
+    QVERIFY(!runner.continueScrub());  // still waiting
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(10));
+
+    // the messages are in: on to step 19, the recorded bits
+    waiting = false;
+    QVERIFY(runner.continueScrub());
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(19));
+    QCOMPARE(core::stateHash(runner.shownState()), hashes[19]);
+    QVERIFY(!runner.scrubber().pendingStep());
+
+    // a scrub elsewhere while one is pending replaces it
+    waiting = true;
+    runner.apply(ui::Scrub{8});
+    QCOMPARE(runner.scrubber().pendingStep(), std::optional<std::uint64_t>(8));
+    runner.apply(ui::Scrub{24});
+    QCOMPARE(runner.scrubber().pendingStep(), std::optional<std::uint64_t>(24));
+    waiting = false;
+    QVERIFY(runner.continueScrub());
+    QCOMPARE(core::stateHash(runner.shownState()), hashes[24]);
+}
+
+void TestTimeline::slowScrubShowsEachStep()
+{
+    // steps slower than kInterruptibleStepSeconds (a 16 × 16 cloth in 4000 sub-steps: tens of ms
+    // even on a fast machine): a scrub shows the keyframe at once, then one replayed step a tick
+    core::ClothOptions options;
+    options.rows = options.cols = 16;
+    core::SceneDesc cloth = core::makeCloth(options);
+    cloth.settings.substeps = 4000;
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{std::make_shared<const core::SceneDesc>(cloth), ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 13, hashes);
+    QVERIFY(runner.stepsAreSlow());
+
+    runner.apply(ui::Scrub{12});
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(10));
+    QCOMPARE(runner.scrubber().pendingStep(), std::optional<std::uint64_t>(12));
+    QVERIFY(runner.continueScrub());
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(11));
+    QCOMPARE(core::stateHash(runner.shownState()), hashes[11]);
+    QVERIFY(runner.continueScrub());
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(12));
+    QCOMPARE(core::stateHash(runner.shownState()), hashes[12]);
+    QVERIFY(!runner.scrubber().pendingStep());
+    QVERIFY(!runner.continueScrub());
 }
 
 void TestTimeline::playGoesOnFromTheStepShown()

@@ -35,6 +35,8 @@
 #include <QTimer>
 #include <QUndoStack>
 #include <QLineEdit>
+#include <QRegularExpression>
+#include <QScopeGuard>
 #include <QtTest>
 
 #include "editor_fixture.h"
@@ -64,6 +66,7 @@ private slots:
     void f4PlaysAndPauses();
     void f5RestoresTheInitialState();
     void statusBarShowsTheRun();
+    void statusBarShowsFramesBesideSteps();
     void inspectorShowsTheCurrentStateBesideTheInitial();
     void sliderChangesTheStiffnessTheWorkerUses();
     void outOfRangeValueNeverReachesTheWorker();
@@ -181,6 +184,40 @@ void TestMainWindow::statusBarShowsTheRun()
     QTRY_VERIFY(m_window->statusRate().startsWith(QStringLiteral("×")) && m_window->statusRate().size() > 2);
     QTRY_VERIFY(m_window->statusTime() != QStringLiteral("t = 0.000 s"));
     QVERIFY(m_window->statusTime().endsWith(QStringLiteral(" s")));
+}
+
+void TestMainWindow::statusBarShowsFramesBesideSteps()
+{
+    // while running: the steps and the frames per second, side by side, each measured (never 0);
+    // paused: neither
+    QCOMPARE(m_window->statusSteps(), QString());
+    QCOMPARE(m_window->statusFrames(), QString());
+    QStringList seen;
+    const QMetaObject::Connection watch =
+        connect(&controller(), &ui::SimulationController::frameChanged, this, [&] { seen += m_window->statusSteps(); });
+    const auto unwatch = qScopeGuard([&] { disconnect(watch); });
+    press(Qt::Key_F4);
+    const QRegularExpression measured(QStringLiteral("^[0-9.]+ (steps|frames)/s$"));
+    QTRY_VERIFY2(measured.match(m_window->statusFrames()).hasMatch(), qPrintable(m_window->statusFrames()));
+    QTRY_VERIFY2(measured.match(m_window->statusSteps()).hasMatch(), qPrintable(m_window->statusSteps()));
+    QVERIFY(!m_window->statusFrames().startsWith(QStringLiteral("0 ")));
+    for (const QString &steps : seen)
+        QVERIFY2(steps != QStringLiteral("0 steps/s"), qPrintable(seen.join(QStringLiteral(", "))));
+
+    // the frames' figure sits right after the steps'
+    const QList<QLabel *> figures = m_window->statusBar()->findChildren<QLabel *>(Qt::FindDirectChildrenOnly);
+    const auto at = [&](const char *name) {
+        for (qsizetype i = 0; i < figures.size(); ++i)
+            if (figures[i]->objectName() == QLatin1String(name))
+                return i;
+        return qsizetype(-1);
+    };
+    QVERIFY(at("statusSteps") >= 0);
+    QCOMPARE(at("statusFrames"), at("statusSteps") + 1);
+
+    press(Qt::Key_F4);
+    QTRY_COMPARE(m_window->statusFrames(), QString());
+    QTRY_COMPARE(m_window->statusSteps(), QString());
 }
 
 void TestMainWindow::inspectorShowsTheCurrentStateBesideTheInitial()

@@ -1,7 +1,8 @@
 // SimulationController with its real worker thread: play advances time, pause stops it, reset
 // restores the initial state bit for bit, edits reach the worker between steps, a followed
-// document's scene reaches it as it changes, a blow-up pauses and is reported, and shutting down
-// while running ends the thread. Waits are on frames (QTRY_*), never fixed sleeps.
+// document's scene reaches it as it changes, a blow-up pauses and is reported, shutting down
+// while running ends the thread, and frames that bring nothing but steps keep the window's pace.
+// Waits are on frames (QTRY_*), never fixed sleeps.
 
 #include "ui/simulation/simulation_controller.h"
 
@@ -18,6 +19,7 @@
 namespace {
 
 using test::frameAfter;
+using test::settledFrame;
 
 // the handout's springs net, small enough to step fast
 std::shared_ptr<const core::SceneDesc> netScene(double stiffness = 4e3)
@@ -53,6 +55,8 @@ private slots:
     void blowupPausesAndIsReported();
     void shutDownWhileRunningEndsTheThread();
     void pauseCutsALongStepShort();
+    void stepsAloneKeepTheFramePace();
+    void framesOfTheSameStateShareTheSnapshot();
 };
 
 void TestSimulationController::publishesTheSceneItIsGiven()
@@ -245,6 +249,72 @@ void TestSimulationController::pauseCutsALongStepShort()
     QCOMPARE(synced->stepsOwed, 1u);
     QTRY_VERIFY_WITH_TIMEOUT(controller.frame()->snapshot->step == 1u, 120000);
     QCOMPARE(controller.frame()->stepsOwed, 0u);
+}
+
+void TestSimulationController::stepsAloneKeepTheFramePace()
+{
+    ui::SimulationController controller;
+    controller.setScene(netScene(), ui::SceneChange::Replace);
+    controller.play();
+    QTRY_VERIFY(controller.frame() && controller.frame()->running && controller.frame()->snapshot->step > 0);
+
+    // a window that draws a frame an hour: the run goes on, and the only frames are the answers
+    // to messages (here Syncs), each at once
+    controller.setFrameInterval(3600.0);
+    std::shared_ptr<const ui::SimulationFrame> frame = settledFrame(controller);
+    QVERIFY(frame);
+    const std::uint64_t from = frame->snapshot->step;
+    QSignalSpy frames(&controller, &ui::SimulationController::frameChanged);
+    int syncs = 0;
+    while (frame && frame->snapshot->step < from + 30) {
+        QTest::qWait(50);  // room for the worker's timer to tick: it steps, but shows nothing
+        frame = settledFrame(controller);
+        ++syncs;
+    }
+    QVERIFY(frame);
+    QVERIFY(frame->running);
+    QCOMPARE_LE(frames.count(), syncs);
+
+    // a Pause is answered at once, whatever the pace
+    const auto paused = frameAfter(controller, controller.pause());
+    QVERIFY(paused);
+    QVERIFY(!paused->running);
+
+    // without a pace, every tick's steps are shown again
+    controller.setFrameInterval(0.0);
+    const auto playing = frameAfter(controller, controller.play());
+    QVERIFY(playing);
+    QTRY_VERIFY(controller.frame()->appliedMessage == playing->appliedMessage &&
+                controller.frame()->snapshot->step > playing->snapshot->step);
+}
+
+void TestSimulationController::framesOfTheSameStateShareTheSnapshot()
+{
+    // a Sync or a Pause shows the state shown before: the same snapshot, not a new copy of it
+    ui::SimulationController controller;
+    const auto loaded = frameAfter(controller, controller.setScene(netScene(), ui::SceneChange::Replace));
+    QVERIFY(loaded);
+    const auto synced = settledFrame(controller);
+    QVERIFY(synced);
+    QVERIFY(synced.get() != loaded.get());
+    QCOMPARE(synced->snapshot.get(), loaded->snapshot.get());
+    const auto paused = frameAfter(controller, controller.pause());
+    QVERIFY(paused);
+    QCOMPARE(paused->snapshot.get(), loaded->snapshot.get());
+
+    // a step, a tilt or an edit changes what is shown: a new snapshot each time
+    const auto stepped = frameAfter(controller, controller.stepOnce());
+    QVERIFY(stepped);
+    QCOMPARE(stepped->snapshot->step, 1u);
+    QVERIFY(stepped->snapshot.get() != loaded->snapshot.get());
+    const auto tilted = frameAfter(controller, controller.tilt());
+    QVERIFY(tilted);
+    QCOMPARE(tilted->snapshot->step, 1u);
+    QVERIFY(tilted->snapshot.get() != stepped->snapshot.get());
+    QVERIFY(tilted->snapshot->velocities != stepped->snapshot->velocities);
+    const auto edited = frameAfter(controller, controller.setScene(netScene(5e3), ui::SceneChange::Parameters));
+    QVERIFY(edited);
+    QVERIFY(edited->snapshot.get() != tilted->snapshot.get());
 }
 
 QTEST_GUILESS_MAIN(TestSimulationController)

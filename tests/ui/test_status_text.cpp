@@ -1,5 +1,6 @@
 // The status bar's words: the real-time factor says when the run falls behind the wall clock; the
-// local error and the energy drift in short figures; what the accuracy planner picked and why.
+// steps and frames per second, a slow rate never read as 0; the local error and the energy drift
+// in short figures; what the accuracy planner picked and why.
 
 #include "ui/panels/status_text.h"
 
@@ -33,6 +34,9 @@ void TestStatusText::rate_data()
     QTest::newRow("rounds to real time") << true << 0.996 << "×1.00";
     QTest::newRow("slower") << true << 0.35 << "×0.35 — slower than real time";
     QTest::newRow("just slower") << true << 0.99 << "×0.99 — slower than real time";
+    // a step of 10 ms every 4.8 s: not ×0.00
+    QTest::newRow("far slower") << true << 0.0021 << "×0.0021 — slower than real time";
+    QTest::newRow("a tenth") << true << 0.1 << "×0.10 — slower than real time";
 }
 
 void TestStatusText::rate()
@@ -48,6 +52,15 @@ void TestStatusText::figures()
     QCOMPARE(ui::timeText(1.25), QStringLiteral("t = 1.250 s"));
     QCOMPARE(ui::stepsText(true, 849.6), QStringLiteral("850 steps/s"));
     QCOMPARE(ui::stepsText(false, 849.6), QString());
+    // slow runs keep two significant digits, never "0 steps/s"; 0 is "not measured yet"
+    QCOMPARE(ui::stepsText(true, 12.4), QStringLiteral("12 steps/s"));
+    QCOMPARE(ui::stepsText(true, 4.24), QStringLiteral("4.2 steps/s"));
+    QCOMPARE(ui::stepsText(true, 0.19), QStringLiteral("0.19 steps/s"));
+    QCOMPARE(ui::stepsText(true, 0.0), QStringLiteral("… steps/s"));
+    QCOMPARE(ui::framesText(true, 59.7), QStringLiteral("60 frames/s"));
+    QCOMPARE(ui::framesText(true, 0.8), QStringLiteral("0.8 frames/s"));
+    QCOMPARE(ui::framesText(true, 0.0), QStringLiteral("… frames/s"));
+    QCOMPARE(ui::framesText(false, 30.0), QString());
     QCOMPARE(ui::energyText(-12.5), QStringLiteral("E = -12.5 J"));
 }
 

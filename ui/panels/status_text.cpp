@@ -26,20 +26,43 @@ QString timeText(double seconds)
     return tr("t = %1 s").arg(seconds, 0, 'f', 3);
 }
 
+namespace {
+
+// a rate as it reads best: whole from 10 up, two significant digits below ("4.2", "0.19"),
+// so that a slow one never reads 0
+QString rateFigure(double perSecond)
+{
+    return perSecond >= 10.0 ? QString::number(perSecond, 'f', 0) : QString::number(perSecond, 'g', 2);
+}
+
+}  // namespace
+
 QString rateText(bool running, double realTimeFactor)
 {
     if (!running)
         return tr("paused");
     if (realTimeFactor <= 0.0)
         return QStringLiteral("×…");
+    // two decimals, or two significant digits where two decimals would read ×0.00
+    const QString factor = realTimeFactor >= 0.1 ? QString::number(realTimeFactor, 'f', 2)
+                                                 : QString::number(realTimeFactor, 'g', 2);
     if (realTimeFactor < kRealTimeTolerance)
-        return tr("×%1 — slower than real time").arg(realTimeFactor, 0, 'f', 2);
-    return QStringLiteral("×%1").arg(realTimeFactor, 0, 'f', 2);
+        return tr("×%1 — slower than real time").arg(factor);
+    return QStringLiteral("×%1").arg(factor);
 }
 
 QString stepsText(bool running, double stepsPerSecond)
 {
-    return running ? tr("%1 steps/s").arg(stepsPerSecond, 0, 'f', 0) : QString();
+    if (!running)
+        return QString();
+    return stepsPerSecond > 0.0 ? tr("%1 steps/s").arg(rateFigure(stepsPerSecond)) : tr("… steps/s");
+}
+
+QString framesText(bool running, double framesPerSecond)
+{
+    if (!running)
+        return QString();
+    return framesPerSecond > 0.0 ? tr("%1 frames/s").arg(rateFigure(framesPerSecond)) : tr("… frames/s");
 }
 
 QString energyText(double joules)

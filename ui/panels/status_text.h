@@ -1,8 +1,8 @@
 #pragma once
 // The status bar's words for the figures of a run, kept apart from the window so that the unit
 // tests can check them: "t = 1.250 s", "×1.00", "×0.35 — slower than real time", "850 steps/s",
-// "E = 12.5 J", "local error ≈ 3.2e-6 m/step", "ΔE = +0.4 %", and what the accuracy planner
-// picked.
+// "0.19 steps/s", "12 frames/s", "E = 12.5 J", "local error ≈ 3.2e-6 m/step", "ΔE = +0.4 %", and
+// what the accuracy planner picked.
 
 #include "core/accuracy_planner.h"
 #include "core/diagnostics.h"
@@ -17,9 +17,13 @@ namespace ui {
 inline constexpr double kRealTimeTolerance = 0.995;
 
 QString timeText(double seconds);
-// factor 0 while running means "not measured yet"
+// factor 0 while running means "not measured yet" ("×…"); below 0.1 it has two significant
+// digits ("×0.0021"), never "×0.00"
 QString rateText(bool running, double realTimeFactor);
+// rates while running, empty while paused; 0 means "not measured yet" ("… steps/s"), and a slow
+// rate keeps two significant digits ("0.19 steps/s"), never "0 steps/s"
 QString stepsText(bool running, double stepsPerSecond);
+QString framesText(bool running, double framesPerSecond);
 QString energyText(double joules);
 
 // a number in short scientific notation with at most `digits` significant digits: "3.2e-6", "1e-6"

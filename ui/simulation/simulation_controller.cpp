@@ -6,6 +6,7 @@
 #include "ui/document/scene_document.h"
 
 #include <QThread>
+#include <algorithm>
 #include <type_traits>
 #include <variant>
 
@@ -193,6 +194,13 @@ void SimulationController::setTiltSeed(std::uint64_t seed)
 {
     m_tiltSeed = seed;
     m_tiltCount = 0;
+}
+
+void SimulationController::setFrameInterval(double seconds)
+{
+    if (m_worker)
+        m_worker->frameIntervalNs().store(static_cast<std::int64_t>(std::max(0.0, seconds) * 1e9),
+                                          std::memory_order_relaxed);
 }
 
 void SimulationController::setRunning(bool running)

@@ -72,6 +72,10 @@ public:
     // tilts are drawn from this seed: the n-th tilt after setTiltSeed(s) is the same every time
     void setTiltSeed(std::uint64_t seed);
 
+    // the shortest time between two frames that bring nothing but new steps (s): the pace the
+    // window draws at (FramePacer); 0, the default: every tick's steps are shown
+    void setFrameInterval(double seconds);
+
     // what the UI last asked for (a blow-up also pauses)
     bool isRunning() const { return m_running; }
 

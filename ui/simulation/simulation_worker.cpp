@@ -11,10 +11,18 @@ namespace ui {
 
 namespace {
 
-// how long rates are averaged before they are shown, s
-constexpr double kRateWindowSeconds = 0.5;
-
 const QEvent::Type kWakeEvent = static_cast<QEvent::Type>(QEvent::registerEventType());
+
+// the messages that leave the state shown as it was, unless they take a step (which the step
+// number tells): after them the latest snapshot still holds
+bool keepsTheShownState(const Message &message)
+{
+    return std::holds_alternative<Pause>(message) || std::holds_alternative<Play>(message) ||
+           std::holds_alternative<Sync>(message) || std::holds_alternative<StepOnce>(message) ||
+           std::holds_alternative<PlanAccuracy>(message) || std::holds_alternative<CaptureState>(message) ||
+           std::holds_alternative<StartRecording>(message) || std::holds_alternative<StopRecording>(message) ||
+           std::holds_alternative<SetTimelineBudget>(message);
+}
 
 }  // namespace
 
@@ -68,8 +76,10 @@ void SimulationWorker::tick()
 
     // messages first: they land between two steps
     MessageQueue::Batch batch = m_messages.drain();
-    for (const Message &message : batch.messages)
+    for (const Message &message : batch.messages) {
         m_runner.apply(message);
+        m_snapshotStale = m_snapshotStale || !keepsTheShownState(message);
+    }
     bool changed = !batch.messages.empty();
 
     // the answers to one-off requests, each once, ahead of the frame that follows them
@@ -87,8 +97,14 @@ void SimulationWorker::tick()
         changed = false;
     }
 
-    // the steps asked for that earlier messages cut short
-    changed = m_runner.takeOwedSteps() || changed;
+    // the steps asked for that earlier messages cut short, and the replay to a step scrubbed to
+    if (m_runner.takeOwedSteps() || m_runner.continueScrub()) {
+        changed = true;
+        m_snapshotStale = true;
+    }
+
+    // the steps the run takes by itself: shown at the pace the window asks for (frameInterval)
+    bool stepped = false;
 
     // then the steps that the wall time elapsed since the last tick asks for
     if (m_runner.isRunning()) {
@@ -96,32 +112,22 @@ void SimulationWorker::tick()
             // just started: time starts counting now, and so do the rates
             m_clock.start();
             m_window.start();
-            m_windowCredited = 0.0;
-            m_windowSteps = 0;
+            m_rates.start();
         } else {
             const double elapsed = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
             m_clock.start();
             const double capped = std::min(elapsed, kMaxTickSeconds);
             const SimulationRunner::Advance advance = m_runner.advance(capped, kStepBudgetSeconds);
-            changed = changed || advance.steps > 0;
-            m_windowCredited += capped - advance.droppedSeconds;
-            m_windowSteps += static_cast<std::uint64_t>(advance.steps);
-        }
-
-        // rates over the window, then a fresh window
-        const double window = static_cast<double>(m_window.nsecsElapsed()) * 1e-9;
-        if (window >= kRateWindowSeconds) {
-            m_realTimeFactor = m_windowCredited / window;
-            m_stepsPerSecond = static_cast<double>(m_windowSteps) / window;
-            m_window.start();
-            m_windowCredited = 0.0;
-            m_windowSteps = 0;
+            stepped = advance.steps > 0;
+            m_snapshotStale = m_snapshotStale || stepped;
+            // the rates over a window that holds a step, then a fresh window
+            if (m_rates.add(advance.steps, capped - advance.droppedSeconds,
+                            static_cast<double>(m_window.nsecsElapsed()) * 1e-9))
+                m_window.start();
         }
     }
-    if (!m_runner.isRunning()) {
-        m_realTimeFactor = 0.0;
-        m_stepsPerSecond = 0.0;
-    }
+    if (!m_runner.isRunning())
+        m_rates.start();
 
     // a message or a blow-up changed what the error estimate is of: estimate again
     m_runner.updateEstimate();
@@ -132,6 +138,7 @@ void SimulationWorker::tick()
     // a blow-up paused the run: say what, where, why and what to do
     if (const std::optional<std::string> message = m_runner.takeBlowupMessage()) {
         changed = true;
+        m_snapshotStale = true;
         emit blewUp(QString::fromStdString(*message));
     }
 
@@ -142,22 +149,41 @@ void SimulationWorker::tick()
     else if (!busy && m_timer->isActive())
         m_timer->stop();
 
-    if (changed || m_runner.isRunning() != wasRunning || m_runner.stepsOwed() != owedBefore)
+    // what answers a message, or warns of particles too fast, goes at once; new steps alone once
+    // the window is ready for a frame
+    changed = changed || m_runner.diagnostics().pairSpeedWarning() != m_shownPairSpeedWarning;
+    m_unshownSteps = m_unshownSteps || stepped;
+    const bool frameDue = !m_published.isValid() ||
+                          m_published.nsecsElapsed() >= m_frameIntervalNs.load(std::memory_order_relaxed);
+    if (changed || m_runner.isRunning() != wasRunning || m_runner.stepsOwed() != owedBefore ||
+        (m_unshownSteps && frameDue))
         publish();
 }
 
 void SimulationWorker::publish()
 {
+    m_published.start();
+    m_unshownSteps = false;
     auto frame = std::make_shared<SimulationFrame>();
-    frame->snapshot = m_runner.snapshot();
     // the snapshot's own model and scene, the recorded ones while a past step is shown
     frame->model = m_runner.shownModel();
     frame->scene = m_runner.shownScene();
+    // a new snapshot only when what it shows changed: one of 10⁶ particles and 6·10⁶ springs takes
+    // half a second to make, which would hold up the answer to a Pause
+    const bool sameState = !m_snapshotStale && m_snapshot && frame->model == m_snapshotModel &&
+                           m_snapshot->step == m_runner.shownState().step &&
+                           m_snapshot->time == m_runner.shownState().time;
+    if (!sameState) {
+        m_snapshot = m_runner.snapshot();
+        m_snapshotModel = frame->model;
+        m_snapshotStale = false;
+    }
+    frame->snapshot = m_snapshot;
     frame->appliedMessage = m_appliedMessage;
     frame->running = m_runner.isRunning();
     frame->stepsOwed = m_runner.stepsOwed();
-    frame->realTimeFactor = m_realTimeFactor;
-    frame->stepsPerSecond = m_stepsPerSecond;
+    frame->realTimeFactor = m_rates.realTimeFactor();
+    frame->stepsPerSecond = m_rates.stepsPerSecond();
     const RunDiagnostics &diagnostics = m_runner.diagnostics();
     frame->localError = diagnostics.localError();
     frame->localErrorStep = diagnostics.localErrorStep();
@@ -165,6 +191,7 @@ void SimulationWorker::publish()
     frame->estimateShare = diagnostics.estimateShare();
     frame->stability = diagnostics.stability();
     frame->pairSpeedWarning = diagnostics.pairSpeedWarning();
+    m_shownPairSpeedWarning = frame->pairSpeedWarning;
     const Scrubber &scrubber = m_runner.scrubber();
     const Timeline &timeline = scrubber.timeline();
     TimelineInfo &info = frame->timeline;

@@ -1,17 +1,24 @@
 #pragma once
 // SimulationWorker: lives on the controller's worker thread. A QTimer ticks it while running; each
 // tick drains the message queue, advances the simulation by the wall time elapsed (capped),
-// hands the replies to one-off requests to the reply queue and publishes a frame to the mailbox. Only this object, on its thread, touches the core::State.
+// hands the replies to one-off requests to the reply queue and publishes a frame to the mailbox.
+// Only this object, on its thread, touches the core::State. A frame that answers a message is
+// published at once; one that only brings new steps waits for the pace the window draws at
+// (frameIntervalNs), since building a snapshot of a large scene nobody will see costs the run; and
+// a frame that shows the same state as the one before reuses its snapshot.
 
 #include "session/messages.h"
 #include "session/latest_mailbox.h"
 #include "session/replies.h"
+#include "session/run_rates.h"
 #include "session/simulation_frame.h"
 #include "session/simulation_runner.h"
 
 #include <QElapsedTimer>
 #include <QObject>
 #include <atomic>
+#include <cstdint>
+#include <string>
 
 class QTimer;
 
@@ -36,6 +43,9 @@ public:
 
     // the UI side sets this before queueing wake(), so that a burst of messages queues one wake
     std::atomic<bool> &wakePending() { return m_wakePending; }
+    // the shortest time between two frames that bring nothing but new steps (ns), set by the UI
+    // side to the pace it draws at; a frame that answers a message goes at once
+    std::atomic<std::int64_t> &frameIntervalNs() { return m_frameIntervalNs; }
 
 protected:
     void customEvent(QEvent *event) override;
@@ -61,13 +71,19 @@ private:
     QElapsedTimer m_clock;  // wall time since the previous tick while running
     std::atomic<bool> m_wakePending = false;
     std::uint64_t m_appliedMessage = 0;
+    std::atomic<std::int64_t> m_frameIntervalNs = 0;
+    QElapsedTimer m_published;   // since the latest frame
+    bool m_unshownSteps = false;  // steps taken since the latest frame
+    std::string m_shownPairSpeedWarning;  // the latest frame's
+    // the latest snapshot, for the frames that show the same state again (a Pause, a Sync), the
+    // model it was made with, and whether the state changed since
+    std::shared_ptr<const core::Snapshot> m_snapshot;
+    std::shared_ptr<const core::Model> m_snapshotModel;
+    bool m_snapshotStale = true;
 
-    // rates over the current measuring window
+    // the rates, over the window m_window times
     QElapsedTimer m_window;
-    double m_windowCredited = 0.0;  // s of wall time the run kept up with
-    std::uint64_t m_windowSteps = 0;
-    double m_realTimeFactor = 0.0;
-    double m_stepsPerSecond = 0.0;
+    RunRates m_rates;
 };
 
 }  // namespace ui

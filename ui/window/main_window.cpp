@@ -96,6 +96,7 @@ MainWindow::MainWindow(QWidget *parent)
     createEditing();
     createPlotsDock();
     createStatusBar();
+    createFramePacing();
     // a scene file dropped anywhere on the window opens
     setAcceptDrops(true);
 
@@ -360,6 +361,10 @@ void MainWindow::createStatusBar()
                                          tr("Simulated seconds per second of wall-clock time"));
     m_stepsLabel = m_statusBar->addFigure("statusSteps", stepsText(true, 10000.0),
                                           tr("Time steps computed per second of wall-clock time"));
+    m_framesLabel = m_statusBar->addFigure("statusFrames", framesText(true, 60.0),
+                                           tr("Frames the view draws per second of wall-clock time; while the run "
+                                              "falls behind real time, drawing is held to a tenth of it, so that "
+                                              "the steps keep the rest"));
     m_energyLabel = m_statusBar->addFigure("statusEnergy", energyText(-123.456),
                                            tr("Total energy: kinetic + gravitational + spring"));
     m_driftLabel = m_statusBar->addFigure("statusDrift", tr("ΔE = +0.1 %"),
@@ -435,6 +440,16 @@ QString MainWindow::statusTime() const
 QString MainWindow::statusRate() const
 {
     return m_rateLabel->text();
+}
+
+QString MainWindow::statusSteps() const
+{
+    return m_stepsLabel->text();
+}
+
+QString MainWindow::statusFrames() const
+{
+    return m_framesLabel->text();
 }
 
 QString MainWindow::statusWarning() const
@@ -553,6 +568,7 @@ void MainWindow::frameChanged()
     m_pairSpeedWarned = tooFast;
     if (!frame->snapshot)
         return;
+    frameArrived();
     m_viewport->setSnapshot(frame->snapshot);
     showTimeline(*frame);
     m_plots->addFrame(*frame);
@@ -567,6 +583,7 @@ void MainWindow::frameChanged()
     m_timeLabel->setText(timeText(snapshot.time));
     m_rateLabel->setText(rateText(frame->running, frame->realTimeFactor));
     m_stepsLabel->setText(stepsText(frame->running, frame->stepsPerSecond));
+    m_framesLabel->setText(framesText(frame->running, m_pacer.framesPerSecond()));
     m_energyLabel->setText(energyText(snapshot.energies.total()));
     m_driftLabel->setText(driftText(frame->initialEnergies, snapshot.energies.total()));
     m_errorLabel->setText(localErrorText(frame->localError));

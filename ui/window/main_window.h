@@ -7,8 +7,10 @@
 // autosave and recovery) is DocumentFiles's, and File › Export is the Exporter's.
 
 #include "ui/dialogs/prompts.h"
+#include "ui/simulation/frame_pacer.h"
 #include "ui/simulation/steering.h"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QString>
 #include <cstdint>
@@ -107,6 +109,8 @@ public:
     // the status bar's fields, for the tests
     QString statusTime() const;
     QString statusRate() const;
+    QString statusSteps() const;
+    QString statusFrames() const;
     QString statusWarning() const;
     QString statusError() const;
     QString statusDrift() const;
@@ -131,6 +135,10 @@ private:
                            const QString &statusTip);
     void createPlotsDock();
     void createStatusBar();
+    // the pace of the frames while running, and the frames/s shown (main_window_pacing.cpp)
+    void createFramePacing();
+    void frameArrived();
+    void frameDrawn();
     // the timeline (main_window_timeline.cpp)
     void createTimeline();
     void showTimeline(const SimulationFrame &frame);
@@ -221,9 +229,15 @@ private:
     QLabel *m_timeLabel = nullptr;
     QLabel *m_rateLabel = nullptr;
     QLabel *m_stepsLabel = nullptr;
+    QLabel *m_framesLabel = nullptr;
     QLabel *m_energyLabel = nullptr;
     QLabel *m_errorLabel = nullptr;
     QLabel *m_driftLabel = nullptr;
+
+    // frames while running: their cost sets how often the worker sends one (FramePacer)
+    FramePacer m_pacer;
+    QElapsedTimer m_paceClock;
+    double m_frameArrival = -1.0;  // s on m_paceClock: when the frame not yet drawn arrived; -1: none
 };
 
 }  // namespace ui
