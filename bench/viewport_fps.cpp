@@ -6,6 +6,7 @@
 // Without a display, run it under a virtual X server:
 //   xvfb-run -a -s "-screen 0 1280x1024x24" build/release/bench/viewport_fps
 
+#include "bench_common.h"
 #include "ui/viewport/viewport.h"
 
 #include <QApplication>
@@ -72,13 +73,6 @@ double measure(ui::Viewport &viewport, const std::shared_ptr<const core::Snapsho
         ++count;
     }
     return count / (clock.nsecsElapsed() * 1e-9);
-}
-
-double median(std::vector<double> values)
-{
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 }  // namespace
@@ -153,7 +147,7 @@ int main(int argc, char **argv)
             for (int run = 0; run < runs; ++run)
                 fps.push_back(measure(viewport, frames, seconds));
             const auto [lo, hi] = std::minmax_element(fps.begin(), fps.end());
-            const QString cell = QStringLiteral(" %1 (%2–%3) |").arg(median(fps), 0, 'f', 2).arg(*lo, 0, 'f', 2);
+            const QString cell = QStringLiteral(" %1 (%2–%3) |").arg(bench::median(fps), 0, 'f', 2).arg(*lo, 0, 'f', 2);
             out << cell.arg(*hi, 0, 'f', 2);
             out.flush();
         }
