@@ -12,6 +12,8 @@
 //   springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]
 //                                                    one xpbd sub-step's cost: the core's pass beside
 //                                                    the colour-by-colour pass it replaced
+//   springlab-bench pause --scene FILE [--runs R]     how long a Pause takes to stop a big scene's
+//                                                    step and to make the snapshot answering it
 //   springlab-bench write-references DIR             the reference problems as scene files
 //
 // The plots are painted into images, which needs a QGuiApplication for the fonts but no display:
@@ -19,6 +21,7 @@
 
 #include "accuracy.h"
 #include "contacts.h"
+#include "pause_latency.h"
 #include "reference_problems.h"
 #include "stability.h"
 #include "stiff.h"
@@ -47,6 +50,7 @@ const char *const kUsage =
     "       springlab-bench contacts [--out DIR] [--quick]\n"
     "       springlab-bench stiff [--out DIR] [--quick] [--size N]... [--stiffness K]...\n"
     "       springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]\n"
+    "       springlab-bench pause --scene FILE [--runs R]\n"
     "       springlab-bench write-references DIR\n";
 
 int badArguments(QTextStream &err, const QString &message)
@@ -200,6 +204,32 @@ int xpbdSubStep(const QStringList &arguments, QTextStream &out, QTextStream &err
     return bench::runXpbdSubStep(options, out);
 }
 
+int pause(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("How long a Pause takes on a scene, without the window: the step cut short and put back, "
+                       "and the snapshot of the state it stopped at."));
+    parser.addHelpOption();
+    const bench::PauseLatencyOptions defaults;
+    const QCommandLineOption scene(QStringLiteral("scene"), QStringLiteral("The scene file to play."),
+                                   QStringLiteral("FILE"));
+    const QCommandLineOption runs(QStringLiteral("runs"), QStringLiteral("Pauses timed."), QStringLiteral("R"),
+                                  QString::number(defaults.runs));
+    parser.addOptions({scene, runs});
+    if (const std::optional<int> done = parseMode(parser, arguments, out, err, QStringLiteral("pause")))
+        return *done;
+    bench::PauseLatencyOptions options;
+    bool ok = false;
+    options.scene = parser.value(scene);
+    options.runs = parser.value(runs).toInt(&ok);
+    if (options.scene.isEmpty())
+        return badArguments(err, QStringLiteral("pause: --scene FILE is needed"));
+    if (!ok || options.runs < 1)
+        return badArguments(err, QStringLiteral("pause: --runs must be a whole number of at least 1"));
+    return bench::runPauseLatency(options, out, err);
+}
+
 // every reference problem's scene, saved as DIR/<name>.json
 int writeReferences(const QStringList &arguments, QTextStream &out, QTextStream &err)
 {
@@ -249,6 +279,8 @@ int main(int argc, char *argv[])
         return stiff(arguments, out, err);
     if (name == QStringLiteral("xpbd-substep"))
         return xpbdSubStep(arguments, out, err);
+    if (name == QStringLiteral("pause"))
+        return pause(arguments, out, err);
     if (name == QStringLiteral("write-references"))
         return writeReferences(arguments, out, err);
     if (name == QStringLiteral("--help") || name == QStringLiteral("-h")) {

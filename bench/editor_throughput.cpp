@@ -54,18 +54,19 @@ struct EditorRun {
     double steps = 0.0;
     double frames = 0.0;
     double pauseSeconds = 0.0;  // from the Pause at the end to its frame
+    double shownSeconds = 0.0;  // from the Pause to the frame with the snapshot of its step
 };
 
 // the line `springlab --exit-after` prints (ui/window/timed_play.h)
 std::optional<EditorRun> parseEditorLine(const QString &output)
 {
     static const QRegularExpression line(
-        QStringLiteral(R"(springlab: ([0-9.]+) s: ([0-9]+) steps \([0-9.]+ steps/s\), ([0-9]+) frames \([0-9.]+ frames/s\), paused in ([0-9.]+) s)"));
+        QStringLiteral(R"(springlab: ([0-9.]+) s: ([0-9]+) steps \([0-9.]+ steps/s\), ([0-9]+) frames \([0-9.]+ frames/s\), paused in ([0-9.]+) s, shown in ([0-9.]+) s)"));
     const QRegularExpressionMatch match = line.match(output);
     if (!match.hasMatch())
         return std::nullopt;
     return EditorRun{match.captured(1).toDouble(), match.captured(2).toDouble(), match.captured(3).toDouble(),
-                     match.captured(4).toDouble()};
+                     match.captured(4).toDouble(), match.captured(5).toDouble()};
 }
 
 // runs a program to its end; its standard output, or nothing (and why, in error)
@@ -141,13 +142,13 @@ int main(int argc, char **argv)
     }
     out << bench::machineDescription() << ", load average " << bench::loadText() << "\n" << runs
         << " runs of each, alternating, the editor for " << seconds << " s a run\n\n";
-    out << "| run | springlab-sim steps/s | springlab steps/s | springlab frames/s | editor / sim | pause answered |\n"
-        << "|---:|---:|---:|---:|---:|---:|\n";
+    out << "| run | springlab-sim steps/s | springlab steps/s | springlab frames/s | editor / sim | pause answered | its step shown |\n"
+        << "|---:|---:|---:|---:|---:|---:|---:|\n";
     out.flush();
 
     // editor, then the simulator over the same steps
     const int timeoutMs = static_cast<int>(seconds * 1000.0) + 600000;
-    std::vector<double> simRates, editorRates, frameRates, ratios, pauses;
+    std::vector<double> simRates, editorRates, frameRates, ratios, pauses, shown;
     for (int i = 0; i < runs; ++i) {
         QString error;
         const std::optional<QString> editorOutput =
@@ -178,17 +179,19 @@ int main(int argc, char **argv)
         frameRates.push_back(frameRate);
         ratios.push_back(simRate > 0.0 ? editorRate / simRate : 0.0);
         pauses.push_back(editor->pauseSeconds);
+        shown.push_back(editor->shownSeconds);
         out << "| " << i + 1 << " | " << QString::number(simRate, 'f', 1) << " | "
             << QString::number(editorRate, 'f', 1) << " | " << QString::number(frameRate, 'f', 1) << " | "
             << QString::number(ratios.back(), 'f', 2) << " | " << QString::number(1e3 * pauses.back(), 'f', 0)
-            << " ms |\n";
+            << " ms | " << QString::number(1e3 * shown.back(), 'f', 0) << " ms |\n";
         out.flush();
     }
     using bench::median;
     out << "| median | " << QString::number(median(simRates), 'f', 1) << " | "
         << QString::number(median(editorRates), 'f', 1) << " | " << QString::number(median(frameRates), 'f', 1)
         << " | " << QString::number(median(ratios), 'f', 2) << " | "
-        << QString::number(1e3 * median(pauses), 'f', 0) << " ms |\n\n";
+        << QString::number(1e3 * median(pauses), 'f', 0) << " ms | " << QString::number(1e3 * median(shown), 'f', 0)
+        << " ms |\n\n";
     out << "ratio of the medians: " << QString::number(median(editorRates) / median(simRates), 'f', 2)
         << "; load average at the end " << bench::loadText() << '\n';
     return 0;

@@ -151,6 +151,8 @@ void pairsAlongPaths(const Model &model, const State &state, Workspace &work, do
         findContactsBruteForce(model, scratch.sweptCentre, scratch.sweptRadius, grid.pairs);
     else
         findContacts(model, scratch.sweptCentre, scratch.sweptRadius, grid);
+    if (stopsHere(work))
+        return;
     for (const ContactPair &pair : grid.pairs)
         pairAlongPaths(model, state, scratch, pair.i, pair.j, h);
     for (int i : scratch.fast)
@@ -245,8 +247,10 @@ void resolveImpacts(const Model &model, State &state, Workspace &work, double h)
     scratch.impacted.assign(std::size_t(model.particleCount()), 0);
     if (model.plan.planeCollisions)
         collidersAlongPaths(model, state, scratch, h);
-    if (model.plan.particleCollisions)
+    if (model.plan.particleCollisions && !stopsHere(work))
         pairsAlongPaths(model, state, work, h);
+    if (stopsHere(work))
+        return;
 
     // in the order they happen; a particle takes part in one impact per sub-step, and any later
     // meeting of its new path is left to the resting contacts

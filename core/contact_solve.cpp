@@ -101,13 +101,15 @@ void gather(const Model &model, State &state, Workspace &work, double h)
                     add(i, -1 - k, side, s.normal, gap, collider.friction, collider.staticFriction);
             }
 
-    if (model.plan.particleCollisions) {
+    if (model.plan.particleCollisions && !stopsHere(work)) {
         ContactGrid &grid = work.contacts;
         scratch.sweptRadius = model.radius.array() + model.radius.array().min(0.5 * reach);
         if (grid.bruteForce)
             findContactsBruteForce(model, state.position, scratch.sweptRadius, grid.pairs);
         else
             findContacts(model, state.position, scratch.sweptRadius, grid);
+        if (stopsHere(work))
+            return;
         for (const ContactPair &pair : grid.pairs) {
             // i the free one: a pinned particle never moves, whichever end it is
             const bool swap = model.invMass[pair.i] == 0.0;
@@ -439,15 +441,25 @@ void solveRestingContacts(const Model &model, State &state, Workspace &work, dou
 {
     ContactScratch &scratch = work.contactSolver;
     scratch.drift = driftWeight(pathShape(model.integrator)) * h;
+    // (the stages of 10⁶ particles take tens of milliseconds each: a waiting Pause stops between
+    // them, and inside gather around its broad phase)
     gather(model, state, work, h);
+    if (work.interrupted)
+        return;
     if (scratch.contacts.empty()) {
         state.contactImpulses.clear();
         return;
     }
+    if (stopsHere(work))
+        return;
     sortByLevel(model, scratch);
     setWeights(model, scratch);
+    if (stopsHere(work))
+        return;
     solveVelocities(state, scratch);
     keepImpulses(state, scratch);
+    if (stopsHere(work))
+        return;
     solvePositions(model, state, scratch);
     keepOutOfColliders(model, state, scratch);
     stopStuckSlip(state, scratch);

@@ -57,6 +57,8 @@ void solveContacts(const Model &model, State &state, Workspace &work)
         state.contactImpulses.reserve(work.contactSolver.contacts.capacity());
     const double h = model.subStep();
     resolveImpacts(model, state, work, h);
+    if (work.interrupted)
+        return;
     solveRestingContacts(model, state, work, h);
 }
 

@@ -9,7 +9,13 @@ namespace core {
 void addSpringJacobians(const Model &model, const State &state, const Eigen::Matrix3Xd &y, double stiffnessScale,
                         double dampingScale, Eigen::Matrix3Xd &out)
 {
-    for (int k = 0; k < model.springCount(); ++k) {
+    addSpringJacobians(model, state, y, stiffnessScale, dampingScale, out, 0, model.springCount());
+}
+
+void addSpringJacobians(const Model &model, const State &state, const Eigen::Matrix3Xd &y, double stiffnessScale,
+                        double dampingScale, Eigen::Matrix3Xd &out, int first, int last)
+{
+    for (int k = first; k < last; ++k) {
         if (state.isBroken(k))
             continue;
         const int a = model.springA[static_cast<std::size_t>(k)];

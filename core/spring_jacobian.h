@@ -13,5 +13,9 @@ namespace core {
 // semi-definite (a compressed spring's sideways instability is buckling, a physical one)
 void addSpringJacobians(const Model &model, const State &state, const Eigen::Matrix3Xd &y, double stiffnessScale,
                         double dampingScale, Eigen::Matrix3Xd &out);
+// the same over the springs [first, last) alone: a product taken in slices, in order, has the
+// bits of the whole
+void addSpringJacobians(const Model &model, const State &state, const Eigen::Matrix3Xd &y, double stiffnessScale,
+                        double dampingScale, Eigen::Matrix3Xd &out, int first, int last);
 
 }  // namespace core

@@ -48,20 +48,6 @@ void addZeroLengthDampingAcross(const Model &model, const State &state, const Ei
     }
 }
 
-// S y = M^-½ K M^-½ y, with pinned particles (inverse mass 0) left out
-void applyScaled(const Model &model, const State &state, const Eigen::VectorXd &rootInvMass,
-                 const Eigen::Matrix3Xd &y, Eigen::Matrix3Xd &scaled, Eigen::Matrix3Xd &out, bool damping)
-{
-    scaled.noalias() = y * rootInvMass.asDiagonal();
-    out.setZero();
-    addSpringJacobians(model, state, scaled, damping ? 0.0 : 1.0, damping ? 1.0 : 0.0, out);
-    if (damping) {
-        addZeroLengthDampingAcross(model, state, scaled, out);
-        out += model.viscosity * scaled;
-    }
-    out = out * rootInvMass.asDiagonal();
-}
-
 std::string format(double value, int digits = 2)
 {
     std::ostringstream out;
@@ -175,17 +161,59 @@ StabilityAnalysis::StabilityAnalysis(const Model &model, const State &state) : m
 bool StabilityAnalysis::run(int iterations)
 {
     for (int count = 0; count < iterations && !m_done; ++count)
-        iterate();
+        while (!slice()) {
+        }
     return m_done;
 }
 
-void StabilityAnalysis::iterate()
+bool StabilityAnalysis::runSlice()
 {
+    if (!m_done)
+        slice();
+    return m_done;
+}
+
+// works on the product of m_y with M^-½ K M^-½ (damping: M^-½ C M^-½) into m_next, the springs in
+// the order of one whole product so that the bits are the same; true once it is complete
+bool StabilityAnalysis::productSlice(bool damping)
+{
+    if (m_nextSpring == 0) {
+        m_scaled.noalias() = m_y * m_rootInvMass.asDiagonal();
+        m_next.setZero();
+    }
+    const int springs = m_model.springCount();
+    const int end = springs - m_nextSpring > kSliceSprings ? m_nextSpring + kSliceSprings : springs;
+    addSpringJacobians(m_model, m_state, m_scaled, damping ? 0.0 : 1.0, damping ? 1.0 : 0.0, m_next, m_nextSpring, end);
+    m_nextSpring = end;
+    if (end < springs)
+        return false;
+    m_nextSpring = 0;
+    if (damping) {
+        addZeroLengthDampingAcross(m_model, m_state, m_scaled, m_next);
+        m_next += m_model.viscosity * m_scaled;
+    }
+    m_next = m_next * m_rootInvMass.asDiagonal();
+    return true;
+}
+
+// a slice of the analysis; true when it ended a product of the power iteration, or the analysis
+bool StabilityAnalysis::slice()
+{
+    if (m_dampingProduct) {
+        // the damping rate of the top mode: its Rayleigh quotient of M^-½ C M^-½
+        if (!productSlice(true))
+            return false;
+        m_limit.dampingRate = std::max(0.0, m_y.cwiseProduct(m_next).sum());
+        m_done = true;
+        return true;
+    }
+
     // one product with M^-½ K M^-½, until the Rayleigh quotient has settled tightly or the passes
     // run out
     bool settled = m_iteration >= m_passes;
     if (!settled) {
-        applyScaled(m_model, m_state, m_rootInvMass, m_y, m_scaled, m_next, false);
+        if (!productSlice(false))
+            return false;
         const double rayleigh = m_y.cwiseProduct(m_next).sum();
         const double norm = m_next.norm();
         if (!(norm > 0.0)) {
@@ -202,7 +230,7 @@ void StabilityAnalysis::iterate()
         }
     }
     if (!settled)
-        return;
+        return true;
     m_limit.omegaMax = m_limit.converged ? std::sqrt(std::max(m_lambda, 0.0)) : m_limit.gershgorinOmega;
     // The Rayleigh quotient only ever underestimates λ_max: a settled quotient can still be a few
     // per cent low where the top eigenvalues lie close together (a 20-particle network: ω 2.2% low,
@@ -214,10 +242,9 @@ void StabilityAnalysis::iterate()
                              : m_limit.gershgorinOmega;
     m_limit.omegaBound = std::max(m_limit.omegaBound, m_limit.omegaMax);
 
-    // the damping rate of that mode: its Rayleigh quotient of M^-½ C M^-½
-    applyScaled(m_model, m_state, m_rootInvMass, m_y, m_scaled, m_next, true);
-    m_limit.dampingRate = std::max(0.0, m_y.cwiseProduct(m_next).sum());
-    m_done = true;
+    // the damping's product comes next, in slices too (within the same run() iteration)
+    m_dampingProduct = true;
+    return false;
 }
 
 StabilityLimit stabilityLimit(const Model &model, const State &state)

@@ -37,19 +37,25 @@ StabilityLimit stabilityLimit(const Model &model, const State &state);
 
 // The same analysis a few iterations at a time, so that the editor can spread it between the
 // steps of a large scene (a 200 × 200 cloth takes as long as a dozen steps) and stop it for
-// waiting messages: run() as often as wanted, then limit(); the result has the same bits as
+// waiting messages: run() or runSlice() as often as wanted, then limit(); the result has the same bits as
 // stabilityLimit's. It keeps a copy of the state it linearises at; the model must outlive it.
 class StabilityAnalysis {
 public:
     StabilityAnalysis(const Model &model, const State &state);
     // at most `iterations` more products of the power iteration; true once the limit is known
     bool run(int iterations);
+    // one slice of the work: up to kSliceSprings springs of a product (one of 6·10⁶ springs took a
+    // quarter of a second, too long for a Pause to wait), or the end of one; true once the limit
+    // is known
+    bool runSlice();
+    static constexpr int kSliceSprings = 1 << 16;
     bool done() const { return m_done; }
     // the limit, once done()
     const StabilityLimit &limit() const { return m_limit; }
 
 private:
-    void iterate();
+    bool slice();
+    bool productSlice(bool damping);
 
     const Model &m_model;
     State m_state;
@@ -59,6 +65,8 @@ private:
     double m_residual = 0.0;  // ‖S y − ρ y‖ of the last pass
     int m_iteration = 0;
     int m_passes = 0;  // the most passes this model's size allows
+    int m_nextSpring = 0;  // where the product in progress goes on
+    bool m_dampingProduct = false;  // settled: the last product, the damping's, is in progress
     bool m_done = false;
     StabilityLimit m_limit;
 };

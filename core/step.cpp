@@ -15,13 +15,6 @@ bool stopped(const State &state, Workspace &work)
     return false;
 }
 
-// asked to stop: the step is not taken (the caller restores where it began)
-bool interrupted(Workspace &work)
-{
-    work.interrupted = true;
-    return false;
-}
-
 }  // namespace
 
 bool step(const Model &model, State &state, Workspace &work)
@@ -34,8 +27,8 @@ bool step(const Model &model, State &state, Workspace &work)
     const double h = model.subStep();
 
     for (int sub = 0; sub < model.substeps; ++sub) {
-        if (interruptRequested(work))
-            return interrupted(work);
+        if (stopsHere(work))  // asked to stop: the step is not taken (the caller restores where it began)
+            return false;
         // 1 and 2. forces at (x, v) and integration of every free particle, by the path the plan
         // chose when the model was compiled
         bool freeChecked = false;  // whether the update checked the free particles' new values
@@ -51,10 +44,11 @@ bool step(const Model &model, State &state, Workspace &work)
             timed(profile, Stage::Integrate, true, [&] { freeChecked = integrate(model, state, work, h); });
             if (work.blowup)  // an adaptive integrator that could not cover the sub-step
                 return stopped(state, work);
-            if (work.interrupted)  // an adaptive integrator asked to stop among its trials
-                return false;
             break;
         }
+        // (an adaptive integrator may have stopped among its trials already)
+        if (stopsHere(work))
+            return false;
 
         // 3. contacts (they move particles after the integrator's check): the iterative solver, or
         // the handout's projections, particles against planes, then pairs
@@ -62,6 +56,8 @@ bool step(const Model &model, State &state, Workspace &work)
             freeChecked = false;
         if (plan.contactSolver) {
             timed(profile, Stage::Contacts, true, [&] { solveContacts(model, state, work); });
+            if (work.interrupted)  // it stops between its own stages too
+                return false;
         } else {
             timed(profile, Stage::PlaneCollisions, plan.planeCollisions, [&] { collidePlanes(model, state, work); });
             timed(profile, Stage::ParticleCollisions, plan.particleCollisions,

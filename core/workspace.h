@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <atomic>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -39,17 +40,37 @@ struct Workspace {
     // cleared (a restored state clears it)
     std::optional<Blowup> blowup;
 
-    // Raised from another thread to stop a long step between two sub-steps (null: a step always
-    // runs to its end). The step then returns false with `interrupted` set and the state half-way
-    // through: the caller restores the state it began from, so that a step is whole or not taken.
+    // Raised from another thread to stop a long step (null: a step always runs to its end): it
+    // stops between two sub-steps, and between the stages of one (stopsHere), so that a sub-step of
+    // 10⁶ particles does not hold up a Pause for its whole length. The step then returns false with
+    // `interrupted` set and the state half-way through: the caller restores the state it began
+    // from, so that a step is whole or not taken.
     const std::atomic<bool> *interrupt = nullptr;
     bool interrupted = false;
+    // the stop points the steps passed: how finely a step can be cut
+    std::uint64_t stopPoints = 0;
+    // the stop point (a value of stopPoints) at which a step stops as if asked to: for the tests
+    // that cut a step at each of its stop points in turn; 0 in a run
+    std::uint64_t stopAtPoint = 0;
 };
 
 // whether the step should stop where it is (a relaxed load: the flag orders nothing else)
 inline bool interruptRequested(const Workspace &work)
 {
     return work.interrupt && work.interrupt->load(std::memory_order_relaxed);
+}
+
+// a place where a step may stop: true, with `interrupted` set, when it is asked to. Whatever the
+// step has done to the state is undone by the caller; the workspace's scratch is rebuilt by the
+// next sub-step
+inline bool stopsHere(Workspace &work)
+{
+    if (work.interrupted)
+        return true;
+    work.stopPoints += 1;
+    if (interruptRequested(work) || work.stopPoints == work.stopAtPoint)
+        work.interrupted = true;
+    return work.interrupted;
 }
 
 }  // namespace core

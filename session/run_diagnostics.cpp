@@ -99,23 +99,24 @@ bool RunDiagnostics::updateStability(const std::shared_ptr<const core::Model> &m
             return false;
         m_analysis = std::make_unique<core::StabilityAnalysis>(*model, state);
         m_stabilityCredit = 0.0;
-        m_iterationSeconds = 0.0;
+        m_sliceSeconds = 0.0;
     }
     if (!m_analysis)
         return false;
 
     // while running, what the steps have paid for, and the least slice (so that a small scene's
-    // analysis ends within a tick or two), an iteration only where the last one fits in what is
-    // left; paused, to the end. Either way it stops as soon as messages wait (one product of
-    // 6·10⁶ springs takes a quarter of a second), to go on next time
+    // analysis ends within a tick or two), a slice only where the last one fits in what is left;
+    // paused, to the end. Either way it stops as soon as messages wait, to go on next time: a
+    // slice is a share of one product's springs (one product of 6·10⁶ springs takes a quarter
+    // of a second)
     const double budget = m_stabilityCredit + kLeastStabilitySlice;
     const auto start = Clock::now();
     while (!(m_interrupt && m_interrupt->load(std::memory_order_relaxed))) {
-        if (running && secondsSince(start) + m_iterationSeconds > budget)
+        if (running && secondsSince(start) + m_sliceSeconds > budget)
             break;
         const auto iteration = Clock::now();
-        const bool done = m_analysis->run(1);
-        m_iterationSeconds = secondsSince(iteration);
+        const bool done = m_analysis->runSlice();
+        m_sliceSeconds = secondsSince(iteration);
         if (done)
             break;
     }

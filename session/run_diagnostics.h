@@ -117,7 +117,7 @@ private:
     std::shared_ptr<const core::Model> m_analysedModel;
     std::unique_ptr<core::StabilityAnalysis> m_analysis;
     double m_stabilityCredit = 0.0;  // s of computing the steps have paid the analysis, less what it took
-    double m_iterationSeconds = 0.0;  // what its latest product took
+    double m_sliceSeconds = 0.0;  // what its latest slice took
     const std::atomic<bool> *m_interrupt = nullptr;
     std::string m_pairSpeedWarning;
 

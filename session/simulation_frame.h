@@ -40,6 +40,11 @@ struct SimulationFrame {
     std::shared_ptr<const core::Model> model;      // the model the snapshot was stepped with
     std::shared_ptr<const core::SceneDesc> scene;  // the scene that model was compiled from
     std::uint64_t appliedMessage = 0;  // sequence number of the newest message applied before this frame
+    // the step of the state the run shows now: the snapshot's, unless the snapshot is behind it (a
+    // frame answering a message on a scene whose snapshot is slow to make goes with the snapshot
+    // before, and the next frame brings the snapshot of this step)
+    std::uint64_t shownStep = 0;
+    bool snapshotBehind = false;
     bool running = false;
     // steps asked for (Step) that later messages cut short and that are still to come: the
     // snapshot is not yet the step asked for

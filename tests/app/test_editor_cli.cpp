@@ -21,19 +21,22 @@ struct Line {
     double frames = 0.0;
     double framesPerSecond = 0.0;
     double pauseSeconds = 0.0;
+    double shownSeconds = 0.0;
 };
 
-// "springlab: 10.003 s: 962 steps (96.17 steps/s), 51 frames (5.10 frames/s), paused in 0.103 s"
+// "springlab: 10.003 s: 962 steps (96.17 steps/s), 51 frames (5.10 frames/s), paused in 0.103 s,
+// shown in 0.103 s"
 std::optional<Line> parseLine(const QByteArray &out)
 {
     static const QRegularExpression line(
-        uR"(^springlab: ([0-9.]+) s: ([0-9]+) steps \(([0-9.]+) steps/s\), ([0-9]+) frames \(([0-9.]+) frames/s\), paused in ([0-9.]+) s$)"_s,
+        uR"(^springlab: ([0-9.]+) s: ([0-9]+) steps \(([0-9.]+) steps/s\), ([0-9]+) frames \(([0-9.]+) frames/s\), paused in ([0-9.]+) s, shown in ([0-9.]+) s$)"_s,
         QRegularExpression::MultilineOption);
     const QRegularExpressionMatch match = line.match(QString::fromUtf8(out));
     if (!match.hasMatch())
         return std::nullopt;
     return Line{match.captured(1).toDouble(), match.captured(2).toDouble(), match.captured(3).toDouble(),
-                match.captured(4).toDouble(), match.captured(5).toDouble(), match.captured(6).toDouble()};
+                match.captured(4).toDouble(), match.captured(5).toDouble(), match.captured(6).toDouble(),
+                match.captured(7).toDouble()};
 }
 
 }  // namespace
@@ -91,6 +94,8 @@ void TestEditorCli::playsForTheTimeGivenAndSaysHowFast()
     // the editor never runs ahead of real time: 0.5 ms steps, so at most 2000 a second (and the
     // one tick of up to 0.1 s that may end after the clock stopped)
     QVERIFY2(line->steps * 0.0005 <= line->seconds + 0.1, run.out.constData());
+    // the picture of the step it paused at comes with the answer or after it, never before
+    QVERIFY2(line->shownSeconds >= line->pauseSeconds, run.out.constData());
 }
 
 void TestEditorCli::withoutPlayNothingSteps()

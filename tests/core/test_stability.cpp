@@ -270,6 +270,26 @@ void TestStability::analysisInSlicesIsTheWhole()
     early.run(1000);
     QCOMPARE(early.limit().omegaMax, whole.omegaMax);
 
+    // a product of more springs than a slice holds is itself taken in slices, with the same bits
+    core::ClothOptions big;
+    big.rows = big.cols = 110;
+    test::Sim cloth = test::compile(core::makeCloth(big));
+    QVERIFY(cloth.model->springCount() > core::StabilityAnalysis::kSliceSprings);
+    const core::StabilityLimit bigWhole = core::stabilityLimit(*cloth.model, cloth.state);
+    core::StabilityAnalysis bigSliced(*cloth.model, cloth.state);
+    int bigSlices = 1;
+    while (!bigSliced.runSlice())
+        ++bigSlices;
+    core::StabilityAnalysis byProduct(*cloth.model, cloth.state);
+    int products = 1;
+    while (!byProduct.run(1))
+        ++products;
+    QVERIFY2(bigSlices >= 2 * products, qPrintable(QStringLiteral("%1 slices, %2 products").arg(bigSlices).arg(products)));
+    QCOMPARE(bigSliced.limit().omegaMax, bigWhole.omegaMax);
+    QCOMPARE(bigSliced.limit().omegaBound, bigWhole.omegaBound);
+    QCOMPARE(bigSliced.limit().dampingRate, bigWhole.dampingRate);
+    QCOMPARE(byProduct.limit().omegaMax, bigWhole.omegaMax);
+
     // nothing to analyse: done at once
     test::Sim empty = test::compile(core::SceneDesc{});
     QVERIFY(core::StabilityAnalysis(*empty.model, empty.state).done());

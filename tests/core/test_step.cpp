@@ -23,6 +23,7 @@ private slots:
     void sameSceneSameBits();
     void interruptStopsBeforeASubStep_data();
     void interruptStopsBeforeASubStep();
+    void aStepCutAtAnyStopPointIsRetakenToTheBit();
 };
 
 namespace {
@@ -253,6 +254,49 @@ void TestStep::interruptStopsBeforeASubStep()
     }
     QVERIFY(cut.state.position == plain.state.position && cut.state.velocity == plain.state.velocity);
     QCOMPARE(cut.state.step, 20u);
+}
+
+void TestStep::aStepCutAtAnyStopPointIsRetakenToTheBit()
+{
+    // a pile resting on the floor, with the iterative contact solver's every stage at work: a step
+    // may stop between the stages of a sub-step, not only between sub-steps (a sub-step of 10⁶
+    // particles took 0.2 s, too long for a Pause to wait). Cut at each stop point in turn and put
+    // back as the runner does, the step taken again has the bits of a step never cut
+    core::SceneDesc scene;
+    scene.name = "pile";
+    scene.settings.substeps = 3;
+    scene.planes = {core::PlaneDesc{{0, 1, 0}, 0.0}};
+    for (int x = 0; x < 3; ++x)
+        for (int z = 0; z < 3; ++z)
+            scene.particles.push_back(test::particle({0.2 * x, 0.1, 0.2 * z}, {0.05 * x, -0.2, 0.0}));
+    scene.particles.push_back(test::particle({0.1, 0.3, 0.1}, {0.0, -1.0, 0.0}));  // on top, still falling
+    scene.springs.push_back(core::SpringDesc{0, 1, 100.0, 0.5, 0.2});
+    test::Sim plain = test::compile(scene);
+    QVERIFY(plain.step());
+    QVERIFY(plain.model->plan.contactSolver);
+    QVERIFY(!plain.work.contactSolver.contacts.empty());  // resting contacts: every stage ran
+    const std::uint64_t points = plain.work.stopPoints;
+    // in each sub-step: at its top, after its integration; before the impacts' broad phase, after
+    // it and after the impacts; before the resting contacts' broad phase, after it, after gathering
+    // them, after sorting them and after their velocities
+    QCOMPARE(points, 10u * 3u);
+
+    for (std::uint64_t at = 1; at <= points; ++at) {
+        test::Sim cut = test::compile(scene);
+        const core::State before = cut.state;
+        cut.work.stopAtPoint = at;
+        QVERIFY(!cut.step());
+        QVERIFY(cut.work.interrupted);
+        QVERIFY(!cut.work.blowup);
+        QCOMPARE(cut.work.stopPoints, at);
+        cut.state = before;
+        cut.work.stopAtPoint = 0;
+        QVERIFY(cut.step());
+        QVERIFY2(cut.state.position == plain.state.position && cut.state.velocity == plain.state.velocity &&
+                     cut.state.contactImpulses == plain.state.contactImpulses,
+                 qPrintable(QStringLiteral("cut at stop point %1").arg(at)));
+        QCOMPARE(cut.state.step, 1u);
+    }
 }
 
 QTEST_APPLESS_MAIN(TestStep)

@@ -91,9 +91,13 @@ void SimulationWorker::tick()
         }
     m_appliedMessage = batch.lastSequence;
 
-    // slow steps come next: the messages are answered first, not a step later
+    // slow steps come next: the messages are answered first, not a step later (and when that
+    // answer had to go with the snapshot before it, the next frame brings the new one at once,
+    // ahead of the steps and the diagnostics, which may take seconds on such a scene)
     if (changed && m_runner.stepsAreSlow()) {
-        publish();
+        publish(Frame::Answering);
+        if (m_snapshotStale)
+            publish();
         changed = false;
     }
 
@@ -160,7 +164,17 @@ void SimulationWorker::tick()
         publish();
 }
 
-void SimulationWorker::publish()
+void SimulationWorker::makeSnapshot()
+{
+    QElapsedTimer clock;
+    clock.start();
+    m_snapshot = m_runner.snapshot();
+    m_snapshotModel = m_runner.shownModel();
+    m_snapshotStale = false;
+    m_snapshotSeconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
+}
+
+void SimulationWorker::publish(Frame kind)
 {
     m_published.start();
     m_unshownSteps = false;
@@ -169,16 +183,22 @@ void SimulationWorker::publish()
     frame->model = m_runner.shownModel();
     frame->scene = m_runner.shownScene();
     // a new snapshot only when what it shows changed: one of 10⁶ particles and 6·10⁶ springs takes
-    // half a second to make, which would hold up the answer to a Pause
-    const bool sameState = !m_snapshotStale && m_snapshot && frame->model == m_snapshotModel &&
-                           m_snapshot->step == m_runner.shownState().step &&
-                           m_snapshot->time == m_runner.shownState().time;
+    // a sixth of a second or more to make, which would hold up the answer to a Pause
+    const core::State &shown = m_runner.shownState();
+    const bool sameModel = m_snapshot && frame->model == m_snapshotModel;
+    const bool sameState =
+        !m_snapshotStale && sameModel && m_snapshot->step == shown.step && m_snapshot->time == shown.time;
     if (!sameState) {
-        m_snapshot = m_runner.snapshot();
-        m_snapshotModel = frame->model;
-        m_snapshotStale = false;
+        if (kind == Frame::Answering && sameModel && m_snapshotSeconds > m_slowSnapshotSeconds) {
+            // the answer goes now with the snapshot before; the new one comes in the next frame
+            m_snapshotStale = true;
+            frame->snapshotBehind = true;
+        } else {
+            makeSnapshot();
+        }
     }
     frame->snapshot = m_snapshot;
+    frame->shownStep = shown.step;
     frame->appliedMessage = m_appliedMessage;
     frame->running = m_runner.isRunning();
     frame->stepsOwed = m_runner.stepsOwed();

@@ -5,7 +5,10 @@
 // Only this object, on its thread, touches the core::State. A frame that answers a message is
 // published at once; one that only brings new steps waits for the pace the window draws at
 // (frameIntervalNs), since building a snapshot of a large scene nobody will see costs the run; and
-// a frame that shows the same state as the one before reuses its snapshot.
+// a frame that shows the same state as the one before reuses its snapshot. Where a snapshot is slow
+// to make (10⁶ particles: a sixth of a second and more), the frame that answers a message goes
+// with the snapshot before it, marked behind, and the snapshot of the new state follows in the
+// same tick: a Pause is answered when the step stops, not when its picture is ready.
 
 #include "session/messages.h"
 #include "session/latest_mailbox.h"
@@ -34,6 +37,8 @@ public:
     static constexpr double kStepBudgetSeconds = 0.05;
     // ms between ticks while running
     static constexpr int kTickIntervalMs = 16;
+    // a snapshot that took longer than this (s) is made after the frame answering a message, not before
+    static constexpr double kSlowSnapshotSeconds = 0.02;
 
     SimulationWorker(MessageQueue &messages, ReplyQueue &replies, LatestMailbox<SimulationFrame> &mailbox);
 
@@ -46,6 +51,9 @@ public:
     // the shortest time between two frames that bring nothing but new steps (ns), set by the UI
     // side to the pace it draws at; a frame that answers a message goes at once
     std::atomic<std::int64_t> &frameIntervalNs() { return m_frameIntervalNs; }
+    // how long a snapshot may take before a frame answering a message goes without it
+    // (kSlowSnapshotSeconds); set before the worker runs (the tests set 0 to see every answer go first)
+    void setSlowSnapshotSeconds(double seconds) { m_slowSnapshotSeconds = seconds; }
 
 protected:
     void customEvent(QEvent *event) override;
@@ -61,7 +69,12 @@ signals:
 private:
     void wake();
     void tick();
-    void publish();
+    // a frame of where the run is; answering: it answers messages, and goes at once even if its
+    // snapshot must wait (kSlowSnapshotSeconds)
+    enum class Frame { Regular, Answering };
+    void publish(Frame kind = Frame::Regular);
+    // the snapshot of the state shown, timed for kSlowSnapshotSeconds
+    void makeSnapshot();
 
     MessageQueue &m_messages;
     ReplyQueue &m_replies;
@@ -80,6 +93,8 @@ private:
     std::shared_ptr<const core::Snapshot> m_snapshot;
     std::shared_ptr<const core::Model> m_snapshotModel;
     bool m_snapshotStale = true;
+    double m_snapshotSeconds = 0.0;  // how long the latest took to make
+    double m_slowSnapshotSeconds = kSlowSnapshotSeconds;
 
     // the rates, over the window m_window times
     QElapsedTimer m_window;

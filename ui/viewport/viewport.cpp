@@ -148,6 +148,10 @@ QSurfaceFormat Viewport::requestedFormat()
 
 void Viewport::setSnapshot(std::shared_ptr<const core::Snapshot> snapshot)
 {
+    // a frame that answers a message with the snapshot already shown (a Pause): nothing to draw
+    // again, which on a software renderer at 10⁶ particles would hold the window for seconds
+    if (snapshot == m_snapshot)
+        return;
     m_snapshot = std::move(snapshot);
     m_positionsStale = true;
     refreshSurface();

@@ -14,13 +14,15 @@ namespace ui {
 QString TimedPlay::reportText(const Figures &figures)
 {
     const double seconds = figures.seconds > 0.0 ? figures.seconds : 1.0;
-    return QStringLiteral("springlab: %1 s: %2 steps (%3 steps/s), %4 frames (%5 frames/s), paused in %6 s")
+    return QStringLiteral(
+               "springlab: %1 s: %2 steps (%3 steps/s), %4 frames (%5 frames/s), paused in %6 s, shown in %7 s")
         .arg(figures.seconds, 0, 'f', 3)
         .arg(figures.steps)
         .arg(double(figures.steps) / seconds, 0, 'f', 2)
         .arg(figures.frames)
         .arg(double(figures.frames) / seconds, 0, 'f', 2)
-        .arg(figures.pauseSeconds, 0, 'f', 3);
+        .arg(figures.pauseSeconds, 0, 'f', 3)
+        .arg(figures.shownSeconds, 0, 'f', 3);
 }
 
 TimedPlay::TimedPlay(MainWindow &window, bool play, double exitAfterSeconds, QObject *parent)
@@ -53,15 +55,23 @@ void TimedPlay::frameChanged()
         return;
     if (!m_startKnown) {
         m_startKnown = true;
-        m_startStep = frame->snapshot->step;
+        m_startStep = frame->shownStep;
     }
-    m_lastStep = frame->snapshot->step;
+    m_lastStep = frame->shownStep;
     if (!m_stopping || frame->appliedMessage < m_pauseMessage)
         return;
 
-    // the pause is in: the steps up to it, against the time up to when it was asked for
-    m_figures.steps = m_lastStep > m_startStep ? m_lastStep - m_startStep : 0;
-    m_figures.pauseSeconds = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9 - m_figures.seconds;
+    // the pause is in: the steps up to it, against the time up to when it was asked for; then the
+    // frame with the picture of the step it stopped at (the same frame unless its snapshot was slow)
+    const double sincePause = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9 - m_figures.seconds;
+    if (!m_pauseAnswered) {
+        m_pauseAnswered = true;
+        m_figures.steps = m_lastStep > m_startStep ? m_lastStep - m_startStep : 0;
+        m_figures.pauseSeconds = sincePause;
+    }
+    if (frame->snapshotBehind)
+        return;
+    m_figures.shownSeconds = sincePause;
     const QByteArray line = reportText(m_figures).toUtf8();
     std::printf("%s\n", line.constData());
     std::fflush(stdout);

@@ -1,8 +1,9 @@
 #pragma once
 // TimedPlay: `springlab SCENE --play --exit-after SECONDS`. With play it starts the run as soon as
 // the scene is open; after SECONDS it pauses, waits for the frame that answers the pause, prints
-// one line with the steps taken and the frames drawn in that time, and how long the Pause took
-// to come back as a frame, and ends the application. The
+// one line with the steps taken and the frames drawn in that time, how long the Pause took to
+// come back as a frame and how long until a frame brought the snapshot of the step it stopped at
+// (later only where a snapshot is slow to make: SimulationWorker), and ends the application. The
 // clock runs from the start (the Play) to the Pause, so the figures are the editor's as a user
 // sees it, drawing included: the side-by-side benchmark (bench/editor_throughput.cpp) sets them
 // beside springlab-sim's on the same scene.
@@ -26,10 +27,11 @@ public:
         std::uint64_t steps = 0;  // steps taken in it
         std::uint64_t frames = 0; // frames the view drew in it
         double pauseSeconds = 0.0;  // from the Pause to the frame that answers it
+        double shownSeconds = 0.0;  // from the Pause to the frame with the snapshot of its step
     };
 
     // the line printed at the end, e.g. "springlab: 10.003 s: 962 steps (96.17 steps/s), 51 frames
-    // (5.10 frames/s), paused in 0.103 s"
+    // (5.10 frames/s), paused in 0.103 s, shown in 0.103 s"
     static QString reportText(const Figures &figures);
 
     TimedPlay(MainWindow &window, bool play, double exitAfterSeconds, QObject *parent = nullptr);
@@ -52,6 +54,7 @@ private:
     std::uint64_t m_lastStep = 0;
     Figures m_figures;
     bool m_stopping = false;
+    bool m_pauseAnswered = false;
 };
 
 }  // namespace ui

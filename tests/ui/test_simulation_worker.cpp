@@ -1,0 +1,124 @@
+// SimulationWorker on the test's own thread, every frame it publishes taken as it comes: a frame
+// answering a message on a scene whose snapshot is slow to make goes at once with the snapshot
+// before it, marked behind, and the snapshot of the state it stopped at follows in the same tick;
+// where the snapshot is quick, the answer brings it. Waits are on frames, never fixed sleeps.
+
+#include "ui/simulation/simulation_worker.h"
+
+#include "core/generators.h"
+
+#include <QtTest>
+
+#include <memory>
+#include <vector>
+
+namespace {
+
+// a 32 × 32 cloth whose steps are slow (5000 sub-steps), so that messages are answered first
+std::shared_ptr<const core::SceneDesc> slowCloth()
+{
+    core::ClothOptions options;
+    options.rows = options.cols = 32;
+    auto scene = std::make_shared<core::SceneDesc>(core::makeCloth(options));
+    scene->settings.timeStep = 0.01;
+    scene->settings.substeps = 5000;
+    return scene;
+}
+
+// the worker with its queues, on this thread, keeping every frame it publishes
+struct Worker {
+    ui::MessageQueue messages;
+    ui::ReplyQueue replies;
+    ui::LatestMailbox<ui::SimulationFrame> mailbox;
+    ui::SimulationWorker worker{messages, replies, mailbox};
+    std::vector<std::shared_ptr<const ui::SimulationFrame>> frames;
+
+    Worker()
+    {
+        QObject::connect(&worker, &ui::SimulationWorker::frameReady, &worker, [this] {
+            while (auto frame = mailbox.take())
+                frames.push_back(std::move(frame));
+        });
+    }
+
+    // sends a message and waits for the first frame that has applied it; its index in frames
+    std::optional<std::size_t> send(ui::Message message)
+    {
+        const std::uint64_t sequence = messages.push(std::move(message));
+        ui::SimulationWorker::postWake(&worker);
+        std::optional<std::size_t> at;
+        (void)QTest::qWaitFor(
+            [&] {
+                for (std::size_t i = 0; i < frames.size() && !at; ++i)
+                    if (frames[i]->appliedMessage >= sequence)
+                        at = i;
+                return at.has_value();
+            },
+            30000);
+        return at;
+    }
+};
+
+}  // namespace
+
+class TestSimulationWorker : public QObject {
+    Q_OBJECT
+
+private slots:
+    void pauseOnASlowSnapshotIsAnsweredBeforeItsPicture();
+    void pauseOnAQuickSnapshotBringsIt();
+};
+
+void TestSimulationWorker::pauseOnASlowSnapshotIsAnsweredBeforeItsPicture()
+{
+    // every snapshot counts as slow; frames of new steps alone are never due, so the steps run
+    // ahead of the snapshot last shown
+    Worker w;
+    w.worker.setSlowSnapshotSeconds(0.0);
+    QVERIFY(w.send(ui::SetSceneEdit{slowCloth(), ui::SceneChange::Replace}));
+    w.worker.frameIntervalNs().store(std::int64_t(3600) * 1000000000, std::memory_order_relaxed);
+    QVERIFY(w.send(ui::Play{}));
+    QTest::qWait(300);  // ticks of the worker's timer: steps taken, none shown
+
+    const std::size_t before = w.frames.size();
+    const std::optional<std::size_t> answer = w.send(ui::Pause{});
+    QVERIFY(answer);
+    QVERIFY(*answer >= before);
+    const auto &paused = w.frames[*answer];
+    QVERIFY(!paused->running);
+    QVERIFY(paused->snapshotBehind);
+    QVERIFY2(paused->shownStep > paused->snapshot->step, "steps were taken since the last snapshot");
+    QCOMPARE(paused->snapshot.get(), w.frames[*answer - 1]->snapshot.get());  // the one before, not a new one
+
+    // the next frame, in the same tick, brings the picture of the step the run stopped at
+    QVERIFY(QTest::qWaitFor([&] { return w.frames.size() > *answer + 1; }, 30000));
+    const auto &shown = w.frames[*answer + 1];
+    QVERIFY(!shown->snapshotBehind);
+    QVERIFY(!shown->running);
+    QCOMPARE(shown->appliedMessage, paused->appliedMessage);
+    QCOMPARE(shown->snapshot->step, paused->shownStep);
+    QCOMPARE(shown->shownStep, paused->shownStep);
+}
+
+void TestSimulationWorker::pauseOnAQuickSnapshotBringsIt()
+{
+    // the same run with a snapshot quicker than the threshold (set to 10 s here, so that a busy
+    // machine cannot push the 32 × 32 cloth's over it): the answer brings the snapshot of the step
+    // it stopped at itself
+    Worker w;
+    w.worker.setSlowSnapshotSeconds(10.0);
+    QVERIFY(w.send(ui::SetSceneEdit{slowCloth(), ui::SceneChange::Replace}));
+    w.worker.frameIntervalNs().store(std::int64_t(3600) * 1000000000, std::memory_order_relaxed);
+    QVERIFY(w.send(ui::Play{}));
+    QTest::qWait(300);
+    const std::optional<std::size_t> answer = w.send(ui::Pause{});
+    QVERIFY(answer);
+    const auto &paused = w.frames[*answer];
+    QVERIFY(!paused->running);
+    QVERIFY(!paused->snapshotBehind);
+    QCOMPARE(paused->snapshot->step, paused->shownStep);
+    QVERIFY(paused->shownStep > 0);
+}
+
+QTEST_GUILESS_MAIN(TestSimulationWorker)
+#include "test_simulation_worker.moc"
