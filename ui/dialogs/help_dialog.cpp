@@ -51,6 +51,10 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
     addEntry(tr("Drag tool (5)"),
              tr("Running: hold a particle to pull it toward the cursor. Paused: drag to move the selection (one "
                 "undo step)"));
+    addEntry(tr("Measure tool (6)"),
+             tr("Click one particle, then another, or drag from one to another: a line between them labelled with "
+                "their distance, which follows them while the run plays; the status bar gives the distance with its "
+                "x, y and z parts, and the pair becomes the selection"));
     addEntry(tr("Hover"), tr("What a click would pick is highlighted"));
 
     // files: what the menus do not show
