@@ -125,7 +125,7 @@ void TestTransformDialog::movesRotatesAndScalesAsOneUndoStep()
     const core::SceneDesc before = scene();
     ui::TransformDialog *dialog = open();
     QVERIFY(dialog != nullptr);
-    QCOMPARE(dialog->pivotText(), QStringLiteral("About the centroid of 4 particle(s): (1.25, 0.5, -0.25) m"));
+    QCOMPARE(dialog->pivotText(), QStringLiteral("About the centroid of 4 particles: (1.25, 0.5, -0.25) m"));
 
     // move by (1, 0, 0), a quarter turn about z, twice the size with the rest lengths
     type(dialog, "transform-move-x", QStringLiteral("1"));
@@ -304,7 +304,7 @@ void TestTransformDialog::followsTheSelectionWhileOpen()
 
     // a spring selected: its two ends are transformed
     tools()->setSelection(ui::Selection{{}, {3}});
-    QCOMPARE(dialog->pivotText(), QStringLiteral("About the centroid of 2 particle(s): (3.5, 1.75, 0) m"));
+    QCOMPARE(dialog->pivotText(), QStringLiteral("About the centroid of 2 particles: (3.5, 1.75, 0) m"));
     QVERIFY(dialog->applyButton()->isEnabled());
     const core::SceneDesc before = scene();
     QTest::mouseClick(dialog->applyButton(), Qt::LeftButton);
@@ -313,7 +313,7 @@ void TestTransformDialog::followsTheSelectionWhileOpen()
     QCOMPARE(scene().particles[4].position, (before.particles[4].position + Eigen::Vector3d(0.0, 1.0, 0.0)).eval());
     QCOMPARE(scene().particles[0], before.particles[0]);
     // and the centroid shown follows the edit
-    QCOMPARE(dialog->pivotText(), QStringLiteral("About the centroid of 2 particle(s): (3.5, 2.75, 0) m"));
+    QCOMPARE(dialog->pivotText(), QStringLiteral("About the centroid of 2 particles: (3.5, 2.75, 0) m"));
 
     // Apply again: another step, from where the first left them
     QTest::mouseClick(dialog->applyButton(), Qt::LeftButton);

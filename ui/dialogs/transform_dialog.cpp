@@ -42,6 +42,11 @@ QString vectorText(const Eigen::Vector3d &v)
     return QStringLiteral("(%1, %2, %3)").arg(number(v.x()), number(v.y()), number(v.z()));
 }
 
+QString particlesText(std::size_t count)
+{
+    return count == 1 ? TransformDialog::tr("1 particle") : TransformDialog::tr("%1 particles").arg(count);
+}
+
 // three fields in a row, named transform-<key>-x, -y, -z
 std::array<ValueSpinBox *, 3> fieldRow(QWidget *parent, QFormLayout *form, const QString &label, const char *key,
                                        const SliderScale &scale, double value, const QString &tip)
@@ -88,9 +93,7 @@ QString transformText(std::size_t particles, const SelectionTransform &transform
                                              : TransformDialog::tr("scale ×%1"))
                      .arg(factor);
     }
-    const QString what =
-        particles == 1 ? TransformDialog::tr("1 particle") : TransformDialog::tr("%1 particles").arg(particles);
-    return TransformDialog::tr("Transform %1: %2").arg(what, parts.join(QStringLiteral(", ")));
+    return TransformDialog::tr("Transform %1: %2").arg(particlesText(particles), parts.join(QStringLiteral(", ")));
 }
 
 TransformDialog::TransformDialog(SceneDocument *document, EditTools *tools, QWidget *parent)
@@ -286,8 +289,8 @@ void TransformDialog::refreshPivot()
     const std::vector<int> particles = selectedParticles(m_document->scene(), m_tools->selection());
     m_pivot->setText(particles.empty()
                          ? tr("Nothing selected")
-                         : tr("About the centroid of %n particle(s): %1 m", nullptr, int(particles.size()))
-                               .arg(vectorText(centroid(m_document->scene(), particles))));
+                         : tr("About the centroid of %1: %2 m")
+                               .arg(particlesText(particles.size()), vectorText(centroid(m_document->scene(), particles))));
     check();
 }
 

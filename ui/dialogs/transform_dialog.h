@@ -41,7 +41,7 @@ public:
     std::optional<SelectionTransform> transform() const;
     // why the fields cannot be applied, or why the last Apply was refused; empty when neither
     QString problemText() const;
-    // where the turn and the factor are about: "About the centroid of 4 particles: (1, 0.5, 0) m"
+    // where the turn and the factor are about: "About the centroid of 4 particles: (1.25, 0.5, -0.25) m"
     QString pivotText() const;
 
     QPushButton *applyButton() const { return m_apply; }
