@@ -752,6 +752,16 @@ void TestEditing::measureToolDragsABandWithTheDistance()
     undo()->undo();
     QVERIFY(!tools()->measurement());
     QVERIFY(!tools()->measureLine()->isVisible());
+
+    // deleting a particle renumbers those after it: the measure of 0 to 1 goes with particle 0
+    click(pixelOf(s.particles[0].position));
+    click(pixelOf(s.particles[1].position));
+    QVERIFY(tools()->measurement());
+    tools()->setSelection(ui::Selection{{0}, {}});
+    key(Qt::Key_Delete);
+    QCOMPARE(scene().particles.size(), std::size_t(1));
+    QVERIFY(!tools()->measurement());
+    QVERIFY(!tools()->measureLine()->isVisible());
 }
 
 QTEST_MAIN(TestEditing)

@@ -84,6 +84,7 @@ EditTools::EditTools(Viewport *viewport, SceneDocument *document, SimulationCont
     m_band = new GuideLine(m_viewport);
     m_measureLine = new GuideLine(m_viewport);
     m_measureLine->setDashed(false);
+    m_particleCount = int(m_document->scene().particles.size());
     m_viewport->installEventFilter(this);
     m_viewport->setMouseTracking(true);  // hover
     connect(m_document, &SceneDocument::sceneChanged, this, &EditTools::sceneChanged);
@@ -175,8 +176,10 @@ void EditTools::sceneChanged()
     const int count = int(m_document->scene().particles.size());
     if (m_bandStart >= count)
         setBandStart(-1);
-    if (m_measuredFrom >= count || m_measuredTo >= count)
+    // fewer particles: a deletion may have renumbered the measured pair, so the measure goes
+    if (count < m_particleCount)
         setMeasured(-1, -1);
+    m_particleCount = count;
 }
 
 void EditTools::apply(const QString &text, const std::function<void(core::SceneDesc &)> &edit, const QString &mergeKey)

@@ -182,6 +182,7 @@ private:
     GuideLine *m_measureLine = nullptr;
     int m_measuredFrom = -1;
     int m_measuredTo = -1;
+    int m_particleCount = 0;  // the scene's, as last seen
     int m_grabbed = -1;
     Eigen::Vector3d m_dragPlanePoint = Eigen::Vector3d::Zero();  // the plane the drag moves in
     Eigen::Vector3d m_dragStart = Eigen::Vector3d::Zero();       // where the cursor met it at the press
