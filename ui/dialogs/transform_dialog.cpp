@@ -113,7 +113,7 @@ TransformDialog::TransformDialog(SceneDocument *document, EditTools *tools, QWid
     m_angle->setNonFiniteTypable(true);
     m_angle->setObjectName(QStringLiteral("transform-angle"));
     m_angle->setValue(0.0);
-    m_angle->setToolTip(tr("Degrees, counter-clockwise looking down the axis toward the centroid (right-handed)"));
+    m_angle->setToolTip(tr("Degrees, counter-clockwise as seen from the tip of the axis (right-handed)"));
     m_axisBox = new QComboBox(this);
     m_axisBox->setObjectName(QStringLiteral("transform-axis"));
     m_axisBox->addItems({tr("about x"), tr("about y"), tr("about z"), tr("about the axis typed below")});
@@ -122,7 +122,7 @@ TransformDialog::TransformDialog(SceneDocument *document, EditTools *tools, QWid
     turnRow->addWidget(m_angle);
     turnRow->addWidget(m_axisBox);
     form->addRow(tr("Rotate by (°)"), turnRow);
-    m_axis = fieldRow(this, form, tr("Axis x, y, z"), "axis", kAxisScale, 0.0,
+    m_axis = fieldRow(this, form, tr("Typed axis x, y, z"), "axis", kAxisScale, 0.0,
                       tr("The direction of the rotation axis through the centroid; any length but zero"));
     m_scale = fieldRow(this, form, tr("Scale by x, y, z"), "scale", kFactorScale, 1.0,
                        tr("The factor along each axis about the centroid; negative mirrors, 0 is refused"));
