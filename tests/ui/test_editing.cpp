@@ -4,12 +4,16 @@
 // after. Waits are on the worker's frames, never fixed sleeps.
 
 #include "ui/viewport/edit_tools.h"
+#include "ui/panels/inspector_panel.h"
+#include "ui/panels/status_text.h"
 #include "ui/viewport/guide_line.h"
 #include "ui/window/main_window.h"
 #include "ui/document/scene_document.h"
 #include "ui/simulation/simulation_controller.h"
 #include "ui/viewport/viewport.h"
 
+#include <QLabel>
+#include <QStatusBar>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -68,6 +72,8 @@ private slots:
     void dragWhilePausedMovesTheSelectionAsOneStep();
     void dragWhileRunningPullsTheParticleAndLetsGo();
     void buildTheHandoutNetByMouse();
+    void measureToolShowsTheDistanceAndFollowsTheRun();
+    void measureToolDragsABandWithTheDistance();
 
 private:
     ui::Viewport *viewport() { return m_window->viewport(); }
@@ -614,6 +620,148 @@ void TestEditing::buildTheHandoutNetByMouse()
     while (undo()->canUndo())
         undo()->undo();
     QVERIFY(scene() == empty);
+}
+
+// the number a length label starts with: 2.5 of "2.5 m"
+double labelled(const QString &label)
+{
+    return label.section(QLatin1Char(' '), 0, 0).toDouble();
+}
+
+// particle i's position in a snapshot
+Eigen::Vector3d positionIn(const core::Snapshot &snapshot, int i)
+{
+    const float *p = snapshot.positions.data() + 3 * std::size_t(i);
+    return {double(p[0]), double(p[1]), double(p[2])};
+}
+
+void TestEditing::measureToolShowsTheDistanceAndFollowsTheRun()
+{
+    // two particles still, a third drifting away from particle 0 along x at 0.5 m/s
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({-1.0, 0.0, 0.0}), particle({1.0, 0.5, 0.3}), particle({0.5, 0.0, -1.0})};
+    s.particles[2].velocity = {0.5, 0.0, 0.0};
+    open(s);
+    key(Qt::Key_6);
+    QCOMPARE(tools()->tool(), ui::Tool::Measure);
+    const ui::GuideLine *line = tools()->measureLine();
+    QVERIFY(line && !line->isVisible());
+
+    // a click on one particle, then on another
+    click(pixelOf(s.particles[0].position));
+    QCOMPARE(tools()->measureStart(), 0);
+    QVERIFY(!tools()->measurement());
+    click(pixelOf(s.particles[1].position));
+    const auto measured = tools()->measurement();
+    QVERIFY(measured);
+    QCOMPARE(std::pair(measured->from, measured->to), std::pair(0, 1));
+    const Eigen::Vector3d truth = s.particles[1].position - s.particles[0].position;
+    QVERIFY2((measured->delta - truth).norm() < 1e-6, qPrintable(ui::distanceText(measured->delta)));
+
+    // the view shows a line from one to the other labelled with the distance (to its 4 digits),
+    // drawn
+    QVERIFY(line->isVisible());
+    QVERIFY((line->line().p1() - QPointF(pixelOf(s.particles[0].position))).manhattanLength() < 2.0);
+    QVERIFY((line->line().p2() - QPointF(pixelOf(s.particles[1].position))).manhattanLength() < 2.0);
+    QVERIFY2(std::abs(labelled(line->label()) - truth.norm()) < 5e-4 * truth.norm(), qPrintable(line->label()));
+    QTRY_VERIFY(line->painted() && line->painted()->label == line->label());
+    // the status bar says it with its parts; the pair is the selection, for the inspector
+    const QString status = m_window->statusBar()->currentMessage();
+    QVERIFY2(status.startsWith(QStringLiteral("Particles 0 → 1: %1 m (Δx 2, Δy 0.5, Δz 0.3)")
+                                   .arg(QString::number(truth.norm(), 'g', 6))),
+             qPrintable(status));
+    QCOMPARE(tools()->selection().particles, (std::vector<int>{0, 1}));
+    QCOMPARE(m_window->inspector()->distanceField(QStringLiteral("current"))->text(), ui::distanceText(measured->delta));
+    // measuring changes nothing in the scene
+    QCOMPARE(undo()->count(), 0);
+
+    // measure 0 to the drifting particle, then play: the label follows the run's positions
+    click(pixelOf(s.particles[0].position));
+    click(pixelOf(s.particles[2].position));
+    const double start = tools()->measurement()->delta.norm();
+    const int paints = line->paintCount();
+    key(Qt::Key_F4);
+    QTRY_VERIFY_WITH_TIMEOUT(viewport()->snapshot() && viewport()->snapshot()->time > 0.5, 20000);
+    key(Qt::Key_F4);
+    QTRY_VERIFY(!controller().isRunning());
+    settle();
+    const core::Snapshot &now = *viewport()->snapshot();
+    const double distance = (positionIn(now, 2) - positionIn(now, 0)).norm();
+    QVERIFY2(distance > start + 0.2, qPrintable(QStringLiteral("%1 %2").arg(distance).arg(start)));
+    QVERIFY(std::abs(tools()->measurement()->delta.norm() - distance) < 1e-9);
+    // drawn again with the run, at the distance of the frame shown
+    QTRY_VERIFY2(line->paintCount() > paints && line->painted() &&
+                     std::abs(labelled(line->painted()->label) - distance) < 5e-4 * distance,
+                 qPrintable(line->painted() ? line->painted()->label : QStringLiteral("nothing painted")));
+    QVERIFY((line->line().p2() - QPointF(pixelOf(positionIn(now, 2)))).manhattanLength() < 2.0);
+    QCOMPARE(m_window->inspector()->distanceField(QStringLiteral("current"))->text(),
+             ui::distanceText(positionIn(now, 2) - positionIn(now, 0)));
+    // the scene's initial positions are untouched
+    QVERIFY(scene() == s);
+
+    // another tool, or Escape, puts the measure away
+    key(Qt::Key_1);
+    QVERIFY(!line->isVisible());
+    QVERIFY(!tools()->measurement());
+    key(Qt::Key_6);
+    click(pixelOf(s.particles[0].position));
+    click(pixelOf(s.particles[1].position));
+    QVERIFY(line->isVisible());
+    key(Qt::Key_Escape);
+    QVERIFY(!line->isVisible());
+}
+
+void TestEditing::measureToolDragsABandWithTheDistance()
+{
+    core::SceneDesc s = stillScene();
+    s.particles = {particle({-1.0, 0.0, 0.0}), particle({1.0, 0.5, 0.3})};
+    open(s);
+    key(Qt::Key_6);
+    const ui::GuideLine *band = tools()->springBand();
+
+    // pressed on particle 0 and dragged: a band to the cursor without a label, then over particle
+    // 1 a label with the distance to it
+    const QPoint from = pixelOf(s.particles[0].position);
+    const QPoint to = pixelOf(s.particles[1].position);
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(viewport(), (from + to) / 2 + QPoint(0, 30));
+    QVERIFY(band->isVisible());
+    QVERIFY(band->label().isEmpty());
+    QTest::mouseMove(viewport(), to + QPoint(1, 1));
+    const double truth = (s.particles[1].position - s.particles[0].position).norm();
+    QVERIFY2(std::abs(labelled(band->label()) - truth) < 5e-4 * truth, qPrintable(band->label()));
+
+    // released there: measured, the band gone, the line shown
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to);
+    QVERIFY(!band->isVisible());
+    QVERIFY(tools()->measurement());
+    QCOMPARE(tools()->measurement()->to, 1);
+    QVERIFY(tools()->measureLine()->isVisible());
+
+    // a particle removed by undoing its addition can no longer be measured: the line goes
+    key(Qt::Key_2);
+    key(Qt::Key_Escape);
+    click(viewport()->rect().center() + QPoint(-150, 100));
+    QCOMPARE(scene().particles.size(), std::size_t(3));
+    settle();
+    key(Qt::Key_6);
+    click(pixelOf(s.particles[0].position));
+    click(pixelOf(scene().particles[2].position));
+    QVERIFY(tools()->measurement());
+    QCOMPARE(tools()->measurement()->to, 2);
+    undo()->undo();
+    QVERIFY(!tools()->measurement());
+    QVERIFY(!tools()->measureLine()->isVisible());
+
+    // deleting a particle renumbers those after it: the measure of 0 to 1 goes with particle 0
+    click(pixelOf(s.particles[0].position));
+    click(pixelOf(s.particles[1].position));
+    QVERIFY(tools()->measurement());
+    tools()->setSelection(ui::Selection{{0}, {}});
+    key(Qt::Key_Delete);
+    QCOMPARE(scene().particles.size(), std::size_t(1));
+    QVERIFY(!tools()->measurement());
+    QVERIFY(!tools()->measureLine()->isVisible());
 }
 
 QTEST_MAIN(TestEditing)

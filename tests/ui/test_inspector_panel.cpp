@@ -9,6 +9,7 @@
 #include "ui/panels/inspector_field.h"
 #include "ui/panels/inspector_panel.h"
 #include "ui/panels/inspector_planes.h"
+#include "ui/panels/status_text.h"
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
 #include "ui/simulation/simulation_controller.h"
@@ -107,6 +108,7 @@ private slots:
     void badPlaneValueIsRefused_data();
     void badPlaneValueIsRefused();
     void fieldsFollowUndoAndOtherEdits();
+    void twoParticlesShowTheirDistance();
 
 private:
     ui::InspectorSpinBox *field(const char *key) const { return m_panel->particleField(QLatin1String(key)); }
@@ -729,6 +731,36 @@ void TestInspectorPanel::fieldsFollowUndoAndOtherEdits()
     QCOMPARE(field("mass")->value(), 1.0);
     QCOMPARE(m_panel->planes()->list()->count(), 0);
     QCOMPARE(commands(), 0);
+}
+
+void TestInspectorPanel::twoParticlesShowTheirDistance()
+{
+    // one particle, three, or a spring: no distance
+    select({0});
+    QVERIFY(m_panel->distanceGroup()->isHidden());
+    select({0, 1, 2});
+    QVERIFY(m_panel->distanceGroup()->isHidden());
+    select({}, {0});
+    QVERIFY(m_panel->distanceGroup()->isHidden());
+
+    // two: from the lower index to the higher, initially; the run's value once a snapshot has them
+    select({2, 0});
+    QVERIFY(m_panel->distanceGroup()->isVisible());
+    QCOMPARE(m_panel->distanceGroup()->title(), QStringLiteral("Distance from particle 0 to 2"));
+    QCOMPARE(m_panel->distanceField(QStringLiteral("initial"))->text(), QStringLiteral("1 m (Δx 0, Δy 1, Δz 0)"));
+    QCOMPARE(m_panel->distanceField(QStringLiteral("current"))->text(), QStringLiteral("—"));
+    auto snapshot = std::make_shared<core::Snapshot>();
+    snapshot->positions = {0.0f, 1.0f, 0.0f, 1.0f, 1.0f, 0.0f, 3.0f, 5.0f, 0.0f};
+    snapshot->radii = {0.1f, 0.1f, 0.1f};
+    snapshot->velocities.assign(9, 0.0f);
+    m_panel->showSnapshot(snapshot);
+    QCOMPARE(m_panel->distanceField(QStringLiteral("current"))->text(), QStringLiteral("5 m (Δx 3, Δy 4, Δz 0)"));
+    QCOMPARE(m_panel->distanceField(QStringLiteral("current"))->text(), ui::distanceText({3.0, 4.0, 0.0}));
+
+    // an edit of an initial position shows at once
+    m_document->modify([](core::SceneDesc &scene) { scene.particles[2].position = {0.0, 1.0, -2.0}; },
+                       ui::SceneChange::InitialConditions);
+    QCOMPARE(m_panel->distanceField(QStringLiteral("initial"))->text(), QStringLiteral("2 m (Δx 0, Δy 0, Δz -2)"));
 }
 
 QTEST_MAIN(TestInspectorPanel)

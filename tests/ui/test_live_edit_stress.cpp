@@ -1,12 +1,14 @@
 // Live editing under load: for a while (SPRINGLAB_STRESS_SECONDS, 10 s by default; 60 s in
 // tools/long_tests.sh under ThreadSanitizer) a script of edits arrives through real events while
-// the worker runs: slider keys, particles added, pinned, dragged and deleted by mouse, undo, a
-// save and a scene load, over and over. Every frame the window takes must be one step's (each
-// spring's drawn ends are exactly its particles' drawn positions, nothing from two steps), the
-// worker must keep answering, and no event may take the UI longer than 5 s to handle (a hang).
+// the worker runs: slider keys, particles added, pinned, dragged, measured, turned (Transform
+// Selection) and deleted by mouse, undo, a save and a scene load, over and over. Every frame the
+// window takes must be one step's (each spring's drawn ends are exactly its particles' drawn
+// positions, nothing from two steps), the worker must keep answering, and no event may take the
+// UI longer than 5 s to handle (a hang).
 // How long events take is printed (median, 99th percentile, longest): a figure to read, not a
 // pass mark, since it depends on the machine.
 
+#include "ui/dialogs/transform_dialog.h"
 #include "ui/viewport/edit_tools.h"
 #include "ui/document/document_files.h"
 #include "ui/window/main_window.h"
@@ -17,6 +19,7 @@
 #include "core/validate.h"
 
 #include <QAbstractSlider>
+#include <QDoubleSpinBox>
 #include <QtTest>
 
 #include "editor_fixture.h"
@@ -101,6 +104,11 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
         return pixel->toPoint();
     };
 
+    // Transform Selection, never shown: a small turn and lift of whatever is selected
+    ui::TransformDialog transform(window.document(), tools, &window);
+    transform.findChild<QDoubleSpinBox *>(QStringLiteral("transform-angle"))->setValue(5.0);
+    transform.findChild<QDoubleSpinBox *>(QStringLiteral("transform-move-y"))->setValue(0.01);
+
     std::vector<qint64> handled;  // ms per event
     std::map<QString, qint64> longestOf;  // the longest of each kind of event
     QElapsedTimer total;
@@ -147,6 +155,17 @@ void TestLiveEditStress::scriptedEditsWhileRunning()
                     QTest::mouseMove(viewport, *at + QPoint(20, -15));
                     QTest::mouseRelease(viewport, Qt::LeftButton, {}, *at + QPoint(20, -15));
                 });
+            }
+            // measured from it to the last, which selects the two, then the two turned
+            const auto from = drawnAt((round + i) % particles);
+            const auto to = drawnAt(particles - 1);
+            if (from && to) {
+                timed("measure", [&] {
+                    tools->setTool(ui::Tool::Measure);
+                    QTest::mouseClick(viewport, Qt::LeftButton, {}, *from);
+                    QTest::mouseClick(viewport, Qt::LeftButton, {}, *to);
+                });
+                timed("transform", [&] { transform.apply(); });
             }
             // selected and deleted, then undone every other time
             if (const auto at = drawnAt(particles - 1)) {

@@ -48,7 +48,7 @@ struct KeyPress {
     Qt::KeyboardModifiers modifiers;
 };
 const KeyPress kKeys[] = {
-    {Qt::Key_1, {}}, {Qt::Key_2, {}}, {Qt::Key_3, {}}, {Qt::Key_4, {}}, {Qt::Key_5, {}},
+    {Qt::Key_1, {}}, {Qt::Key_2, {}}, {Qt::Key_3, {}}, {Qt::Key_4, {}}, {Qt::Key_5, {}}, {Qt::Key_6, {}},
     {Qt::Key_F4, {}}, {Qt::Key_F5, {}}, {Qt::Key_T, {}}, {Qt::Key_A, {}}, {Qt::Key_P, {}}, {Qt::Key_F, {}},
     {Qt::Key_Home, {}}, {Qt::Key_Escape, {}}, {Qt::Key_Delete, {}}, {Qt::Key_Backspace, {}},
     {Qt::Key_Left, {}}, {Qt::Key_Right, {}}, {Qt::Key_Up, {}}, {Qt::Key_Down, {}},

@@ -31,6 +31,35 @@ core::SceneDesc row()
     return scene;
 }
 
+// an L of five particles, neither flat nor symmetric, moving, joined in a chain, with particle 4
+// outside the transformed set and joined to 3; contacts saved between 0 and 1, 3 and 4, and 4 and
+// plane 0
+core::SceneDesc bent()
+{
+    core::SceneDesc scene;
+    const Eigen::Vector3d at[] = {{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {2.0, 0.5, 0.0}, {2.0, 1.5, -1.0}, {5.0, 2.0, 1.0}};
+    for (int i = 0; i < 5; ++i) {
+        core::ParticleDesc p;
+        p.position = at[i];
+        p.velocity = {0.1 * i, -0.3, 0.2 + i};
+        scene.particles.push_back(p);
+    }
+    scene.particles[2].pinned = true;
+    scene.particles[2].velocity.setZero();
+    for (int i = 0; i < 4; ++i)
+        scene.springs.push_back({i, i + 1, 100.0, 0.5, 0.9 + 0.1 * i});
+    const Eigen::Vector3d none = Eigen::Vector3d::Zero();
+    scene.contactImpulses = {{0, 1, 0.5, {0.0, 0.1, 0.0}}, {3, 4, 0.2, none}, {4, -1, 1.0, none}};
+    return scene;
+}
+
+const std::vector<int> kTransformed{0, 1, 2, 3};
+
+bool near(const Eigen::Vector3d &a, const Eigen::Vector3d &b, double tolerance = 1e-12)
+{
+    return (a - b).norm() <= tolerance * std::max(1.0, b.norm());
+}
+
 }  // namespace
 
 class TestSceneEdits : public QObject {
@@ -215,6 +244,170 @@ private slots:
         QCOMPARE(ui::particlesPastLimit(scene, 11), std::optional<std::size_t>(ui::kMaxSceneParticles + 1));
         scene.particles.resize(ui::kMaxSceneParticles);
         QCOMPARE(ui::particlesPastLimit(scene, ui::kMaxSceneParticles), std::optional<std::size_t>(2 * ui::kMaxSceneParticles));
+    }
+
+    void selectedParticlesTakeTheEndsOfSelectedSprings()
+    {
+        const core::SceneDesc scene = row();
+        QCOMPARE(ui::selectedParticles(scene, ui::Selection{{3, 0}, {1}}), (std::vector<int>{0, 1, 2, 3}));
+        QCOMPARE(ui::selectedParticles(scene, ui::Selection{{7}, {9}}), std::vector<int>{});
+    }
+
+    void transformRoundTripGivesTheSceneBack()
+    {
+        // scale, turn and move; then turn back and move back, then unscale: where everything began
+        const core::SceneDesc before = bent();
+        ui::SelectionTransform there;
+        there.translation = {0.3, -2.0, 7.5};
+        there.angleDegrees = 37.0;
+        there.axis = {1.0, 2.0, -0.5};
+        there.scale = {2.0, 0.5, -3.0};
+        there.scaleRestLengths = true;
+        core::SceneDesc scene = before;
+        ui::transformParticles(scene, kTransformed, there);
+        QVERIFY(!near(scene.particles[0].position, before.particles[0].position, 1e-3));
+
+        ui::SelectionTransform turnBack;
+        turnBack.translation = -there.translation;
+        turnBack.angleDegrees = -there.angleDegrees;
+        turnBack.axis = there.axis;
+        ui::transformParticles(scene, kTransformed, turnBack);
+        ui::SelectionTransform unscale;
+        unscale.scale = there.scale.cwiseInverse();
+        unscale.scaleRestLengths = true;
+        ui::transformParticles(scene, kTransformed, unscale);
+
+        for (std::size_t i = 0; i < before.particles.size(); ++i) {
+            QVERIFY2(near(scene.particles[i].position, before.particles[i].position), qPrintable(QString::number(i)));
+            QVERIFY2(near(scene.particles[i].velocity, before.particles[i].velocity), qPrintable(QString::number(i)));
+        }
+        for (std::size_t s = 0; s < before.springs.size(); ++s)
+            QVERIFY(std::abs(scene.springs[s].restLength - before.springs[s].restLength) < 1e-12);
+    }
+
+    void rotationKeepsDistancesAndTheCentroid()
+    {
+        const core::SceneDesc before = bent();
+        ui::SelectionTransform turn;
+        turn.angleDegrees = 123.0;
+        turn.axis = {0.2, -1.0, 0.7};
+        core::SceneDesc scene = before;
+        ui::transformParticles(scene, kTransformed, turn);
+        QVERIFY(near(ui::centroid(scene, kTransformed), ui::centroid(before, kTransformed)));
+        for (int i : kTransformed) {
+            for (int j : kTransformed) {
+                const double was = (before.particles[std::size_t(i)].position - before.particles[std::size_t(j)].position).norm();
+                const double is = (scene.particles[std::size_t(i)].position - scene.particles[std::size_t(j)].position).norm();
+                QVERIFY2(std::abs(is - was) < 1e-12, qPrintable(QStringLiteral("%1-%2: %3 %4").arg(i).arg(j).arg(is).arg(was)));
+            }
+            // speeds stay; the pinned particle stays at rest
+            QVERIFY(std::abs(scene.particles[std::size_t(i)].velocity.norm() - before.particles[std::size_t(i)].velocity.norm()) < 1e-12);
+        }
+        QCOMPARE(scene.particles[2].velocity, Eigen::Vector3d::Zero().eval());
+        // the particle outside, and every rest length, untouched
+        QCOMPARE(scene.particles[4], before.particles[4]);
+        QCOMPARE(scene.springs, before.springs);
+
+        // a quarter turn about z takes x to y, positions and velocities alike (right-handed)
+        core::SceneDesc pair;
+        pair.particles.resize(2);
+        pair.particles[0].position = {-1.0, 0.0, 0.0};
+        pair.particles[1].position = {1.0, 0.0, 0.0};
+        pair.particles[1].velocity = {2.0, 0.0, 0.0};
+        ui::SelectionTransform quarter;
+        quarter.angleDegrees = 90.0;
+        quarter.axis = {0.0, 0.0, 5.0};
+        ui::transformParticles(pair, {0, 1}, quarter);
+        QVERIFY(near(pair.particles[1].position, {0.0, 1.0, 0.0}, 1e-15));
+        QVERIFY(near(pair.particles[1].velocity, {0.0, 2.0, 0.0}, 1e-15));
+    }
+
+    void wholeTurnsAndNoChangeKeepTheBits()
+    {
+        const core::SceneDesc before = bent();
+        for (double degrees : {0.0, 360.0, -720.0}) {
+            ui::SelectionTransform turn;
+            turn.angleDegrees = degrees;
+            turn.axis = {1.0, 1.0, 0.0};
+            core::SceneDesc scene = before;
+            ui::transformParticles(scene, kTransformed, turn);
+            QVERIFY2(scene.particles == before.particles, qPrintable(QString::number(degrees)));
+        }
+        QVERIFY(ui::SelectionTransform{}.isIdentity());
+        ui::SelectionTransform moved;
+        moved.translation.z() = 1e-9;
+        QVERIFY(!moved.isIdentity());
+    }
+
+    void scaleIsAboutTheCentroid()
+    {
+        const core::SceneDesc before = bent();
+        const Eigen::Vector3d centre = ui::centroid(before, kTransformed);
+        QVERIFY(near(centre, {1.25, 0.5, -0.25}));
+        ui::SelectionTransform grow;
+        grow.scale = {2.0, 2.0, 2.0};
+        core::SceneDesc scene = before;
+        ui::transformParticles(scene, kTransformed, grow);
+        QVERIFY(near(ui::centroid(scene, kTransformed), centre));
+        for (int i : kTransformed) {
+            const core::ParticleDesc &p = scene.particles[std::size_t(i)];
+            const core::ParticleDesc &was = before.particles[std::size_t(i)];
+            QVERIFY(near(p.position - centre, 2.0 * (was.position - centre)));
+            // a scale moves the particles apart; their velocities, masses and radii stay
+            QCOMPARE(p.velocity, was.velocity);
+            QCOMPARE(p.mass, was.mass);
+            QCOMPARE(p.radius, was.radius);
+        }
+        // rest lengths kept unless asked
+        QCOMPARE(scene.springs, before.springs);
+
+        // asked: the springs within take their new length's share, the one to particle 4 keeps its
+        // own; per axis, a spring along x takes the x factor and one along y the y factor
+        grow.scaleRestLengths = true;
+        scene = before;
+        ui::transformParticles(scene, kTransformed, grow);
+        for (int s = 0; s < 3; ++s)
+            QVERIFY(std::abs(scene.springs[std::size_t(s)].restLength - 2.0 * before.springs[std::size_t(s)].restLength) < 1e-12);
+        QCOMPARE(scene.springs[3].restLength, before.springs[3].restLength);
+
+        core::SceneDesc corner;
+        corner.particles.resize(3);
+        corner.particles[1].position = {1.0, 0.0, 0.0};
+        corner.particles[2].position = {0.0, 1.0, 0.0};
+        corner.springs = {{0, 1, 10.0, 0.0, 1.0}, {0, 2, 10.0, 0.0, 0.8}};
+        ui::SelectionTransform stretch;
+        stretch.scale = {3.0, 0.5, 1.0};
+        stretch.scaleRestLengths = true;
+        ui::transformParticles(corner, {0, 1, 2}, stretch);
+        QVERIFY(std::abs(corner.springs[0].restLength - 3.0) < 1e-12);
+        QVERIFY(std::abs(corner.springs[1].restLength - 0.4) < 1e-12);
+    }
+
+    void negativeFactorMirrorsPositionsAndVelocities()
+    {
+        core::SceneDesc scene;
+        scene.particles.resize(2);
+        scene.particles[0].position = {-1.0, 0.0, 0.0};
+        scene.particles[1].position = {1.0, 2.0, 0.0};
+        scene.particles[1].velocity = {1.0, 1.0, 1.0};
+        ui::SelectionTransform mirror;
+        mirror.scale = {-1.0, 1.0, 1.0};
+        ui::transformParticles(scene, {0, 1}, mirror);
+        QCOMPARE(scene.particles[1].position, Eigen::Vector3d(-1.0, 2.0, 0.0));
+        QCOMPARE(scene.particles[1].velocity, Eigen::Vector3d(-1.0, 1.0, 1.0));
+    }
+
+    void transformDropsTheContactsOfWhatMoved()
+    {
+        core::SceneDesc scene = bent();
+        ui::SelectionTransform move;
+        move.translation = {0.0, 1.0, 0.0};
+        ui::transformParticles(scene, {3}, move);
+        QCOMPARE(scene.particles[3].position, Eigen::Vector3d(2.0, 2.5, -1.0));
+        // 0-1 stays, 3-4 goes, 4 on the plane stays
+        QCOMPARE(scene.contactImpulses.size(), std::size_t(2));
+        QCOMPARE(scene.contactImpulses[0].i, 0);
+        QCOMPARE(scene.contactImpulses[1].i, 4);
     }
 
     void gridSnapping()

@@ -20,6 +20,7 @@ private slots:
     void drift();
     void plan();
     void selection();
+    void distance();
     void stability();
 };
 
@@ -131,6 +132,15 @@ void TestStatusText::selection()
     QCOMPARE(ui::selectionText(1, 0), QStringLiteral("1 particle selected"));
     QCOMPARE(ui::selectionText(0, 1), QStringLiteral("1 spring selected"));
     QCOMPARE(ui::selectionText(0, 0), QStringLiteral("Nothing selected"));
+}
+
+void TestStatusText::distance()
+{
+    // the view's label: four digits; the status bar and inspector: six, with the parts
+    QCOMPARE(ui::lengthText(1.2247448), QStringLiteral("1.225 m"));
+    QCOMPARE(ui::lengthText(0.0005), QStringLiteral("0.0005 m"));
+    QCOMPARE(ui::distanceText({1.0, 0.5, -0.5}), QStringLiteral("1.22474 m (Δx 1, Δy 0.5, Δz -0.5)"));
+    QCOMPARE(ui::distanceText(Eigen::Vector3d::Zero()), QStringLiteral("0 m (Δx 0, Δy 0, Δz 0)"));
 }
 
 void TestStatusText::plan()

@@ -51,6 +51,10 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
     addEntry(tr("Drag tool (5)"),
              tr("Running: hold a particle to pull it toward the cursor. Paused: drag to move the selection (one "
                 "undo step)"));
+    addEntry(tr("Measure tool (6)"),
+             tr("Click one particle, then another, or drag from one to another: a line between them labelled with "
+                "their distance, which follows them while the run plays; the status bar gives the distance with its "
+                "x, y and z parts, and the pair becomes the selection"));
     addEntry(tr("Hover"), tr("What a click would pick is highlighted"));
 
     // files: what the menus do not show
@@ -71,6 +75,16 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
                 "a soft ball (points on a sphere joined to their neighbours, optionally to a centre particle). The "
                 "preview and the counts follow every value, wrong options are named and not generated, and the "
                 "result, its middle where you say, is one undo step and becomes the selection"));
+
+    // numeric edits of the selection
+    addSection(tr("Transform"));
+    addEntry(tr("Edit › Transform Selection… (Ctrl+T)"),
+             tr("Move by x, y, z metres, rotate by degrees about x, y, z or a typed axis, and scale by a factor "
+                "(uniform or per axis), the rotation and the factor about the selection's centroid: the initial "
+                "positions of the selected particles (pinned ones too), their velocities turned with them. Springs "
+                "keep their rest lengths unless Scale the rest lengths is checked. A value that cannot be used is "
+                "named and nothing changes; each Apply is one undo step. The dialog stays open and follows the "
+                "selection"));
 
     // export: the image is in the keys above (Shift+F2); the rest has no key
     addSection(tr("Export"));

@@ -2,8 +2,12 @@
 
 #include "core/contact_impulses.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
+#include <cassert>
 #include <cmath>
+#include <numbers>
 
 namespace ui {
 
@@ -134,7 +138,7 @@ void removeItems(core::SceneDesc &scene, const Selection &selection)
     core::renumberContactImpulses(scene.contactImpulses, remap);
 }
 
-Fragment copyItems(const core::SceneDesc &scene, const Selection &selection)
+std::vector<int> selectedParticles(const core::SceneDesc &scene, const Selection &selection)
 {
     std::vector<int> particles = selection.particles;
     for (int s : selection.springs)
@@ -142,13 +146,17 @@ Fragment copyItems(const core::SceneDesc &scene, const Selection &selection)
             particles.push_back(scene.springs[std::size_t(s)].a);
             particles.push_back(scene.springs[std::size_t(s)].b);
         }
+    particles.erase(std::remove_if(particles.begin(), particles.end(), [&](int i) { return !inRange(scene, i); }),
+                    particles.end());
     normalise(particles);
+    return particles;
+}
 
+Fragment copyItems(const core::SceneDesc &scene, const Selection &selection)
+{
     Fragment fragment;
     std::vector<int> remap(scene.particles.size(), -1);
-    for (int i : particles) {
-        if (!inRange(scene, i))
-            continue;
+    for (int i : selectedParticles(scene, selection)) {
         remap[std::size_t(i)] = static_cast<int>(fragment.particles.size());
         fragment.particles.push_back(scene.particles[std::size_t(i)]);
     }
@@ -200,6 +208,63 @@ void moveParticles(core::SceneDesc &scene, const std::vector<int> &particles, co
     for (std::size_t k = 0; k < particles.size() && k < from.size(); ++k)
         if (inRange(scene, particles[k]))
             scene.particles[std::size_t(particles[k])].position = from[k] + delta;
+}
+
+bool SelectionTransform::isIdentity() const
+{
+    return translation.isZero(0.0) && angleDegrees == 0.0 && scale == Eigen::Vector3d::Ones();
+}
+
+Eigen::Vector3d centroid(const core::SceneDesc &scene, const std::vector<int> &particles)
+{
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int i : particles)
+        sum += scene.particles[std::size_t(i)].position;
+    return particles.empty() ? sum : Eigen::Vector3d(sum / double(particles.size()));
+}
+
+void transformParticles(core::SceneDesc &scene, const std::vector<int> &particles, const SelectionTransform &transform)
+{
+    assert(transform.axis.norm() > 0.0 && (transform.scale.array() != 0.0).all());
+    const Eigen::Vector3d centre = centroid(scene, particles);
+    std::vector<char> moved(scene.particles.size(), 0);
+    for (int i : particles)
+        moved[std::size_t(i)] = 1;
+    // whole turns exactly: 360° gives back the same bits rather than a rounding of them
+    const double degrees = std::fmod(transform.angleDegrees, 360.0);
+    const Eigen::Matrix3d turn =
+        degrees == 0.0
+            ? Eigen::Matrix3d::Identity()
+            : Eigen::AngleAxisd(degrees * std::numbers::pi / 180.0, transform.axis.normalized()).toRotationMatrix();
+    const Eigen::Matrix3d linear = turn * transform.scale.asDiagonal();
+    const Eigen::Matrix3d velocityTurn = turn * transform.scale.cwiseSign().asDiagonal();
+
+    // the springs within first, measured before the particles move
+    if (transform.scaleRestLengths && transform.scale != Eigen::Vector3d::Ones()) {
+        // a spring whose ends coincide has no direction: it takes the factors' geometric mean
+        const double meanFactor = std::cbrt(std::abs(transform.scale.prod()));
+        for (core::SpringDesc &spring : scene.springs) {
+            if (!inRange(scene, spring.a) || !inRange(scene, spring.b) || !moved[std::size_t(spring.a)] ||
+                !moved[std::size_t(spring.b)])
+                continue;
+            const Eigen::Vector3d d =
+                scene.particles[std::size_t(spring.b)].position - scene.particles[std::size_t(spring.a)].position;
+            const double length = d.norm();
+            spring.restLength *= length > 0.0 ? transform.scale.cwiseProduct(d).norm() / length : meanFactor;
+        }
+    }
+
+    for (int i : particles) {
+        core::ParticleDesc &p = scene.particles[std::size_t(i)];
+        p.position = centre + transform.translation + linear * (p.position - centre);
+        p.velocity = velocityTurn * p.velocity;
+    }
+
+    // the saved contacts of what moved held where it was, not where it is
+    std::erase_if(scene.contactImpulses, [&](const core::ContactImpulse &c) {
+        const auto movedOne = [&](int k) { return k >= 0 && std::size_t(k) < moved.size() && moved[std::size_t(k)]; };
+        return movedOne(c.i) || (!c.withPlane() && movedOne(c.j));
+    });
 }
 
 Eigen::Vector3d snapToGrid(const Eigen::Vector3d &point, double step)

@@ -33,6 +33,10 @@ struct Selection {
 // sorts and removes duplicates
 void normalise(std::vector<int> &indices);
 
+// the selected particles and the two ends of each selected spring, sorted, those the scene has:
+// what an edit of "the selection's particles" moves (Copy, Transform Selection)
+std::vector<int> selectedParticles(const core::SceneDesc &scene, const Selection &selection);
+
 // the particles and springs among them, cut out of a scene: what Copy puts on the clipboard
 struct Fragment {
     std::vector<core::ParticleDesc> particles;
@@ -80,6 +84,32 @@ Selection addGenerated(core::SceneDesc &scene, const core::SceneDesc &generated,
 // starts from what is on screen, which is not the initial position once the run has moved on)
 void moveParticles(core::SceneDesc &scene, const std::vector<int> &particles, const std::vector<Eigen::Vector3d> &from,
                    const Eigen::Vector3d &delta);
+
+// Edit › Transform Selection: a numeric change of some particles' initial conditions. Each
+// position p becomes c + t + R S (p - c), c being the centroid of their positions before: scaled
+// along x, y and z, then rotated, both about c, then moved by t. Velocities turn with R (and flip
+// along an axis a negative factor mirrors); their sizes stay. Masses and radii stay.
+struct SelectionTransform {
+    Eigen::Vector3d translation = Eigen::Vector3d::Zero();  // m
+    double angleDegrees = 0.0;                              // right-handed about axis
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitY();        // any length but zero
+    Eigen::Vector3d scale = Eigen::Vector3d::Ones();        // factors along x, y, z; none zero
+    // springs with both ends among the particles take the change of their length as their new
+    // rest length, so that a scaled body starts at rest; off, they keep theirs and the body starts
+    // stretched or squeezed. A spring to a particle outside always keeps its rest length.
+    bool scaleRestLengths = false;
+
+    // no change at all: no move, no turn, every factor 1
+    bool isIdentity() const;
+};
+
+// the mean of the particles' initial positions (zero for none)
+Eigen::Vector3d centroid(const core::SceneDesc &scene, const std::vector<int> &particles);
+
+// applies the transform to the particles (indices the scene has, each once; the axis non-zero and
+// no factor zero); the saved contact impulses of those particles are dropped, as they were for
+// where the particles were
+void transformParticles(core::SceneDesc &scene, const std::vector<int> &particles, const SelectionTransform &transform);
 
 // the nearest multiple of step in each coordinate; step <= 0 leaves the point as it is
 Eigen::Vector3d snapToGrid(const Eigen::Vector3d &point, double step);

@@ -2,35 +2,17 @@
 
 #include <QLineEdit>
 #include <QSignalBlocker>
-#include <limits>
-#include <optional>
 
 namespace ui {
-
-namespace {
-
-// the words for values that are not finite, as typed
-constexpr const char *kNonFinite[] = {"nan", "inf", "-inf"};
-
-std::optional<double> nonFinite(const QString &text)
-{
-    const QString word = text.trimmed().toLower();
-    if (word == QLatin1String(kNonFinite[0]))
-        return std::numeric_limits<double>::quiet_NaN();
-    if (word == QLatin1String(kNonFinite[1]))
-        return std::numeric_limits<double>::infinity();
-    if (word == QLatin1String(kNonFinite[2]))
-        return -std::numeric_limits<double>::infinity();
-    return std::nullopt;
-}
-
-}  // namespace
 
 InspectorSpinBox::InspectorSpinBox(core::Parameter parameter, QWidget *parent)
     : ValueSpinBox(sliderScale(core::parameterInfo(parameter)), parent), m_parameter(parameter)
 {
     setMinimumWidth(70);
     lineEdit()->setPlaceholderText(tr("mixed"));
+    // "nan", "inf" and "-inf" can be typed too, so that they are refused with a message rather
+    // than swallowed by the validator without a word
+    setNonFiniteTypable(true);
 
     // remember what the user typed: on Enter the spin box would replace an empty or unfinished
     // text by the value it held, and for a mixed field that value means nothing
@@ -66,24 +48,6 @@ QString InspectorSpinBox::textFromValue(double value) const
 {
     // a mixed field stays empty so that its placeholder shows
     return m_mixed ? QString() : ValueSpinBox::textFromValue(value);
-}
-
-QValidator::State InspectorSpinBox::validate(QString &input, int &pos) const
-{
-    const QString word = input.trimmed().toLower();
-    if (nonFinite(word))
-        return QValidator::Acceptable;
-    for (const char *full : kNonFinite)
-        if (!word.isEmpty() && QLatin1String(full).startsWith(word))
-            return QValidator::Intermediate;
-    return ValueSpinBox::validate(input, pos);
-}
-
-double InspectorSpinBox::valueFromText(const QString &text) const
-{
-    if (const std::optional<double> value = nonFinite(text))
-        return *value;
-    return ValueSpinBox::valueFromText(text);
 }
 
 void InspectorSpinBox::stepBy(int steps)

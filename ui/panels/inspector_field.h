@@ -26,10 +26,6 @@ public:
     bool isMixed() const { return m_mixed; }
 
     QString textFromValue(double value) const override;
-    // "nan", "inf" and "-inf" can be typed too, so that they are refused with a message rather
-    // than swallowed by the validator without a word
-    QValidator::State validate(QString &input, int &pos) const override;
-    double valueFromText(const QString &text) const override;
     void stepBy(int steps) override;
 
 signals:

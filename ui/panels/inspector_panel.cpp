@@ -4,6 +4,7 @@
 #include "inspector_edits.h"
 #include "inspector_field.h"
 #include "inspector_planes.h"
+#include "status_text.h"
 #include "ui/document/scene_document.h"
 #include "ui/document/scene_edits.h"
 
@@ -195,6 +196,26 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
     connect(m_pinned, &QCheckBox::clicked, this, &InspectorPanel::pinSelection);
     layout->addWidget(m_particlesGroup);
 
+    // two particles: how far apart they are, now and at the start
+    m_distanceGroup = new QGroupBox(this);
+    m_distanceGroup->setObjectName(QStringLiteral("inspector-distance"));
+    auto *distanceForm = new QFormLayout(m_distanceGroup);
+    distanceForm->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
+    m_currentDistance = new QLabel(m_distanceGroup);
+    m_currentDistance->setObjectName(QStringLiteral("inspector-distance-current"));
+    m_currentDistance->setToolTip(tr("The distance in the running simulation, from the first particle to the "
+                                     "second, with its x, y and z parts; it changes as the run goes on"));
+    m_initialDistance = new QLabel(m_distanceGroup);
+    m_initialDistance->setObjectName(QStringLiteral("inspector-distance-initial"));
+    m_initialDistance->setToolTip(tr("The distance between the initial positions (where Reset puts them)"));
+    for (QLabel *value : {m_currentDistance, m_initialDistance}) {
+        value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        value->setWordWrap(true);
+    }
+    distanceForm->addRow(tr("Current"), m_currentDistance);
+    distanceForm->addRow(tr("Initial"), m_initialDistance);
+    layout->addWidget(m_distanceGroup);
+
     // springs: their values, and the particles they join
     m_springsGroup = new QGroupBox(tr("Springs"), this);
     m_springsGroup->setObjectName(QStringLiteral("inspector-springs"));
@@ -280,6 +301,20 @@ QLabel *InspectorPanel::currentField(const QString &key) const
     return nullptr;
 }
 
+QLabel *InspectorPanel::distanceField(const QString &key) const
+{
+    return key == QLatin1String("current") ? m_currentDistance : key == QLatin1String("initial") ? m_initialDistance : nullptr;
+}
+
+std::optional<std::pair<std::size_t, std::size_t>> InspectorPanel::selectedPair() const
+{
+    const std::vector<std::size_t> particles =
+        present(m_tools->selection().particles, m_document->scene().particles.size());
+    if (particles.size() != 2)
+        return std::nullopt;
+    return std::pair(particles[0], particles[1]);
+}
+
 void InspectorPanel::showSnapshot(std::shared_ptr<const core::Snapshot> snapshot)
 {
     m_snapshot = std::move(snapshot);
@@ -305,6 +340,17 @@ void InspectorPanel::refreshCurrent()
         const std::optional<double> shared =
             sharedValue(particles, [&](std::size_t i) { return double(values[3 * i + c % 3]); });
         m_currentFields[c]->setText(shared ? QString::number(*shared, 'g', 6) : tr("mixed"));
+    }
+
+    // the pair's distance in the same snapshot
+    if (const auto pair = selectedPair(); pair && known) {
+        const auto at = [&](std::size_t i) {
+            const float *p = snapshot->positions.data() + 3 * i;
+            return Eigen::Vector3d(double(p[0]), double(p[1]), double(p[2]));
+        };
+        m_currentDistance->setText(distanceText(at(pair->second) - at(pair->first)));
+    } else {
+        m_currentDistance->setText(QStringLiteral("—"));
     }
 }
 
@@ -352,6 +398,15 @@ void InspectorPanel::refresh()
             m_pinned->setCheckState(Qt::PartiallyChecked);
         }
         refreshCurrent();
+    }
+
+    // two particles: their distance
+    const auto pair = selectedPair();
+    m_distanceGroup->setVisible(pair.has_value());
+    if (pair) {
+        m_distanceGroup->setTitle(tr("Distance from particle %1 to %2").arg(pair->first).arg(pair->second));
+        m_initialDistance->setText(
+            distanceText(scene.particles[pair->second].position - scene.particles[pair->first].position));
     }
 
     // springs: the same, and which particles they join

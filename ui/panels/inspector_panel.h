@@ -6,6 +6,8 @@
 // pinned). The particles' position and velocity are shown twice: the running simulation's current
 // ones (read-only, from the latest snapshot the window receives, at its frame rate; the panel never
 // reads the worker's state) and the scene's initial conditions (editable; the run starts from them).
+// With exactly two particles selected (as the Measure tool leaves them), their distance shows too,
+// from the lower index to the higher, now and initially, with its x, y and z parts.
 // Every change is one undo command on the document (InspectorEdits); a value the parameter table
 // does not allow is refused with a message and never reaches the scene. The panel follows the
 // document and the selection: undo, redo or another tool's edit shows at once, without an edit.
@@ -14,6 +16,8 @@
 #include <QWidget>
 #include <array>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 class QCheckBox;
@@ -55,6 +59,9 @@ public:
     // the running simulation's current value of the selection, read-only, by key: "position.x" ..
     // "position.z", "velocity.x" .. "velocity.z"; "mixed" where the selected particles differ
     QLabel *currentField(const QString &key) const;
+    // the two selected particles' distance: "current" (the run's, live) or "initial" (the scene's)
+    QLabel *distanceField(const QString &key) const;
+    QGroupBox *distanceGroup() const { return m_distanceGroup; }
     // the latest snapshot of the run: the current values follow it (null: none yet)
     void showSnapshot(std::shared_ptr<const core::Snapshot> snapshot);
 
@@ -68,6 +75,8 @@ signals:
 private:
     void refresh();
     void refreshCurrent();
+    // the two selected particles, lower index first, when exactly two are
+    std::optional<std::pair<std::size_t, std::size_t>> selectedPair() const;
     void showRefusal(const QString &message);
     void editParticles(std::size_t field, double value, bool step);
     void editSprings(std::size_t field, double value, bool step);
@@ -83,6 +92,9 @@ private:
     std::vector<InspectorSpinBox *> m_springFields;    // in kSpringFields order
     std::array<QLabel *, 6> m_currentFields{};  // position x, y, z, then velocity x, y, z
     std::shared_ptr<const core::Snapshot> m_snapshot;
+    QGroupBox *m_distanceGroup = nullptr;
+    QLabel *m_currentDistance = nullptr;
+    QLabel *m_initialDistance = nullptr;
     QCheckBox *m_pinned = nullptr;
     QLabel *m_springEnds = nullptr;
     InspectorPlanes *m_planes = nullptr;

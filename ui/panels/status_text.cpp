@@ -163,6 +163,18 @@ QString selectionText(std::size_t particles, std::size_t springs)
     return parts.join(tr(" and ")) + tr(" selected");
 }
 
+QString lengthText(double metres)
+{
+    return QString::number(metres, 'g', 4) + tr(" m");
+}
+
+QString distanceText(const Eigen::Vector3d &delta)
+{
+    const auto number = [](double value) { return QString::number(value, 'g', 6); };
+    return tr("%1 m (Δx %2, Δy %3, Δz %4)")
+        .arg(number(delta.norm()), number(delta.x()), number(delta.y()), number(delta.z()));
+}
+
 QString particleLimitText(const QString &notDone, std::size_t total)
 {
     return tr("%1: the scene would have %2 particles, more than the %3 the editor allows; nothing was changed")

@@ -7,6 +7,7 @@
 #include "core/accuracy_planner.h"
 #include "core/diagnostics.h"
 
+#include <Eigen/Core>
 #include <QString>
 #include <cstddef>
 #include <optional>
@@ -43,6 +44,12 @@ QString driftText(const core::Energies &initial, double current);
 
 // "121 particles and 220 springs selected", "1 particle selected", "Nothing selected"
 QString selectionText(std::size_t particles, std::size_t springs);
+
+// a measured length for the view's label, four significant digits: "1.234 m", "0.0005 m"
+QString lengthText(double metres);
+// a measured distance from one point to another, six significant digits with its parts:
+// "1.22474 m (Δx 1, Δy 0.5, Δz -0.5)"
+QString distanceText(const Eigen::Vector3d &delta);
 
 // why an edit that would add particles past the editor's limit was refused: "Not duplicated: the
 // scene would have 400000 particles, more than the 200000 the editor allows; nothing was changed"

@@ -1,9 +1,12 @@
 #include "value_spin_box.h"
 
+#include <QLineEdit>
 #include <QWheelEvent>
 
 #include <QRegularExpression>
+#include <cmath>
 #include <limits>
+#include <optional>
 
 namespace ui {
 
@@ -11,6 +14,21 @@ namespace {
 
 // the slider positions one arrow press moves
 constexpr int kPositionsPerStep = 10;
+
+// the words for values that are not finite, as typed
+constexpr const char *kNonFinite[] = {"nan", "inf", "-inf"};
+
+std::optional<double> nonFinite(const QString &text)
+{
+    const QString word = text.trimmed().toLower();
+    if (word == QLatin1String(kNonFinite[0]))
+        return std::numeric_limits<double>::quiet_NaN();
+    if (word == QLatin1String(kNonFinite[1]))
+        return std::numeric_limits<double>::infinity();
+    if (word == QLatin1String(kNonFinite[2]))
+        return -std::numeric_limits<double>::infinity();
+    return std::nullopt;
+}
 
 }  // namespace
 
@@ -22,6 +40,25 @@ ValueSpinBox::ValueSpinBox(const SliderScale &scale, QWidget *parent) : QDoubleS
     setKeyboardTracking(false);
     setAccelerated(true);
     setFocusPolicy(Qt::StrongFocus);  // not Qt::WheelFocus: a wheel turned over it does not take focus
+
+    // a NaN or infinity typed is kept beside the clamped value the spin box holds
+    connect(lineEdit(), &QLineEdit::textEdited, this, [this](const QString &text) {
+        m_typedText = text;
+        m_typedNonFinite.reset();
+    });
+    connect(this, &QAbstractSpinBox::editingFinished, this, [this] {
+        if (!m_nonFiniteTypable || m_typedText.isNull())
+            return;
+        m_typedNonFinite = nonFinite(m_typedText);
+        m_typedText = QString();
+        if (m_typedNonFinite)
+            lineEdit()->setText(textFromValue(value()));
+    });
+}
+
+double ValueSpinBox::typedValue() const
+{
+    return m_typedNonFinite.value_or(value());
 }
 
 void ValueSpinBox::wheelEvent(QWheelEvent *event)
@@ -42,11 +79,17 @@ QLocale ValueSpinBox::numberLocale() const
 
 QString ValueSpinBox::textFromValue(double value) const
 {
+    // the word typed, while the clamped value it became is held
+    if (m_typedNonFinite && std::abs(value) == std::numeric_limits<double>::max())
+        return locale().toString(*m_typedNonFinite).toLower();
     return numberLocale().toString(value, 'g', 6);
 }
 
 double ValueSpinBox::valueFromText(const QString &text) const
 {
+    if (m_nonFiniteTypable)
+        if (const std::optional<double> value = nonFinite(text))
+            return *value;
     bool ok = false;
     const double value = numberLocale().toDouble(text.trimmed(), &ok);
     return ok ? value : this->value();
@@ -55,6 +98,14 @@ double ValueSpinBox::valueFromText(const QString &text) const
 QValidator::State ValueSpinBox::validate(QString &input, int &) const
 {
     const QString text = input.trimmed();
+    if (m_nonFiniteTypable) {
+        const QString word = text.toLower();
+        if (nonFinite(word))
+            return QValidator::Acceptable;
+        for (const char *full : kNonFinite)
+            if (!word.isEmpty() && QLatin1String(full).startsWith(word))
+                return QValidator::Intermediate;
+    }
     bool ok = false;
     numberLocale().toDouble(text, &ok);
     if (ok)
@@ -76,6 +127,7 @@ void ValueSpinBox::fixup(QString &input) const
 
 void ValueSpinBox::stepBy(int steps)
 {
+    m_typedNonFinite.reset();
     setValue(m_scale.valueAt(m_scale.positionOf(value()) + steps * kPositionsPerStep));
     selectAll();
 }

@@ -9,6 +9,9 @@
 #include "slider_scale.h"
 
 #include <QDoubleSpinBox>
+#include <QString>
+
+#include <optional>
 
 namespace ui {
 
@@ -17,6 +20,13 @@ class ValueSpinBox : public QDoubleSpinBox {
 
 public:
     ValueSpinBox(const SliderScale &scale, QWidget *parent = nullptr);
+
+    // lets "nan", "inf" and "-inf" be typed too, for a field whose owner refuses them with a
+    // message rather than have the validator swallow them without a word
+    void setNonFiniteTypable(bool typable) { m_nonFiniteTypable = typable; }
+    // the value as typed: value(), or the NaN or infinity typed last, which QDoubleSpinBox cannot
+    // hold (it clamps them to its range); the field shows the word typed meanwhile
+    double typedValue() const;
 
     QString textFromValue(double value) const override;
     double valueFromText(const QString &text) const override;
@@ -32,6 +42,9 @@ private:
     QLocale numberLocale() const;
 
     SliderScale m_scale;
+    bool m_nonFiniteTypable = false;
+    QString m_typedText;                       // typed since the field last finished editing
+    std::optional<double> m_typedNonFinite;    // the value that field holds, when not finite
 };
 
 }  // namespace ui

@@ -63,7 +63,17 @@ constexpr ToolInfo kTools[] = {
      "Click one particle, then another, or drag from one to another, to join them with a spring", Qt::Key_4},
     {Tool::Drag, "toolDrag", "Drag",
      "Running: press on a particle to pull it toward the cursor. Paused: drag the selection to move it", Qt::Key_5},
+    {Tool::Measure, "toolMeasure", "Measure",
+     "Click one particle, then another, or drag from one to another, to measure their distance; it follows them "
+     "while the run plays",
+     Qt::Key_6},
 };
+
+// the Measure tool's words for a pair: "Particles 3 → 7: 1.22474 m (Δx 1, Δy 0.5, Δz -0.5)"
+QString measuredText(int from, int to, const Eigen::Vector3d &delta)
+{
+    return EditTools::tr("Particles %1 → %2: %3").arg(from).arg(to).arg(distanceText(delta));
+}
 
 }  // namespace
 
@@ -71,7 +81,10 @@ EditTools::EditTools(Viewport *viewport, SceneDocument *document, SimulationCont
     : QObject(parent), m_viewport(viewport), m_document(document), m_controller(controller)
 {
     createActions();
-    m_springBand = new GuideLine(m_viewport);
+    m_band = new GuideLine(m_viewport);
+    m_measureLine = new GuideLine(m_viewport);
+    m_measureLine->setDashed(false);
+    m_particleCount = int(m_document->scene().particles.size());
     m_viewport->installEventFilter(this);
     m_viewport->setMouseTracking(true);  // hover
     connect(m_document, &SceneDocument::sceneChanged, this, &EditTools::sceneChanged);
@@ -132,7 +145,8 @@ void EditTools::setTool(Tool tool)
         m_controller->grab(-1, Eigen::Vector3d::Zero());
     m_gesture = Gesture::None;
     m_grabbed = -1;
-    setSpringStart(-1);
+    setBandStart(-1);
+    setMeasured(-1, -1);
     m_tool = tool;
     toolAction(tool)->setChecked(true);
     m_viewport->setHover(-1, -1);
@@ -159,8 +173,13 @@ void EditTools::sceneChanged()
     Selection kept = m_selection;
     kept.clamp(m_document->scene());
     setSelection(kept);
-    if (m_springStart >= int(m_document->scene().particles.size()))
-        setSpringStart(-1);
+    const int count = int(m_document->scene().particles.size());
+    if (m_bandStart >= count)
+        setBandStart(-1);
+    // fewer particles: a deletion may have renumbered the measured pair, so the measure goes
+    if (count < m_particleCount)
+        setMeasured(-1, -1);
+    m_particleCount = count;
 }
 
 void EditTools::apply(const QString &text, const std::function<void(core::SceneDesc &)> &edit, const QString &mergeKey)
@@ -337,21 +356,28 @@ bool EditTools::press(QMouseEvent *event)
         emit message(pin ? tr("Particle %1 pinned").arg(particle) : tr("Particle %1 freed").arg(particle));
         return true;
     }
-    case Tool::Spring: {
+    case Tool::Spring:
+    case Tool::Measure: {
         if (particle < 0) {
-            setSpringStart(-1);
+            setBandStart(-1);
             return false;  // orbit
         }
-        if (m_springStart < 0 || m_springStart == particle) {
-            // the first particle; a release on another joins them, a click waits for another click
-            setSpringStart(particle);
+        if (m_bandStart < 0 || m_bandStart == particle) {
+            // the first particle; a release on another joins or measures them, a click waits for
+            // another click
+            setBandStart(particle);
             setSelection(Selection{{particle}, {}});
-            m_gesture = Gesture::SpringBand;
-            followSpringBand(pixel);
-            emit message(tr("Spring from particle %1: click the particle to join it to").arg(particle));
+            m_gesture = Gesture::Band;
+            followBand(pixel);
+            if (m_tool == Tool::Spring) {
+                emit message(tr("Spring from particle %1: click the particle to join it to").arg(particle));
+            } else {
+                setMeasured(-1, -1);
+                emit message(tr("Measuring from particle %1: click the particle to measure to").arg(particle));
+            }
             return true;
         }
-        joinSpring(particle);
+        m_tool == Tool::Spring ? joinSpring(particle) : measureTo(particle);
         return true;
     }
     case Tool::Drag: {
@@ -387,15 +413,15 @@ bool EditTools::move(QMouseEvent *event)
     case Gesture::None:
         if (event->buttons() == Qt::NoButton) {
             hover(pixel);
-            followSpringBand(pixel);
+            followBand(pixel);
         }
         return false;
     case Gesture::RubberBand:
         m_rubberBand->setGeometry(QRectF(m_pressPixel, pixel).normalized().toRect());
         return true;
-    case Gesture::SpringBand:
+    case Gesture::Band:
         hover(pixel);
-        followSpringBand(pixel);
+        followBand(pixel);
         return true;
     case Gesture::Grab:
         if (const auto target = onViewPlane(pixel, m_dragPlanePoint))
@@ -421,12 +447,12 @@ bool EditTools::release(QMouseEvent *event)
     if (gesture == Gesture::Grab) {
         m_controller->grab(-1, Eigen::Vector3d::Zero());
         m_grabbed = -1;
-    } else if (gesture == Gesture::SpringBand) {
-        // released on another particle: the two are joined; on the first: a click, so the next
-        // click ends the spring
+    } else if (gesture == Gesture::Band) {
+        // released on another particle: the two are joined or measured; on the first: a click, so
+        // the next click ends the spring or the measurement
         const int particle = particleUnder(event->position());
-        if (particle >= 0 && particle != m_springStart)
-            joinSpring(particle);
+        if (particle >= 0 && particle != m_bandStart)
+            m_tool == Tool::Spring ? joinSpring(particle) : measureTo(particle);
     } else if (gesture == Gesture::RubberBand) {
         // the particles whose centres lie inside the box on screen
         const QRectF box = QRectF(m_pressPixel, event->position()).normalized();
@@ -445,39 +471,54 @@ bool EditTools::release(QMouseEvent *event)
     return true;
 }
 
-void EditTools::setSpringStart(int particle)
+void EditTools::setBandStart(int particle)
 {
-    m_springStart = particle;
+    m_bandStart = particle;
     if (particle < 0)
-        m_springBand->hide();
+        m_band->hide();
 }
 
-void EditTools::followSpringBand(const QPointF &pixel)
+std::optional<QLineF> EditTools::lineBetween(int a, int b) const
 {
-    if (m_tool != Tool::Spring || m_springStart < 0) {
-        m_springBand->hide();
-        return;
-    }
-    auto onScreen = [this](int i) {
+    const auto onScreen = [this](int i) {
         const Eigen::Vector3d p = shownPosition(i);
         return m_viewport->camera().project(QVector3D(float(p.x()), float(p.y()), float(p.z())));
     };
-    const auto from = onScreen(m_springStart);
-    if (!from) {
-        m_springBand->hide();
+    const auto from = onScreen(a);
+    const auto to = onScreen(b);
+    if (!from || !to)
+        return std::nullopt;
+    return QLineF(*from, *to);
+}
+
+void EditTools::followBand(const QPointF &pixel)
+{
+    if ((m_tool != Tool::Spring && m_tool != Tool::Measure) || m_bandStart < 0) {
+        m_band->hide();
         return;
     }
     const int under = particleUnder(pixel);
-    const auto to = under >= 0 && under != m_springStart ? onScreen(under) : std::optional<QPointF>(pixel);
-    m_springBand->showLine(QLineF(*from, to.value_or(pixel)));
+    const bool onAnother = under >= 0 && under != m_bandStart;
+    std::optional<QLineF> line = lineBetween(m_bandStart, onAnother ? under : m_bandStart);
+    if (!line) {
+        m_band->hide();
+        return;
+    }
+    if (!onAnother)
+        line->setP2(pixel);
+    // measuring: the distance to the particle under the cursor, before the click
+    const QString label = m_tool == Tool::Measure && onAnother
+                              ? lengthText((shownPosition(under) - shownPosition(m_bandStart)).norm())
+                              : QString();
+    m_band->showLine(*line, label);
 }
 
 void EditTools::joinSpring(int particle)
 {
-    const int a = m_springStart;
+    const int a = m_bandStart;
     auto edited = std::make_shared<core::SceneDesc>(m_document->scene());
     const int spring = ui::addSpring(*edited, a, particle, m_defaults.stiffness, m_defaults.damping);
-    setSpringStart(-1);
+    setBandStart(-1);
     if (spring < 0) {
         emit message(tr("Particles %1 and %2 are already joined").arg(a).arg(particle));
         return;
@@ -485,6 +526,44 @@ void EditTools::joinSpring(int particle)
     m_document->undoStack()->push(new SceneCommand(*m_document, tr("Add Spring"), std::move(edited)));
     setSelection(Selection{{}, {spring}});
     emit message(tr("Spring %1 joins particles %2 and %3").arg(spring).arg(a).arg(particle));
+}
+
+void EditTools::measureTo(int particle)
+{
+    const int from = m_bandStart;
+    setBandStart(-1);
+    setMeasured(from, particle);
+    // the pair is the selection, so that the inspector shows their distance too
+    setSelection(Selection{{from, particle}, {}});
+    emit message(measuredText(from, particle, measurement()->delta));
+}
+
+void EditTools::setMeasured(int from, int to)
+{
+    m_measuredFrom = from;
+    m_measuredTo = to;
+    if (from < 0 || to < 0) {
+        m_measureLine->hide();
+        return;
+    }
+    // asked again at every paint of the view, so that it follows the particles and the camera
+    m_measureLine->follow([this]() -> std::optional<GuideLine::Shape> {
+        const std::optional<Measurement> measured = measurement();
+        if (!measured)
+            return std::nullopt;
+        const std::optional<QLineF> line = lineBetween(measured->from, measured->to);
+        if (!line)
+            return std::nullopt;
+        return GuideLine::Shape{*line, lengthText(measured->delta.norm())};
+    });
+}
+
+std::optional<EditTools::Measurement> EditTools::measurement() const
+{
+    const int count = int(m_document->scene().particles.size());
+    if (m_measuredFrom < 0 || m_measuredTo < 0 || m_measuredFrom >= count || m_measuredTo >= count)
+        return std::nullopt;
+    return Measurement{m_measuredFrom, m_measuredTo, shownPosition(m_measuredTo) - shownPosition(m_measuredFrom)};
 }
 
 void EditTools::hover(const QPointF &pixel)
@@ -500,6 +579,7 @@ void EditTools::hover(const QPointF &pixel)
     case Tool::Pin:
     case Tool::Spring:
     case Tool::Drag:
+    case Tool::Measure:
         particle = particleUnder(pixel);
         break;
     case Tool::AddParticle:
@@ -594,7 +674,8 @@ void EditTools::selectAll()
 
 void EditTools::clearSelection()
 {
-    setSpringStart(-1);
+    setBandStart(-1);
+    setMeasured(-1, -1);
     setSelection({});
     emit message(selectionText(0, 0));
 }

@@ -1,5 +1,5 @@
 #pragma once
-// EditTools: the editing tools of the viewport (Select, Add particle, Pin, Spring, Drag), the
+// EditTools: the editing tools of the viewport (Select, Add particle, Pin, Spring, Drag, Measure), the
 // selection they work on, and the Edit actions on it (Delete, Duplicate, Copy, Paste, Select All,
 // Pin). It filters the viewport's left-button and hover events, so the viewport stays a view; the
 // camera keeps the buttons the tools leave alone. Every change of the scene is one SceneCommand
@@ -7,13 +7,16 @@
 // worker like any other edit and undoes exactly. While running, the Drag tool holds the particle
 // with the worker's mouse spring instead, which changes the run, not the scene. The Spring tool
 // joins the particle pressed on to the one clicked or released on next, with a rubber band line
-// from the first to the cursor meanwhile.
+// from the first to the cursor meanwhile. The Measure tool picks two particles the same way and
+// keeps a line between them labelled with their distance, drawn from the positions the view shows,
+// so it follows them while the run plays; the pair becomes the selection, for the inspector.
 
 #include "ui/document/scene_edits.h"
 
 #include "core/scene.h"
 
 #include <QObject>
+#include <QLineF>
 #include <QPoint>
 #include <QString>
 #include <QVector3D>
@@ -34,7 +37,7 @@ class SceneDocument;
 class SimulationController;
 class Viewport;
 
-enum class Tool { Select, AddParticle, Pin, Spring, Drag };
+enum class Tool { Select, AddParticle, Pin, Spring, Drag, Measure };
 
 // what new particles and springs get
 struct ItemDefaults {
@@ -54,7 +57,7 @@ public:
 
     Tool tool() const { return m_tool; }
     void setTool(Tool tool);
-    // one checkable action per tool, exclusive, with its shortcut (1 to 5)
+    // one checkable action per tool, exclusive, with its shortcut (1 to 6)
     const std::vector<QAction *> &toolActions() const { return m_toolActions; }
     QAction *toolAction(Tool tool) const;
 
@@ -75,9 +78,22 @@ public:
     const ItemDefaults &defaults() const { return m_defaults; }
 
     // the Spring tool's first particle, -1 while none is chosen
-    int springStart() const { return m_springStart; }
-    // the Spring tool's rubber band from it to the cursor (shown while it is chosen)
-    const GuideLine *springBand() const { return m_springBand; }
+    int springStart() const { return m_tool == Tool::Spring ? m_bandStart : -1; }
+    // the Spring or Measure tool's rubber band from it to the cursor (shown while it is chosen)
+    const GuideLine *springBand() const { return m_band; }
+
+    // the Measure tool: the first particle, -1 while none is chosen; the pair measured, from the
+    // first to the second, and the vector between them as the view shows them now (the run's
+    // latest snapshot, else the scene's initial positions); nullopt while no pair is measured
+    int measureStart() const { return m_tool == Tool::Measure ? m_bandStart : -1; }
+    struct Measurement {
+        int from = -1;
+        int to = -1;
+        Eigen::Vector3d delta = Eigen::Vector3d::Zero();  // m, to - from
+    };
+    std::optional<Measurement> measurement() const;
+    // the line between the pair with their distance, following them (shown while measured)
+    const GuideLine *measureLine() const { return m_measureLine; }
     // the particle the Drag tool holds with the mouse spring, -1 for none
     int grabbed() const { return m_grabbed; }
 
@@ -110,11 +126,16 @@ private:
     bool move(QMouseEvent *event);
     bool release(QMouseEvent *event);
     void hover(const QPointF &pixel);
-    // the Spring tool: the rubber band from its first particle to the pixel (to the centre of a
-    // particle there), hidden when none is chosen; joining its first particle to another
-    void followSpringBand(const QPointF &pixel);
-    void setSpringStart(int particle);
+    // the Spring and Measure tools: the rubber band from their first particle to the pixel (to the
+    // centre of a particle there, labelled with its distance while measuring), hidden when none is
+    // chosen; joining the first particle to another, or measuring from it to another
+    void followBand(const QPointF &pixel);
+    void setBandStart(int particle);
     void joinSpring(int particle);
+    void measureTo(int particle);
+    void setMeasured(int from, int to);
+    // the measured pair's line on screen now, with their distance
+    std::optional<QLineF> lineBetween(int a, int b) const;
     void sceneChanged();
 
     // pushes one command that replaces the scene with an edited copy
@@ -151,13 +172,17 @@ private:
     QAction *m_pin = nullptr;
 
     // gestures under way
-    enum class Gesture { None, RubberBand, Move, Grab, SpringBand };
+    enum class Gesture { None, RubberBand, Move, Grab, Band };
     Gesture m_gesture = Gesture::None;
     QPointF m_pressPixel;
     bool m_addToSelection = false;
     QRubberBand *m_rubberBand = nullptr;
-    GuideLine *m_springBand = nullptr;
-    int m_springStart = -1;
+    GuideLine *m_band = nullptr;
+    int m_bandStart = -1;
+    GuideLine *m_measureLine = nullptr;
+    int m_measuredFrom = -1;
+    int m_measuredTo = -1;
+    int m_particleCount = 0;  // the scene's, as last seen
     int m_grabbed = -1;
     Eigen::Vector3d m_dragPlanePoint = Eigen::Vector3d::Zero();  // the plane the drag moves in
     Eigen::Vector3d m_dragStart = Eigen::Vector3d::Zero();       // where the cursor met it at the press

@@ -36,6 +36,7 @@ class AccuracyDialog;
 class DocumentFiles;
 class EditTools;
 class GenerateDialog;
+class TransformDialog;
 class Exporter;
 class InspectorPanel;
 class ParametersPanel;
@@ -105,6 +106,8 @@ public:
     const Steering &steering() const { return m_steering; }
     // Edit › Generate's dialog; null until first opened (main_window_editing.cpp)
     GenerateDialog *generateDialog() const { return m_generate; }
+    // Edit › Transform Selection's dialog; null until first opened (main_window_editing.cpp)
+    TransformDialog *transformDialog() const { return m_transform; }
 
     // the status bar's fields, for the tests
     QString statusTime() const;
@@ -177,6 +180,7 @@ private:
     void steer(int turn, int change);
     void showGenerate();
     void addGenerated();
+    void showTransform();
 
     SceneDocument *m_document = nullptr;
     SimulationController *m_controller = nullptr;
@@ -198,6 +202,7 @@ private:
     QDockWidget *m_plotsDock = nullptr;
     AccuracyDialog *m_accuracy = nullptr;
     GenerateDialog *m_generate = nullptr;
+    TransformDialog *m_transform = nullptr;
     std::uint64_t m_accuracyRequest = 0;  // the plan awaited from the worker; 0: none
     bool m_applyPlan = true;               // whether that plan's pick is applied or only shown
     QString m_screenshotDirectory;

@@ -1,10 +1,11 @@
 // MainWindow's editing: the tools' toolbar with the values new items get, the Edit menu's
-// actions on the selection and its generators, and the inspector dock.
+// actions on the selection, its generators and Transform Selection, and the inspector dock.
 
 #include "main_window.h"
 
 #include "ui/viewport/edit_tools.h"
 #include "ui/dialogs/generate_dialog.h"
+#include "ui/dialogs/transform_dialog.h"
 #include "ui/panels/inspector_panel.h"
 #include "ui/panels/status_text.h"
 #include "ui/document/scene_commands.h"
@@ -135,6 +136,12 @@ void MainWindow::createEditing()
     generate->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));
     generate->setStatusTip(tr("Add a cloth, rope, chain, block or ball of particles, or a soft ball, previewed first "
                               "(one undo step)"));
+    // the selection moved, turned or scaled by typed amounts, one undo step each Apply
+    QAction *transform = m_editMenu->addAction(tr("&Transform Selection..."), this, &MainWindow::showTransform);
+    transform->setObjectName(QStringLiteral("actionTransformSelection"));
+    transform->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
+    transform->setStatusTip(tr("Move, rotate or scale the selected particles' initial positions by typed amounts, "
+                               "about their centroid (one undo step)"));
     m_editMenu->addSeparator();
     QMenu *tools = m_editMenu->addMenu(tr("&Tool"));
     for (QAction *action : m_tools->toolActions())
@@ -158,6 +165,19 @@ void MainWindow::showGenerate()
         connect(m_generate, &QDialog::accepted, this, &MainWindow::addGenerated);
     }
     m_generate->open();
+}
+
+void MainWindow::showTransform()
+{
+    // not modal: the selection can change while it is open, and it follows
+    if (!m_transform) {
+        m_transform = new TransformDialog(m_document, m_tools, this);
+        connect(m_transform, &TransformDialog::applied, this,
+                [this](const QString &text) { statusBar()->showMessage(text, kToolMessageMs); });
+    }
+    m_transform->show();
+    m_transform->raise();
+    m_transform->activateWindow();
 }
 
 void MainWindow::addGenerated()
