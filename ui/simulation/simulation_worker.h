@@ -5,7 +5,8 @@
 // Only this object, on its thread, touches the core::State. A frame that answers a message is
 // published at once; one that only brings new steps waits for the pace the window draws at
 // (frameIntervalNs), since building a snapshot of a large scene nobody will see costs the run; and
-// a frame that shows the same state as the one before reuses its snapshot.
+// a frame that shows the same state as the one before reuses its snapshot. Every frame carries the
+// plots' samples of the steps taken since the last frame the window took (step_samples.h).
 
 #include "session/messages.h"
 #include "session/latest_mailbox.h"
@@ -46,6 +47,9 @@ public:
     // the shortest time between two frames that bring nothing but new steps (ns), set by the UI
     // side to the pace it draws at; a frame that answers a message goes at once
     std::atomic<std::int64_t> &frameIntervalNs() { return m_frameIntervalNs; }
+    // the particle whose motion the plots' samples carry (-1: none), set by the UI side; read at
+    // the start of each tick
+    std::atomic<int> &plottedParticle() { return m_plottedParticle; }
 
 protected:
     void customEvent(QEvent *event) override;
@@ -72,6 +76,8 @@ private:
     std::atomic<bool> m_wakePending = false;
     std::uint64_t m_appliedMessage = 0;
     std::atomic<std::int64_t> m_frameIntervalNs = 0;
+    std::atomic<int> m_plottedParticle = -1;
+    std::uint64_t m_lastSampleSent = 0;  // the sequence number of the newest sample a frame carried
     QElapsedTimer m_published;   // since the latest frame
     bool m_unshownSteps = false;  // steps taken since the latest frame
     std::string m_shownPairSpeedWarning;  // the latest frame's
