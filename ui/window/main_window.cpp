@@ -185,11 +185,12 @@ void MainWindow::createActions()
                                     "springlab-sim --replay runs again to the same bits"));
     connect(m_recordAction, &QAction::toggled, this, &MainWindow::setRecording);
 
-    m_tiltAction = new QAction(tr("&Tilt"), this);
-    m_tiltAction->setObjectName(QStringLiteral("actionTilt"));
-    m_tiltAction->setShortcut(Qt::Key_T);
-    m_tiltAction->setStatusTip(tr("Kick every free particle with a random velocity"));
-    connect(m_tiltAction, &QAction::triggered, m_controller, &SimulationController::tilt);
+    // the handout's "tilt" (T), named for what it does: a random kick, not a tilt of the scene
+    m_kickAction = new QAction(tr("&Kick Particles"), this);
+    m_kickAction->setObjectName(QStringLiteral("actionKickParticles"));
+    m_kickAction->setShortcut(Qt::Key_T);
+    m_kickAction->setStatusTip(tr("Give every free particle a random velocity (the handout's \"tilt\")"));
+    connect(m_kickAction, &QAction::triggered, m_controller, &SimulationController::tilt);
 
     m_collisionsAction = new QAction(tr("&Collisions"), this);
     m_collisionsAction->setObjectName(QStringLiteral("actionCollisions"));
@@ -248,7 +249,7 @@ void MainWindow::createMenus()
     simulation->addAction(m_captureAction);
     simulation->addAction(m_recordAction);
     simulation->addSeparator();
-    simulation->addAction(m_tiltAction);
+    simulation->addAction(m_kickAction);
     simulation->addAction(m_collisionsAction);
     simulation->addAction(m_accuracyAction);
     simulation->addSeparator();
