@@ -221,7 +221,8 @@ void MainWindow::createActions()
         {"actionSteerRight", QT_TR_NOOP("Steer R&ight"),
          QT_TR_NOOP("Turn the push on the steerable particle 15° to the right, seen from above"), Qt::Key_Right, -1, 0},
         {"actionSteerStronger", QT_TR_NOOP("Push &Harder"),
-         QT_TR_NOOP("Push the steerable particle harder (the pool's cue ball)"), Qt::Key_Up, 0, 1},
+         QT_TR_NOOP("Push the steerable particle harder (the pool's cue ball); an arrow at it shows the push"),
+         Qt::Key_Up, 0, 1},
         {"actionSteerWeaker", QT_TR_NOOP("Push &Softer"),
          QT_TR_NOOP("Push the steerable particle more softly, down to not at all"), Qt::Key_Down, 0, -1},
     };
@@ -633,6 +634,11 @@ void MainWindow::updateSteerActions()
                                   .arg(m_steering.strength(mass), 0, 'g', 4)
                                   .arg(m_steering.angle, 0, 'f', 0));
     }
+    // and the arrow in the view, while there is a push
+    const Eigen::Vector3d d = m_steering.direction();
+    const QVector3D direction(float(d.x()), float(d.y()), float(d.z()));
+    const float strength = float(m_steering.level) / Steering::kMaxLevel;
+    m_viewport->setSteeringArrow(steerable ? SteeringArrow{scene.steerable, direction, strength} : SteeringArrow{});
 }
 
 void MainWindow::chooseScreenshotDirectory()
