@@ -23,6 +23,13 @@ public:
         return replaced == nullptr;
     }
 
+    // whether the consumer has taken the last value published (or none was)
+    bool empty()
+    {
+        std::lock_guard lock(m_mutex);
+        return m_value == nullptr;
+    }
+
     // the newest value, leaving the box empty; null if nothing new was published
     std::shared_ptr<const T> take()
     {

@@ -10,6 +10,8 @@
 #include "core/snapshot.h"
 #include "core/stability.h"
 
+#include "step_samples.h"
+
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -68,6 +70,10 @@ struct SimulationFrame {
     std::string pairSpeedWarning;
 
     TimelineInfo timeline;
+
+    // the plots' samples of the run's steps that no frame taken before this one carried, oldest
+    // first (some may have come in an earlier frame too: their sequence numbers tell); null when none
+    std::shared_ptr<const StepSampleBatch> samples;
 };
 
 }  // namespace ui

@@ -111,8 +111,10 @@ void SimulationRunner::apply(const Message &message)
                },
                message);
 
-    if (hasScene() && startsAKeyframe(message))
+    if (hasScene() && startsAKeyframe(message)) {
         keyframe();
+        sample();
+    }
 }
 
 void SimulationRunner::stepOnceMessage()
@@ -190,6 +192,11 @@ void SimulationRunner::keyframe()
     m_scrubber.timeline().afterEdit(m_model, m_scene, m_state, heldForces());
 }
 
+void SimulationRunner::sample()
+{
+    m_samples.add(*m_model, m_state, m_diagnostics.initialEnergies());
+}
+
 bool SimulationRunner::scrubTo(std::uint64_t step)
 {
     if (!hasScene() || m_recording || !m_scrubber.canShow(step))
@@ -219,6 +226,7 @@ void SimulationRunner::resumeFromScrub()
 {
     ScrubbedStep scrub = m_scrubber.resume();
     const std::shared_ptr<const core::SceneDesc> current = m_scene;
+    m_samples.dropAfter(scrub.state.step);
     m_state = std::move(scrub.state);
     // the held forces are the editor's own now, not the recorded ones
     m_state.applied.resize(3, 0);
@@ -235,6 +243,7 @@ void SimulationRunner::resumeFromScrub()
         m_diagnostics.checkPairSpeed(*m_model, m_state);
     }
     keyframe();
+    sample();
 }
 
 void SimulationRunner::setScene(const SetSceneEdit &edit)
@@ -272,6 +281,7 @@ void SimulationRunner::restart()
     m_state = core::makeState(*m_model, *m_scene);
     m_owed = 0.0;
     m_diagnostics.restarted(*m_model, m_state);
+    m_samples.clear();  // the plots start over with this run
 }
 
 void SimulationRunner::reset()
@@ -354,6 +364,7 @@ bool SimulationRunner::stepOnce()
     }
     if (taken) {
         m_scrubber.timeline().afterStep(m_model, m_scene, m_state, heldForces());
+        sample();
         return true;
     }
     if (m_work.interrupted)
@@ -369,6 +380,7 @@ bool SimulationRunner::stopAtLastGood()
     m_owed = 0.0;
     m_state = m_lastGood;
     m_scrubber.timeline().truncateAfter(m_state.step);
+    m_samples.dropAfter(m_state.step);
     m_diagnostics.stateChanged();
     return false;
 }

@@ -7,13 +7,14 @@
 // (carry_across_edit.h). It has no thread and no timer of its own: SimulationWorker calls it from
 // its tick, and the unit tests call it directly, one message or one advance at a time.
 //
-// Two helpers do the rest, on the runner's model, state and workspace. The Scrubber (scrubber.h)
+// Three helpers do the rest, on the runner's model, state and workspace. The Scrubber (scrubber.h)
 // keeps the timeline the run is recorded on as it goes, and shows a recorded step, pausing the run
 // there. Play, or any edit that changes the run, resumes from the step shown with the scene as it
 // is now in the editor, and the recorded future after that step is discarded (one line of
 // history, no branches). RunDiagnostics (run_diagnostics.h) keeps the live error estimate, the
 // energies the drift is measured from, the stability limit, the pair speed warning, the
-// explanation of a blow-up, and makes the accuracy plans.
+// explanation of a blow-up, and makes the accuracy plans. The StepSampler (step_samples.h) takes
+// the plots' figures after every step the run keeps.
 //
 // A long step yields to the messages. Given a flag raised while messages wait (setInterrupt), a
 // step stops between two sub-steps when it is raised and is not taken: the state goes back to
@@ -28,6 +29,7 @@
 #include "run_diagnostics.h"
 #include "scrubber.h"
 #include "session_recording.h"
+#include "step_samples.h"
 
 #include "core/model.h"
 #include "core/snapshot.h"
@@ -114,6 +116,10 @@ public:
     // the state shown, packed for drawing
     std::shared_ptr<const core::Snapshot> snapshot() const;
 
+    // the plots' samples of every step the run keeps (off until the editor turns them on)
+    StepSampler &samples() { return m_samples; }
+    const StepSampler &samples() const { return m_samples; }
+
     // the live accuracy figures, the stability limit and the pair speed warning
     const RunDiagnostics &diagnostics() const { return m_diagnostics; }
     // estimates the local error now if a message or a blow-up changed the model or the state since
@@ -152,6 +158,8 @@ private:
     // the timeline
     HeldForces heldForces() const;
     void keyframe();
+    // a sample of the run's state for the plots
+    void sample();
     bool scrubTo(std::uint64_t step);
     void stepBack();
     void resumeFromScrub();
@@ -162,6 +170,7 @@ private:
     core::Workspace m_work;  // the steps' scratch and profile, for the run and the scrubs alike
     Scrubber m_scrubber;
     RunDiagnostics m_diagnostics;
+    StepSampler m_samples;
     core::State m_lastGood;  // the state before the latest steps, restored if they blow up
     const std::atomic<bool> *m_interrupt = nullptr;
     core::State m_stepStart;      // where the step in progress began, when it is slow (see above)

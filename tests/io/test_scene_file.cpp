@@ -1,10 +1,12 @@
 // Scene files: every bad-file case gives one message naming the file, the JSON path and the
 // reason; defaults and unknown keys; save then load gives back the same bits, for hand-made
-// scenes and for every example in resources/scenes; the contact keys (solver, friction, two-sided
+// scenes and for every example in resources/scenes, and no example starts with a particle in a
+// plane (the pool's balls inside its cushions); the contact keys (solver, friction, two-sided
 // planes, rectangles) are written when they say something and read back exactly; saving is
 // atomic; files past a size, count or nesting limit are refused with the limit named, files at
 // the limits load.
 
+#include "core/colliders.h"
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
 #include "core/validate.h"
@@ -301,6 +303,8 @@ private slots:
     void examplesExist();
     void roundTripExamples_data();
     void roundTripExamples();
+    void examplesStartClearOfTheirPlanes_data();
+    void examplesStartClearOfTheirPlanes();
     void saveWritesEveryKey();
     void saveFailureKeepsOldFile_data();
     void saveFailureKeepsOldFile();
@@ -1024,6 +1028,39 @@ void TestSceneFile::roundTripExamples()
     QVERIFY2(reloaded.ok(), qPrintable(reloaded.error));
     QCOMPARE(bitDifference(*original.scene, *reloaded.scene), QString());
     QCOMPARE(io::sceneToJson(*reloaded.scene), readAll(copy));
+}
+
+void TestSceneFile::examplesStartClearOfTheirPlanes_data()
+{
+    roundTripExamples_data();
+}
+
+void TestSceneFile::examplesStartClearOfTheirPlanes()
+{
+    // every particle's centre at least its radius from every plane, on the side it starts on (a
+    // one-sided plane's front; a rectangle's nearest point): resting on one is fine, starting
+    // inside one is not, since the first contact would throw the particle out. A nanometre is
+    // left for the rounding of the distance.
+    QFETCH(QString, path);
+    if (path.isEmpty())
+        QFAIL("no example scenes in resources/scenes");
+    const io::LoadResult loaded = io::loadScene(path);
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+    const core::SceneDesc &scene = *loaded.scene;
+    constexpr double kRounding = 1e-9;  // m
+    for (std::size_t k = 0; k < scene.planes.size(); ++k) {
+        const core::Collider plane = core::makeCollider(scene.planes[k], scene.settings);
+        for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+            const core::ParticleDesc &particle = scene.particles[i];
+            const double distance =
+                core::separation(plane, particle.position, core::sideOf(plane, particle.position)).distance;
+            QVERIFY2(distance >= particle.radius - kRounding,
+                     qPrintable(u"particle %1 is %2 m from plane %3, inside its radius %4"_s.arg(i)
+                                    .arg(distance, 0, 'g', 17)
+                                    .arg(k)
+                                    .arg(particle.radius)));
+        }
+    }
 }
 
 void TestSceneFile::saveWritesEveryKey()

@@ -1,8 +1,9 @@
 // The editor's main window with real widgets and real key events, under a virtual X server: it
 // opens on the springs example and draws it, F4 plays and pauses, F5 resets, the parameters dock
 // edits the running simulation (and refuses what is out of range), the arrow keys steer the pool's
-// ball, T tilts from a seed, A switches collisions, F2 saves a screenshot, F1 lists the keys, and
-// closing while running ends the worker thread. The integrator box reaches the worker; the status
+// ball (drawn as an arrow at it while it is pushed), T kicks from a seed (Simulation › Kick
+// Particles, the handout's tilt), A switches collisions, F2 saves a screenshot, F1 lists the keys,
+// and closing while running ends the worker thread. The integrator box reaches the worker; the status
 // bar shows the local error and the energy drift; F7's accuracy dialog plans on the worker and
 // applies its pick as one undoable edit. Waits are on frames, never fixed sleeps.
 
@@ -76,7 +77,7 @@ private slots:
     void warningsGoWhenStale();
     void blowupPausesAndShowsInTheStatusBar();
     void arrowKeysSteerThePoolBall();
-    void tiltIsTheSameForTheSameSeed();
+    void kickIsTheSameForTheSameSeed();
     void aSwitchesCollisions();
     void f2SavesAScreenshot();
     void f1ListsEveryShortcut();
@@ -95,6 +96,20 @@ private:
     void press(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
     {
         QTest::keyClick(m_window, key, modifiers);
+    }
+    // how many pixels of the view are in the steering arrow's colour
+    int steeringPixels() const
+    {
+        const QImage image = m_window->viewport()->grabFramebuffer();
+        const QColor arrow = QColor::fromRgbF(ui::kSteeringColour[0], ui::kSteeringColour[1], ui::kSteeringColour[2]);
+        int count = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                count += std::abs(c.red() - arrow.red()) <= 8 && std::abs(c.green() - arrow.green()) <= 8 &&
+                         std::abs(c.blue() - arrow.blue()) <= 8;
+            }
+        return count;
     }
 };
 
@@ -445,7 +460,8 @@ void TestMainWindow::arrowKeysSteerThePoolBall()
     const double mass = scene.particles[ball].mass;
     QVERIFY(settledFrame(controller())->scene == m_window->document()->sharedScene());
 
-    // at rest without a push: two steps (F6) change no horizontal momentum
+    // at rest without a push: no arrow, and two steps (F6) change no horizontal momentum
+    QCOMPARE(steeringPixels(), 0);
     press(Qt::Key_F6);
     press(Qt::Key_F6);
     const auto still = settledFrame(controller());
@@ -457,6 +473,9 @@ void TestMainWindow::arrowKeysSteerThePoolBall()
     press(Qt::Key_Up);
     press(Qt::Key_Up);
     QCOMPARE(m_window->steering().level, 3);
+    // the arrow in the view shows the push at the ball
+    QCOMPARE(m_window->viewport()->steeringArrow().particle, int(ball));
+    QCOMPARE_GT(steeringPixels(), 20);
     for (int i = 0; i < 5; ++i)
         press(Qt::Key_F6);
     const auto pushed = settledFrame(controller());
@@ -478,10 +497,24 @@ void TestMainWindow::arrowKeysSteerThePoolBall()
     for (int i = 0; i < 3; ++i)
         press(Qt::Key_Down);
     QCOMPARE(m_window->steering().level, 0);
+    QCOMPARE(steeringPixels(), 0);
 }
 
-void TestMainWindow::tiltIsTheSameForTheSameSeed()
+void TestMainWindow::kickIsTheSameForTheSameSeed()
 {
+    // the menu names T for what it does, and says it is the handout's tilt; so does F1's table
+    auto *kick = m_window->findChild<QAction *>(QStringLiteral("actionKickParticles"));
+    QVERIFY(kick);
+    QCOMPARE(kick->shortcut(), QKeySequence(Qt::Key_T));
+    QCOMPARE(kick->text(), QStringLiteral("&Kick Particles"));
+    QVERIFY2(kick->statusTip().contains(QStringLiteral("random velocity")) &&
+                 kick->statusTip().contains(QStringLiteral("\"tilt\"")),
+             qPrintable(kick->statusTip()));
+    const std::optional<QStringList> entries = test::helpEntries(m_window);
+    QVERIFY(entries);
+    QVERIFY2(entries->contains(QStringLiteral("T\tSimulation › Kick Particles: ") + kick->statusTip()),
+             qPrintable(entries->filter(QStringLiteral("Simulation ›")).join(QLatin1Char('\n'))));
+
     // T, then one step: the positions show the kick
     auto tiltAndStep = [this](std::uint64_t seed) {
         press(Qt::Key_F5);

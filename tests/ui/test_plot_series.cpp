@@ -1,5 +1,6 @@
 // A plot's samples: one per step, the same step replacing its values, a step or time going back
-// starting over, the oldest going past the capacity, and CSV that reads back to the same doubles.
+// starting over, a full series halved to every other step (its whole length kept, evenly spaced),
+// and CSV that reads back to the same doubles.
 
 #include "ui/panels/plot_series.h"
 
@@ -33,7 +34,7 @@ private slots:
     void aStepBackStartsOver();
     void aTimeBackStartsOver();
     void dropAfterKeepsWhatCameBefore();
-    void theOldestGoesPastTheCapacity();
+    void aFullSeriesKeepsEveryOtherStep();
     void valueRangeSkipsWhatIsNotFinite();
     void csvHasAHeaderAndOneRowPerSample();
 };
@@ -107,18 +108,39 @@ void TestPlotSeries::dropAfterKeepsWhatCameBefore()
     QCOMPARE(series.value(0, 4), 6.0);
 }
 
-void TestPlotSeries::theOldestGoesPastTheCapacity()
+void TestPlotSeries::aFullSeriesKeepsEveryOtherStep()
 {
-    ui::PlotSeries series = twoCurves(3);
-    QCOMPARE(series.capacity(), std::size_t(3));
-    for (std::uint64_t s = 0; s < 5; ++s)
-        QCOMPARE(series.add(s, double(s), {double(s), -double(s)}), ui::PlotSeries::Added::Appended);
+    // capacity 4: steps 0..3 all, then every 2nd step, then every 4th
+    ui::PlotSeries series = twoCurves(4);
+    QCOMPARE(series.capacity(), std::size_t(4));
+    for (std::uint64_t s = 0; s < 4; ++s)
+        QCOMPARE(series.add(s, 0.5 * double(s), {double(s), -double(s)}), ui::PlotSeries::Added::Appended);
+    QCOMPARE(series.stride(), std::uint64_t(1));
+    // full: step 4 halves it to 0, 2 and itself; 5 is off the stride
+    QCOMPARE(series.add(4, 2.0, {4.0, -4.0}), ui::PlotSeries::Added::Appended);
+    QCOMPARE(series.stride(), std::uint64_t(2));
     QCOMPARE(series.size(), std::size_t(3));
-    QCOMPARE(series.step(0), std::uint64_t(2));
-    QCOMPARE(series.step(2), std::uint64_t(4));
-    QCOMPARE(series.value(1, 0), -2.0);
-    QVERIFY(!series.indexOfStep(1));
-    QCOMPARE(series.indexOfStep(3), std::optional<std::size_t>(1));
+    QCOMPARE(series.add(5, 2.5, {5.0, -5.0}), ui::PlotSeries::Added::Skipped);
+    QCOMPARE(series.size(), std::size_t(3));
+
+    // a long run: the whole of it, every stride steps from step 0, within the capacity
+    for (std::uint64_t s = 5; s <= 1000; ++s)
+        series.add(s, 0.5 * double(s), {double(s), -double(s)});
+    QCOMPARE_LE(series.size(), series.capacity());
+    QCOMPARE_GE(series.size(), series.capacity() / 2);
+    QCOMPARE(series.step(0), std::uint64_t(0));
+    for (std::size_t i = 0; i < series.size(); ++i) {
+        QCOMPARE(series.step(i), std::uint64_t(i) * series.stride());
+        QCOMPARE(series.time(i), 0.5 * double(series.step(i)));
+        QCOMPARE(series.value(1, i), -double(series.step(i)));
+    }
+    QCOMPARE_GT(series.step(series.size() - 1) + series.stride(), std::uint64_t(1000));
+    QCOMPARE(series.indexOfStep(series.stride()), std::optional<std::size_t>(1));
+
+    // a reset starts over at every step
+    QCOMPARE(series.add(0, 0.0, {0.0, 0.0}), ui::PlotSeries::Added::StartedOver);
+    QCOMPARE(series.stride(), std::uint64_t(1));
+    QCOMPARE(series.add(1, 0.5, {1.0, -1.0}), ui::PlotSeries::Added::Appended);
 }
 
 void TestPlotSeries::valueRangeSkipsWhatIsNotFinite()

@@ -1,11 +1,12 @@
-// The plots dock in the real main window, under a virtual X server: F8 shows it; every plotted
-// energy is the core's own diagnostics of a run stepped here independently, bit for bit, and "lost
-// since reset" is the total at reset less the total; a particle clicked in the viewport has its
-// position and velocity plotted as the snapshot has them; a reset or another scene starts over;
-// Export PNG and Export CSV write an image of the canvas and its samples through the window's
-// file dialog, and a file that cannot be written is reported; after a long run each plot grabs at
-// the dock's size. Waits are on frames, never sleeps. (The dock's pictures in the docs are taken by
-// tools/editor_screenshot.)
+// The plots dock in the real main window, under a virtual X server: F8 shows it; every step of a
+// run is plotted, however few frames the window gets, and every plotted energy is the core's own
+// diagnostics of a run stepped here independently, bit for bit, and "lost since reset" is the
+// total at reset less the total; a particle clicked in the viewport has its position and velocity
+// plotted as the core has them; a reset or another scene starts over; Export PNG and Export CSV
+// write an image of the canvas and its samples (a row per step, at a regular time) through the
+// window's file dialog, and a file that cannot be written is reported; after a long run each plot
+// grabs at the dock's size. Waits are on frames, never sleeps. (The dock's pictures in the docs
+// are taken by tools/editor_screenshot.)
 
 #include "ui/viewport/edit_tools.h"
 #include "ui/document/document_files.h"
@@ -88,9 +89,11 @@ private slots:
 
     void f8ShowsAndHidesThePlots();
     void plottedEnergiesAreTheCoresDiagnostics();
-    void clickedParticleIsPlottedAsTheSnapshotHasIt();
+    void everyStepIsPlottedHoweverFewTheFrames();
+    void clickedParticleIsPlottedAsTheCoreHasIt();
     void resetAndAnotherSceneStartOver();
     void exportsWriteAnImageAndTheSamples();
+    void theCsvOfARunHasARowPerStep();
     void anExportThatCannotBeWrittenIsReported();
     void eachPlotOfALongRunGrabsAtItsSize();
 
@@ -103,6 +106,8 @@ private:
     // F6 `count` times, each step's frame seen by the window
     void stepTimes(int count);
     void clickButton(const char *name);
+    // the lines of the CSV that Export CSV writes for the plot shown
+    QStringList exportedCsv();
 };
 
 void TestPlotsWidget::init()
@@ -171,6 +176,8 @@ void TestPlotsWidget::plottedEnergiesAreTheCoresDiagnostics()
     const ui::PlotSeries &series = plots()->series(ui::PlotGroup::Energies);
     QCOMPARE(series.step(series.size() - 1), last->snapshot->step);
     QCOMPARE(series.step(0), std::uint64_t(0));
+    // every step, not one per frame drawn
+    QCOMPARE(series.size(), std::size_t(last->snapshot->step + 1));
 
     // the same scene stepped here: every sample is the core's energies at its step, to the bit
     const auto model = core::compileModel(scene);
@@ -197,7 +204,7 @@ void TestPlotsWidget::plottedEnergiesAreTheCoresDiagnostics()
         ++compared;
     }
     QCOMPARE(compared, series.size());
-    QVERIFY(compared >= 7);  // step 0, at least one frame of the run, the five single steps
+    QVERIFY(compared >= 67);  // step 0, the 60 and more of the run, the five single steps
     // drag, damping and the floor took energy out
     QVERIFY2(lost > 0.0, qPrintable(QString::number(lost)));
     QCOMPARE(last->initialEnergies.total(), initial.total());
@@ -210,7 +217,50 @@ void TestPlotsWidget::plottedEnergiesAreTheCoresDiagnostics()
     QVERIFY2(length == last->snapshot->momentum.norm(), bits(length, last->snapshot->momentum.norm()).constData());
 }
 
-void TestPlotsWidget::clickedParticleIsPlottedAsTheSnapshotHasIt()
+void TestPlotsWidget::everyStepIsPlottedHoweverFewTheFrames()
+{
+    // a worker of its own whose window draws a frame an hour: the only frames are the answers to
+    // messages (here Syncs), each bringing the samples of the steps since the last one
+    ui::SimulationController worker;
+    ui::PlotsWidget widget;
+    int frames = 0;
+    connect(&worker, &ui::SimulationController::frameChanged, &widget, [&] {
+        ++frames;
+        widget.addFrame(*worker.frame());
+    });
+    const core::SceneDesc scene = chainScene();
+    const auto loaded = test::frameAfter(worker, worker.setScene(std::make_shared<const core::SceneDesc>(scene),
+                                                                 ui::SceneChange::Replace));
+    QVERIFY(loaded);
+    worker.setFrameInterval(3600.0);
+    worker.play();
+    std::shared_ptr<const ui::SimulationFrame> frame = settledFrame(worker);
+    while (frame && frame->snapshot->step < 100) {
+        QTest::qWait(100);  // room for the worker's ticks: it steps, and shows nothing
+        frame = settledFrame(worker);
+    }
+    QVERIFY(frame);
+    frame = test::frameAfter(worker, worker.pause());
+    QVERIFY(frame);
+    const std::uint64_t last = frame->snapshot->step;
+    QCOMPARE_LT(std::uint64_t(frames), last);
+
+    // yet every step from 0 is plotted, once and in order, as the core steps it
+    const ui::PlotSeries &series = widget.series(ui::PlotGroup::Energies);
+    QCOMPARE(series.size(), std::size_t(last + 1));
+    const auto model = core::compileModel(scene);
+    core::State state = core::makeState(*model, scene);
+    core::Workspace work;
+    for (std::size_t i = 0; i < series.size(); ++i) {
+        if (i > 0)
+            QVERIFY(core::step(*model, state, work));
+        QCOMPARE(series.step(i), state.step);
+        const double total = core::energies(*model, state).total();
+        QVERIFY2(series.value(Total, i) == total, bits(series.value(Total, i), total).constData());
+    }
+}
+
+void TestPlotsWidget::clickedParticleIsPlottedAsTheCoreHasIt()
 {
     open(chainScene());
     ui::PlotsWidget *widget = plots();
@@ -232,27 +282,33 @@ void TestPlotsWidget::clickedParticleIsPlottedAsTheSnapshotHasIt()
     QCOMPARE(widget->particle(), int(chosen));
     QCOMPARE(widget->canvas()->title(), QStringLiteral("Particle 3"));
 
-    // a few steps: the last sample of each plot is the snapshot's, float for float
+    // a few steps: each sample of each plot is the core's, double for double
     m_window->activateWindow();
     stepTimes(4);
     const auto frame = settledFrame(controller());
-    const core::Snapshot &snapshot = *frame->snapshot;
     const ui::PlotSeries &position = widget->series(ui::PlotGroup::Position);
     const ui::PlotSeries &velocity = widget->series(ui::PlotGroup::Velocity);
     QCOMPARE(position.size(), std::size_t(4));
-    QCOMPARE(position.step(position.size() - 1), snapshot.step);
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-        const double x = position.value(axis, position.size() - 1);
-        const double v = velocity.value(axis, velocity.size() - 1);
-        const double snapshotX = snapshot.positions[3 * chosen + axis];
-        const double snapshotV = snapshot.velocities[3 * chosen + axis];
-        QVERIFY2(x == snapshotX, bits(x, snapshotX).constData());
-        QVERIFY2(v == snapshotV, bits(v, snapshotV).constData());
+    QCOMPARE(position.step(position.size() - 1), frame->snapshot->step);
+    const core::SceneDesc &scene = m_window->document()->scene();
+    const auto model = core::compileModel(scene);
+    core::State state = core::makeState(*model, scene);
+    core::Workspace work;
+    for (std::size_t i = 0; i < position.size(); ++i) {
+        QVERIFY(core::step(*model, state, work));
+        QCOMPARE(position.step(i), state.step);
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            const double x = position.value(axis, i);
+            const double v = velocity.value(axis, i);
+            const double coreX = state.position(Eigen::Index(axis), Eigen::Index(chosen));
+            const double coreV = state.velocity(Eigen::Index(axis), Eigen::Index(chosen));
+            QVERIFY2(x == coreX, bits(x, coreX).constData());
+            QVERIFY2(v == coreV, bits(v, coreV).constData());
+        }
+        const double speed = state.velocity.col(Eigen::Index(chosen)).norm();
+        QVERIFY2(velocity.value(3, i) == speed, bits(velocity.value(3, i), speed).constData());
     }
-    QVERIFY(snapshot.velocities[3 * chosen + 1] < 0.0f);  // falling
-    const Eigen::Vector3d v(snapshot.velocities[3 * chosen], snapshot.velocities[3 * chosen + 1],
-                            snapshot.velocities[3 * chosen + 2]);
-    QCOMPARE(velocity.value(3, velocity.size() - 1), v.norm());
+    QVERIFY(state.velocity(1, Eigen::Index(chosen)) < 0.0);  // falling
 
     // another particle starts its plots over; none leaves them empty
     m_window->editTools()->setSelection({{1}, {}});
@@ -346,6 +402,42 @@ void TestPlotsWidget::exportsWriteAnImageAndTheSamples()
     QFile::remove(m_files.filePath(QStringLiteral("chain-energies.png")));
     clickButton("buttonExportPlotPng");
     QVERIFY(!QFile::exists(m_files.filePath(QStringLiteral("chain-energies.png"))));
+}
+
+QStringList TestPlotsWidget::exportedCsv()
+{
+    const QString path = m_files.filePath(QStringLiteral("run.csv"));
+    QFile::remove(path);
+    m_window->setFileDialogFunction([&](auto, const QString &, const QString &) { return path; });
+    clickButton("buttonExportPlotCsv");
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return {};
+    return QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+}
+
+void TestPlotsWidget::theCsvOfARunHasARowPerStep()
+{
+    // a run played at the window's pace, then paused
+    const core::SceneDesc scene = chainScene();
+    open(scene);
+    press(Qt::Key_F4);
+    QTRY_VERIFY_WITH_TIMEOUT(controller().frame()->snapshot->step > 60, 20000);
+    press(Qt::Key_F4);
+    const auto last = settledFrame(controller());
+    QVERIFY(last && !last->running);
+
+    // the header, then steps 0, 1, 2, … to the last, each at its step's time
+    const QStringList lines = exportedCsv();
+    QCOMPARE(lines.size(), int(last->snapshot->step) + 2);
+    QVERIFY(lines.front().startsWith(QStringLiteral("step,time [s],")));
+    const double h = scene.settings.timeStep;
+    for (int row = 0; row + 1 < lines.size(); ++row) {
+        const QStringList fields = lines[row + 1].split(QLatin1Char(','));
+        QCOMPARE(fields[0].toULongLong(), std::uint64_t(row));
+        const double time = readDouble(fields[1]);
+        QVERIFY2(std::abs(time - row * h) <= 1e-12, qPrintable(lines[row + 1]));
+    }
 }
 
 void TestPlotsWidget::anExportThatCannotBeWrittenIsReported()

@@ -4,7 +4,8 @@
 // the same view drawn offscreen at any size, with the camera scaled to it and its lines as much
 // wider; a cloth drawn as a sheet between its beads, holes where its springs tore, and the layers
 // that show its spheres and springs too; springs a few pixels wide, wider when selected, with the
-// legend to their colours while any is drawn.
+// legend to their colours while any is drawn; the steering arrow at the steered particle while
+// there is a push, as long as the push is strong, and gone without one.
 
 #include "ui/viewport/strain_legend.h"
 #include "ui/viewport/viewport.h"
@@ -73,6 +74,22 @@ bool nearColour(const QColor &seen, const QColor &expected, int tolerance, QStri
     return std::abs(seen.red() - expected.red()) <= tolerance &&
            std::abs(seen.green() - expected.green()) <= tolerance &&
            std::abs(seen.blue() - expected.blue()) <= tolerance;
+}
+
+// the pixels of the image in the steering arrow's colour, in logical pixels of the widget
+std::vector<QPointF> steeringPixels(const QImage &image, const QWidget &widget)
+{
+    const QColor arrow = toColour(ui::kSteeringColour);
+    const double scale = double(image.width()) / widget.width();
+    std::vector<QPointF> found;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            if (std::abs(c.red() - arrow.red()) <= 8 && std::abs(c.green() - arrow.green()) <= 8 &&
+                std::abs(c.blue() - arrow.blue()) <= 8)
+                found.emplace_back(x / scale, y / scale);
+        }
+    return found;
 }
 
 bool isBackground(const QColor &seen, QString *why)
@@ -151,6 +168,7 @@ private slots:
     void tornSpringsOpenHoles();
     void layersShowTheSheetsSpheresAndSprings();
     void springsAreWideAndScaleWithTheImage();
+    void steeringArrowShowsThePush();
 
 private:
     QPointF projected(int particle) const;
@@ -763,6 +781,44 @@ void TestViewport::springsAreWideAndScaleWithTheImage()
     QCOMPARE_GE(test::lineThickness(selected, at.x(), at.y(), 4), 1.5 * inView);
     QString why;
     QVERIFY2(sameHue(colourAt(selected, *m_viewport, at), ui::kSelectedColour, &why), qPrintable(why));
+}
+
+void TestViewport::steeringArrowShowsThePush()
+{
+    // no push: not a pixel of the arrow's colour
+    QVERIFY(steeringPixels(grab(), *m_viewport).empty());
+
+    // a push on particle 0 along +x: the arrow's pixels, from the particle's centre out along it
+    const QPointF centre = projected(0);
+    const auto along = m_viewport->camera().project(positionOf(*m_snapshot, 0) + QVector3D(1.0f, 0.0f, 0.0f));
+    QVERIFY(along);
+    const QPointF onScreen = (*along - centre) / QLineF(centre, *along).length();
+    auto reach = [&](const std::vector<QPointF> &pixels) {
+        double furthest = 0.0;
+        for (const QPointF &p : pixels)
+            furthest = std::max(furthest, QPointF::dotProduct(p - centre, onScreen));
+        return furthest;
+    };
+    m_viewport->setSteeringArrow({0, QVector3D(1.0f, 0.0f, 0.0f), 0.25f});
+    const std::vector<QPointF> weak = steeringPixels(grab(), *m_viewport);
+    QCOMPARE_GT(weak.size(), std::size_t(20));
+    // drawn over the ball it starts in too
+    QVERIFY(std::any_of(weak.begin(), weak.end(), [&](const QPointF &p) { return QLineF(p, centre).length() < 3.0; }));
+
+    // the strongest push: a longer arrow, as far past the ball as four radii
+    m_viewport->setSteeringArrow({0, QVector3D(1.0f, 0.0f, 0.0f), 1.0f});
+    const std::vector<QPointF> strong = steeringPixels(grab(), *m_viewport);
+    const auto tip = m_viewport->camera().project(positionOf(*m_snapshot, 0) +
+                                                  QVector3D(m_snapshot->radii[0] * 5.0f, 0.0f, 0.0f));
+    QVERIFY(tip);
+    const double tipReach = QPointF::dotProduct(*tip - centre, onScreen);
+    QCOMPARE_GT(reach(strong), reach(weak) + 10.0);
+    QVERIFY2(std::abs(reach(strong) - tipReach) < 4.0,
+             qPrintable(QStringLiteral("%1 px against %2").arg(reach(strong)).arg(tipReach)));
+
+    // the push let go of: gone
+    m_viewport->setSteeringArrow({0, QVector3D(1.0f, 0.0f, 0.0f), 0.0f});
+    QVERIFY(steeringPixels(grab(), *m_viewport).empty());
 }
 
 QTEST_MAIN(TestViewport)

@@ -148,14 +148,14 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
     addSection(tr("Plots"));
     addEntry(tr("View › Plots (F8)"),
              tr("Energies (kinetic, gravitational, spring, total), momentum, or the selected particle's position or "
-                "velocity against time, chosen in the dock's box; one sample per step shown, started over at a reset "
-                "or another scene"));
+                "velocity against time, chosen in the dock's box; every step of the run, however seldom the view is "
+                "drawn (every 2nd, 4th, … step once a plot holds 20 000), started over at a reset or another scene"));
     addEntry(tr("Plots: lost since reset"),
              tr("The total energy at the last reset less the total now: what damping, drag and inelastic contacts "
                 "took, and also the integrator's own drift and work done by the mouse, the steering or edits"));
     addEntry(tr("Plots: Export PNG…, Export CSV…"),
-             tr("Save the plot shown as an image, or its samples as CSV: step, time, one column per curve (also on "
-                "a right-click on the plot)"));
+             tr("Save the plot shown as an image, or its samples as CSV: step, time, one column per curve, a row "
+                "per step kept (also on a right-click on the plot)"));
 
     // rows as tall as their wrapped descriptions
     connect(m_table->horizontalHeader(), &QHeaderView::sectionResized, m_table, &QTableWidget::resizeRowsToContents);

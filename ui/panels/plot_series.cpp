@@ -22,7 +22,7 @@ void appendNumber(std::string &out, double value)
 PlotSeries::PlotSeries(std::vector<PlotCurve> curves, std::size_t capacity)
     : m_curves(std::move(curves)), m_capacity(capacity), m_values(m_curves.size())
 {
-    assert(capacity > 0);
+    assert(capacity > 1);
 }
 
 PlotSeries::Added PlotSeries::add(std::uint64_t step, double time, const std::vector<double> &values)
@@ -41,13 +41,14 @@ PlotSeries::Added PlotSeries::add(std::uint64_t step, double time, const std::ve
     if (startedOver)
         clear();
 
-    // the oldest goes to make room
-    if (size() == m_capacity) {
-        m_steps.pop_front();
-        m_times.pop_front();
-        for (std::deque<double> &curve : m_values)
-            curve.pop_front();
-    }
+    // only the steps on the stride; when full, half of them go to make room
+    if (step % m_stride != 0)
+        return Added::Skipped;
+    // (a series with gaps may need more than one halving)
+    while (size() >= m_capacity)
+        halve();
+    if (step % m_stride != 0)
+        return Added::Skipped;
     m_steps.push_back(step);
     m_times.push_back(time);
     for (std::size_t c = 0; c < values.size(); ++c)
@@ -65,8 +66,28 @@ void PlotSeries::dropAfter(std::uint64_t step)
     }
 }
 
+void PlotSeries::halve()
+{
+    m_stride *= 2;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < size(); ++i) {
+        if (m_steps[i] % m_stride != 0)
+            continue;
+        m_steps[kept] = m_steps[i];
+        m_times[kept] = m_times[i];
+        for (std::deque<double> &curve : m_values)
+            curve[kept] = curve[i];
+        ++kept;
+    }
+    m_steps.resize(kept);
+    m_times.resize(kept);
+    for (std::deque<double> &curve : m_values)
+        curve.resize(kept);
+}
+
 void PlotSeries::clear()
 {
+    m_stride = 1;
     m_steps.clear();
     m_times.clear();
     for (std::deque<double> &curve : m_values)

@@ -13,6 +13,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ui {
@@ -52,12 +53,12 @@ bool isParticleGroup(PlotGroup group)
     return group == PlotGroup::Position || group == PlotGroup::Velocity;
 }
 
-// a 3-vector of a snapshot's floats as doubles, and its length
-std::vector<double> vectorSample(const std::vector<float> &values, std::size_t particle, bool withLength)
+// a 3-vector's components, and its length
+std::vector<double> vectorSample(const Eigen::Vector3d &v, bool withLength)
 {
-    std::vector<double> sample{values[3 * particle], values[3 * particle + 1], values[3 * particle + 2]};
+    std::vector<double> sample{v.x(), v.y(), v.z()};
     if (withLength)
-        sample.push_back(std::sqrt(sample[0] * sample[0] + sample[1] * sample[1] + sample[2] * sample[2]));
+        sample.push_back(v.norm());
     return sample;
 }
 
@@ -92,7 +93,8 @@ PlotsWidget::PlotsWidget(QWidget *parent)
     connect(m_exportPng, &QAction::triggered, this, [this] { emit exportRequested(PlotExport::Png); });
     m_exportCsv = new QAction(tr("Export CSV…"), this);
     m_exportCsv->setObjectName(QStringLiteral("actionExportPlotCsv"));
-    m_exportCsv->setStatusTip(tr("Save the samples of the plot shown as CSV: step, time, then one column per curve"));
+    m_exportCsv->setStatusTip(tr("Save the samples of the plot shown as CSV: step, time, then one column per curve; a "
+                                 "row per step (every 2nd, 4th, … step in a long run)"));
     connect(m_exportCsv, &QAction::triggered, this, [this] { emit exportRequested(PlotExport::Csv); });
     m_canvas->addAction(m_exportPng);
     m_canvas->addAction(m_exportCsv);
@@ -127,37 +129,40 @@ void PlotsWidget::addFrame(const SimulationFrame &frame)
             series.clear();
     }
 
-    // a step scrubbed to on the timeline is of the past: the curves stay as the run drew them;
-    // once the run goes on from a step shown, what they drew after it is gone, as on the timeline
-    if (frame.timeline.scrubStep)
-        return;
+    // once the run goes on from a step scrubbed to, what the curves drew after it is gone, as on
+    // the timeline (while a past step is shown, the curves stay as the run drew them: the samples
+    // are always of the run's own steps)
     if (frame.timeline.resumes != m_resumes) {
         m_resumes = frame.timeline.resumes;
         for (PlotSeries &series : m_series)
             series.dropAfter(frame.timeline.resumedAt);
     }
+    if (!frame.samples)
+        return;
+    for (const StepSample &sample : *frame.samples)
+        if (sample.sequence > m_lastSample)
+            addSample(sample);
+    m_lastSample = std::max(m_lastSample, frame.samples->back().sequence);
+    m_canvas->update();
+}
 
+void PlotsWidget::addSample(const StepSample &sample)
+{
     // energies, and what has gone since the last reset
-    const core::Snapshot &snapshot = *frame.snapshot;
-    const core::Energies &energies = snapshot.energies;
+    const core::Energies &energies = sample.energies;
     const double total = energies.total();
     auto add = [&](PlotGroup group, const std::vector<double> &values) {
-        m_series[static_cast<std::size_t>(group)].add(snapshot.step, snapshot.time, values);
+        m_series[static_cast<std::size_t>(group)].add(sample.step, sample.time, values);
     };
     add(PlotGroup::Energies, {energies.kinetic, energies.gravitational, energies.spring, total,
-                              frame.initialEnergies.total() - total});
-    const Eigen::Vector3d &p = snapshot.momentum;
-    add(PlotGroup::Momentum, {p.x(), p.y(), p.z(), p.norm()});
+                              sample.initialTotal - total});
+    add(PlotGroup::Momentum, vectorSample(sample.momentum, true));
 
-    // the selected particle, while the snapshot has it
-    const bool hasParticle = m_particle >= 0 && m_particle < snapshot.particleCount() &&
-                             snapshot.velocities.size() == snapshot.positions.size();
-    if (hasParticle) {
-        const auto at = static_cast<std::size_t>(m_particle);
-        add(PlotGroup::Position, vectorSample(snapshot.positions, at, false));
-        add(PlotGroup::Velocity, vectorSample(snapshot.velocities, at, true));
+    // the selected particle, once the worker follows it
+    if (m_particle >= 0 && sample.particle == m_particle) {
+        add(PlotGroup::Position, vectorSample(sample.position, false));
+        add(PlotGroup::Velocity, vectorSample(sample.velocity, true));
     }
-    m_canvas->update();
 }
 
 void PlotsWidget::setParticle(int particle)

@@ -1,7 +1,9 @@
 #pragma once
 // PlotsWidget: the plots dock. It keeps one series per group of quantities (energies, momentum,
-// the selected particle's position and its velocity), adds a sample to each from every frame of
-// the worker, and shows the group chosen in its box on a PlotCanvas. Export PNG and Export CSV
+// the selected particle's position and its velocity), adds to each the samples of every step that
+// the worker's frames carry (session/step_samples.h: taken on the worker after each step, so the
+// plots miss no step however seldom the window draws), and shows the group chosen in its box on a
+// PlotCanvas. A long run's series keep every 2nd, 4th, … step (plot_series.h). Export PNG and Export CSV
 // (its buttons, or the canvas's context menu) ask the main window for a file through
 // exportRequested(), so that the file dialog stays the window's, and tests can answer it.
 //
@@ -24,6 +26,7 @@ namespace ui {
 
 class PlotCanvas;
 struct SimulationFrame;
+struct StepSample;
 
 enum class PlotGroup { Energies, Momentum, Position, Velocity };
 enum class PlotExport { Png, Csv };
@@ -34,10 +37,11 @@ class PlotsWidget : public QWidget {
 public:
     explicit PlotsWidget(QWidget *parent = nullptr);
 
-    // a frame from the worker: a sample of every group at its snapshot's step
+    // a frame from the worker: its samples not seen before, a sample of every group per step
     void addFrame(const SimulationFrame &frame);
     // the particle whose position and velocity are plotted, an index into the scene (-1: none);
-    // another particle starts those two plots over
+    // another particle starts those two plots over, with the samples that follow it (the window
+    // tells the worker which particle to follow: SimulationController::setPlottedParticle)
     void setParticle(int particle);
     int particle() const { return m_particle; }
     // frames from before the worker applied this edit are of the scene being replaced: they are
@@ -65,9 +69,11 @@ signals:
 
 private:
     void showGroup();
+    void addSample(const StepSample &sample);
 
     std::array<PlotSeries, 4> m_series;
     std::uint64_t m_resumes = 0;  // the timeline's resumes seen
+    std::uint64_t m_lastSample = 0;  // the sequence number of the newest sample added
     PlotGroup m_group = PlotGroup::Energies;
     int m_particle = -1;
     std::uint64_t m_startOverAfter = 0;  // 0: no scene is being replaced

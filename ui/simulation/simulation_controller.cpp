@@ -211,6 +211,12 @@ void SimulationController::setRunning(bool running)
     emit runningChanged(running);
 }
 
+void SimulationController::setPlottedParticle(int particle)
+{
+    if (m_worker)
+        m_worker->plottedParticle().store(particle, std::memory_order_relaxed);
+}
+
 void SimulationController::takeFrame()
 {
     std::shared_ptr<const SimulationFrame> frame = m_mailbox.take();

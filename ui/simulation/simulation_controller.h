@@ -76,6 +76,10 @@ public:
     // window draws at (FramePacer); 0, the default: every tick's steps are shown
     void setFrameInterval(double seconds);
 
+    // the particle whose position and velocity the frames' plot samples carry from the worker's
+    // next tick on (-1: none)
+    void setPlottedParticle(int particle);
+
     // what the UI last asked for (a blow-up also pauses)
     bool isRunning() const { return m_running; }
 

@@ -35,6 +35,8 @@ SimulationWorker::SimulationWorker(MessageQueue &messages, ReplyQueue &replies, 
     connect(m_timer, &QTimer::timeout, this, &SimulationWorker::tick);
     // a long step stops for the messages that arrive while it runs
     m_runner.setInterrupt(&m_messages.waiting());
+    // the plots have every step, however seldom the window draws
+    m_runner.samples().setEnabled(true);
 }
 
 SimulationWorker::~SimulationWorker()
@@ -73,6 +75,7 @@ void SimulationWorker::tick()
 {
     const bool wasRunning = m_runner.isRunning();
     const std::uint64_t owedBefore = m_runner.stepsOwed();
+    m_runner.samples().setParticle(m_plottedParticle.load(std::memory_order_relaxed));
 
     // messages first: they land between two steps
     MessageQueue::Batch batch = m_messages.drain();
@@ -227,6 +230,13 @@ void SimulationWorker::publish(Frame kind)
     info.locked = m_runner.isRecording();
     info.resumes = scrubber.resumes();
     info.resumedAt = scrubber.resumedAt();
+    // the samples the window has not taken: an empty box means it took those of the last frame
+    StepSampler &samples = m_runner.samples();
+    if (m_mailbox.empty())
+        samples.delivered(m_lastSampleSent);
+    frame->samples = samples.pending();
+    if (frame->samples)
+        m_lastSampleSent = frame->samples->back().sequence;
     if (m_mailbox.publish(std::move(frame)))
         emit frameReady();
 }

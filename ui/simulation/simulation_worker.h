@@ -8,7 +8,9 @@
 // a frame that shows the same state as the one before reuses its snapshot. Where a snapshot is slow
 // to make (10⁶ particles: a sixth of a second and more), the frame that answers a message goes
 // with the snapshot before it, marked behind, and the snapshot of the new state follows in the
-// same tick: a Pause is answered when the step stops, not when its picture is ready.
+// same tick: a Pause is answered when the step stops, not when its picture is ready. Every frame
+// carries the plots' samples of the steps taken since the last frame the window took
+// (step_samples.h).
 
 #include "session/messages.h"
 #include "session/latest_mailbox.h"
@@ -54,6 +56,9 @@ public:
     // how long a snapshot may take before a frame answering a message goes without it
     // (kSlowSnapshotSeconds); set before the worker runs (the tests set 0 to see every answer go first)
     void setSlowSnapshotSeconds(double seconds) { m_slowSnapshotSeconds = seconds; }
+    // the particle whose motion the plots' samples carry (-1: none), set by the UI side; read at
+    // the start of each tick
+    std::atomic<int> &plottedParticle() { return m_plottedParticle; }
 
 protected:
     void customEvent(QEvent *event) override;
@@ -85,6 +90,8 @@ private:
     std::atomic<bool> m_wakePending = false;
     std::uint64_t m_appliedMessage = 0;
     std::atomic<std::int64_t> m_frameIntervalNs = 0;
+    std::atomic<int> m_plottedParticle = -1;
+    std::uint64_t m_lastSampleSent = 0;  // the sequence number of the newest sample a frame carried
     QElapsedTimer m_published;   // since the latest frame
     bool m_unshownSteps = false;  // steps taken since the latest frame
     std::string m_shownPairSpeedWarning;  // the latest frame's

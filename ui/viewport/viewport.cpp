@@ -87,6 +87,7 @@ struct Viewport::Gpu {
     QOpenGLBuffer lineCorners{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer springs{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer decorations{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer arrow{QOpenGLBuffer::VertexBuffer};  // the steering arrow, packed each frame
     int springLines = 0;
     int highlightedSprings = 0;  // the last of them, drawn wider
     int decorationLines = 0;
@@ -104,6 +105,7 @@ struct Viewport::Gpu {
     QOpenGLVertexArrayObject meshVao;
     QOpenGLVertexArrayObject springsVao;
     QOpenGLVertexArrayObject decorationsVao;
+    QOpenGLVertexArrayObject arrowVao;
     QOpenGLVertexArrayObject planesVao;
     QOpenGLVertexArrayObject surfaceVao;
 };
@@ -166,6 +168,14 @@ void Viewport::setPlanes(const std::vector<core::PlaneDesc> &planes)
 {
     m_planes = planes;
     m_decorationsChanged = true;
+    update();
+}
+
+void Viewport::setSteeringArrow(const SteeringArrow &arrow)
+{
+    if (arrow == m_steeringArrow)
+        return;
+    m_steeringArrow = arrow;
     update();
 }
 
@@ -390,7 +400,7 @@ void Viewport::initializeGL()
     gpu->lineCorners.allocate(kLineCorners, int(sizeof(kLineCorners)));
 
     // dynamic buffers, empty for now
-    for (QOpenGLBuffer *buffer : {&gpu->positions, &gpu->springs, &gpu->normals}) {
+    for (QOpenGLBuffer *buffer : {&gpu->positions, &gpu->springs, &gpu->normals, &gpu->arrow}) {
         buffer->setUsagePattern(QOpenGLBuffer::StreamDraw);
         buffer->create();
     }
@@ -448,7 +458,8 @@ void Viewport::initializeGL()
 
     // lines: the quad's corner per vertex; per line its pair of vertices, read as end a, its
     // colour and end b
-    for (auto [vao, buffer] : {std::pair{&gpu->springsVao, &gpu->springs}, std::pair{&gpu->decorationsVao, &gpu->decorations}}) {
+    for (auto [vao, buffer] : {std::pair{&gpu->springsVao, &gpu->springs},
+                               std::pair{&gpu->decorationsVao, &gpu->decorations}, std::pair{&gpu->arrowVao, &gpu->arrow}}) {
         vao->create();
         vao->bind();
         gpu->lineCorners.bind();
@@ -744,6 +755,22 @@ void Viewport::drawScene(const Camera &camera, int samples, QSize pixels)
         glDrawArrays(GL_TRIANGLES, 0, gpu.planeVertices);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
+    }
+
+    // the steering arrow over everything, the ball it starts in included
+    if (m_snapshot && m_steeringArrow.visible()) {
+        const std::vector<float> arrow = packSteeringArrow(m_steeringArrow, *m_snapshot, camera.eye());
+        if (!arrow.empty()) {
+            glDisable(GL_DEPTH_TEST);
+            gpu.arrow.bind();
+            gpu.arrow.allocate(arrow.data(), int(arrow.size() * sizeof(float)));
+            gpu.lineProgram.bind();
+            gpu.lineProgram.setUniformValue("width", widthOf(kSteeringArrowPixels));
+            gpu.lineProgram.setUniformValue("wideFrom", int(arrow.size() / (2 * kVertexFloats)));
+            gpu.arrowVao.bind();
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, int(arrow.size() / (2 * kVertexFloats)));
+            glEnable(GL_DEPTH_TEST);
+        }
     }
     glBindVertexArray(0);
     glUseProgram(0);

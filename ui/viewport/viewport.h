@@ -4,7 +4,8 @@
 // default, a mesh as the alternative — bench/viewport_fps.cpp compares them), springs as lines
 // coloured by strain (instanced quads a few pixels wide, with a legend in the corner), the
 // triangles of a spring mesh (a cloth) as a shaded two-sided sheet that torn springs open, planes
-// as translucent squares around the scene, a ground grid and the axes. The particles and springs
+// as translucent squares around the scene, a ground grid and the axes, and the steering arrow over
+// all (steering_arrow.h). The particles and springs
 // the sheet already shows are hidden unless the layers ask for them (or they are selected).
 // Positions are streamed once per new snapshot; radii, colours and marks are uploaded only when the
 // particles' radii or pins, or the selection, change. GL resources are made in initializeGL and
@@ -13,6 +14,7 @@
 
 #include "camera.h"
 #include "render_data.h"
+#include "steering_arrow.h"
 #include "surface_data.h"
 
 #include "core/scene.h"
@@ -66,6 +68,11 @@ public:
 
     // the scene's planes, drawn as translucent squares around the particles
     void setPlanes(const std::vector<core::PlaneDesc> &planes);
+
+    // the steering push, drawn as an arrow at the steered particle over everything (hidden
+    // when the arrow is: no push, or nothing to steer)
+    void setSteeringArrow(const SteeringArrow &arrow);
+    const SteeringArrow &steeringArrow() const { return m_steeringArrow; }
 
     // indices of the highlighted particles and springs
     void setSelection(const std::vector<int> &particles);
@@ -155,6 +162,7 @@ private:
     Camera m_camera;
     std::shared_ptr<const core::Snapshot> m_snapshot;
     std::vector<core::PlaneDesc> m_planes;
+    SteeringArrow m_steeringArrow;
     std::vector<int> m_selection;
     SpringHighlight m_springHighlight;
     int m_hoverParticle = -1;

@@ -185,11 +185,12 @@ void MainWindow::createActions()
                                     "springlab-sim --replay runs again to the same bits"));
     connect(m_recordAction, &QAction::toggled, this, &MainWindow::setRecording);
 
-    m_tiltAction = new QAction(tr("&Tilt"), this);
-    m_tiltAction->setObjectName(QStringLiteral("actionTilt"));
-    m_tiltAction->setShortcut(Qt::Key_T);
-    m_tiltAction->setStatusTip(tr("Kick every free particle with a random velocity"));
-    connect(m_tiltAction, &QAction::triggered, m_controller, &SimulationController::tilt);
+    // the handout's "tilt" (T), named for what it does: a random kick, not a tilt of the scene
+    m_kickAction = new QAction(tr("&Kick Particles"), this);
+    m_kickAction->setObjectName(QStringLiteral("actionKickParticles"));
+    m_kickAction->setShortcut(Qt::Key_T);
+    m_kickAction->setStatusTip(tr("Give every free particle a random velocity (the handout's \"tilt\")"));
+    connect(m_kickAction, &QAction::triggered, m_controller, &SimulationController::tilt);
 
     m_collisionsAction = new QAction(tr("&Collisions"), this);
     m_collisionsAction->setObjectName(QStringLiteral("actionCollisions"));
@@ -220,7 +221,8 @@ void MainWindow::createActions()
         {"actionSteerRight", QT_TR_NOOP("Steer R&ight"),
          QT_TR_NOOP("Turn the push on the steerable particle 15° to the right, seen from above"), Qt::Key_Right, -1, 0},
         {"actionSteerStronger", QT_TR_NOOP("Push &Harder"),
-         QT_TR_NOOP("Push the steerable particle harder (the pool's cue ball)"), Qt::Key_Up, 0, 1},
+         QT_TR_NOOP("Push the steerable particle harder (the pool's cue ball); an arrow at it shows the push"),
+         Qt::Key_Up, 0, 1},
         {"actionSteerWeaker", QT_TR_NOOP("Push &Softer"),
          QT_TR_NOOP("Push the steerable particle more softly, down to not at all"), Qt::Key_Down, 0, -1},
     };
@@ -248,7 +250,7 @@ void MainWindow::createMenus()
     simulation->addAction(m_captureAction);
     simulation->addAction(m_recordAction);
     simulation->addSeparator();
-    simulation->addAction(m_tiltAction);
+    simulation->addAction(m_kickAction);
     simulation->addAction(m_collisionsAction);
     simulation->addAction(m_accuracyAction);
     simulation->addSeparator();
@@ -632,6 +634,11 @@ void MainWindow::updateSteerActions()
                                   .arg(m_steering.strength(mass), 0, 'g', 4)
                                   .arg(m_steering.angle, 0, 'f', 0));
     }
+    // and the arrow in the view, while there is a push
+    const Eigen::Vector3d d = m_steering.direction();
+    const QVector3D direction(float(d.x()), float(d.y()), float(d.z()));
+    const float strength = float(m_steering.level) / Steering::kMaxLevel;
+    m_viewport->setSteeringArrow(steerable ? SteeringArrow{scene.steerable, direction, strength} : SteeringArrow{});
 }
 
 void MainWindow::chooseScreenshotDirectory()

@@ -216,7 +216,7 @@ private:
     QAction *m_stepBackAction = nullptr;
     TimelineBar *m_timelineBar = nullptr;
     QAction *m_resetAction = nullptr;
-    QAction *m_tiltAction = nullptr;
+    QAction *m_kickAction = nullptr;
     QAction *m_collisionsAction = nullptr;
     QAction *m_accuracyAction = nullptr;
     QAction *m_captureAction = nullptr;

@@ -1,11 +1,13 @@
 // MainWindow's plots dock: energies, momentum and the selected particle's motion against time,
-// fed by every frame, and its exports through the window's file dialog.
+// fed by the samples of every step that the frames carry, and its exports through the window's
+// file dialog.
 
 #include "main_window.h"
 
 #include "ui/viewport/edit_tools.h"
 #include "ui/panels/plots_widget.h"
 #include "ui/document/scene_document.h"
+#include "ui/simulation/simulation_controller.h"
 
 #include <QAction>
 #include <QDir>
@@ -27,10 +29,12 @@ void MainWindow::createPlotsDock()
                                        "time"));
     toggle->setShortcut(Qt::Key_F8);
 
-    // the first particle selected is the one plotted
+    // the first particle selected is the one plotted, and the worker samples its motion
     connect(m_tools, &EditTools::selectionChanged, this, [this] {
         const std::vector<int> &particles = m_tools->selection().particles;
-        m_plots->setParticle(particles.empty() ? -1 : particles.front());
+        const int particle = particles.empty() ? -1 : particles.front();
+        m_plots->setParticle(particle);
+        m_controller->setPlottedParticle(particle);
     });
     connect(m_plots, &PlotsWidget::exportRequested, this, &MainWindow::exportPlot);
 }
