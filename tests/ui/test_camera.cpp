@@ -32,7 +32,15 @@ Camera obliqueCamera(QSize size, Projection projection = Projection::Perspective
 
 bool near(const QVector3D &a, const QVector3D &b, float tolerance = 1e-5f) { return (a - b).length() < tolerance; }
 
-// the projection column of the tests that run in both
+// a test's only column: the projection, one row each
+void projectionRows()
+{
+    QTest::addColumn<Projection>("projection");
+    QTest::newRow("perspective") << Projection::Perspective;
+    QTest::newRow("orthographic") << Projection::Orthographic;
+}
+
+// the projection column of the tests that run in both, after their own
 void addProjectionRows(const char *name, const std::function<void(QTestData &)> &values)
 {
     for (const auto &[label, projection] : {std::pair{"perspective", Projection::Perspective},
@@ -307,9 +315,7 @@ void TestCamera::pitchStopsAtThePoles()
 
 void TestCamera::panMovesTheTargetPlaneWithTheMouse_data()
 {
-    QTest::addColumn<Projection>("projection");
-    QTest::newRow("perspective") << Projection::Perspective;
-    QTest::newRow("orthographic") << Projection::Orthographic;
+    projectionRows();
 }
 
 void TestCamera::panMovesTheTargetPlaneWithTheMouse()
@@ -330,9 +336,7 @@ void TestCamera::panMovesTheTargetPlaneWithTheMouse()
 
 void TestCamera::clipPlanesHoldTheScene_data()
 {
-    QTest::addColumn<Projection>("projection");
-    QTest::newRow("perspective") << Projection::Perspective;
-    QTest::newRow("orthographic") << Projection::Orthographic;
+    projectionRows();
 }
 
 void TestCamera::clipPlanesHoldTheScene()
@@ -469,9 +473,7 @@ void TestCamera::orthographicSizeDoesNotShrinkWithDepth()
 
 void TestCamera::sphereInView_data()
 {
-    QTest::addColumn<Projection>("projection");
-    QTest::newRow("perspective") << Projection::Perspective;
-    QTest::newRow("orthographic") << Projection::Orthographic;
+    projectionRows();
 }
 
 void TestCamera::sphereInView()
@@ -493,9 +495,7 @@ void TestCamera::sphereInView()
 
 void TestCamera::frameFromTargetKeepsTheTarget_data()
 {
-    QTest::addColumn<Projection>("projection");
-    QTest::newRow("perspective") << Projection::Perspective;
-    QTest::newRow("orthographic") << Projection::Orthographic;
+    projectionRows();
 }
 
 void TestCamera::frameFromTargetKeepsTheTarget()
