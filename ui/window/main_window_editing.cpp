@@ -3,6 +3,7 @@
 
 #include "main_window.h"
 
+#include "camera_actions.h"
 #include "ui/viewport/edit_tools.h"
 #include "ui/dialogs/generate_dialog.h"
 #include "ui/panels/inspector_panel.h"
@@ -10,6 +11,7 @@
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
 #include "ui/panels/value_spin_box.h"
+#include "ui/simulation/simulation_controller.h"
 
 #include "core/validate.h"
 
@@ -180,6 +182,8 @@ void MainWindow::addGenerated()
     const QString what = m_generate->kindName();
     m_document->undoStack()->push(new SceneCommand(*m_document, tr("Generate %1").arg(what), std::move(edited)));
     m_tools->setSelection(added);
+    // once the worker shows it: framed with the rest if any of it is out of view
+    m_cameraActions->frameWhenShownIfHidden(m_controller->sync(), added.particles);
     statusBar()->showMessage(tr("Added %1: ").arg(what) + m_generate->countText(), kToolMessageMs);
 }
 
