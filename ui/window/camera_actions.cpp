@@ -46,6 +46,10 @@ CameraActions::CameraActions(Viewport *viewport, QObject *parent) : QObject(pare
         m_actions << action;
     }
 
+    auto *separator = new QAction(this);
+    separator->setSeparator(true);
+    m_actions << separator;
+
     // the projection, as the last session left it
     m_orthographic = new QAction(tr("&Orthographic"), this);
     m_orthographic->setObjectName(QStringLiteral("actionOrthographic"));

@@ -27,7 +27,7 @@ public:
     // reads the settings and sets the viewport's projection from them
     CameraActions(Viewport *viewport, QObject *parent = nullptr);
 
-    // Top, Front, Side, Default View, Orthographic, Follow Selection
+    // Top, Front, Side, Default View, a separator, Orthographic, Follow Selection
     QList<QAction *> actions() const { return m_actions; }
     QAction *orthographicAction() const { return m_orthographic; }
     QAction *followAction() const { return m_follow; }
