@@ -1,6 +1,6 @@
 #version 330 core
-// Ray-cast spheres: the ray from the eye through this fragment meets the sphere, or the fragment is
-// dropped; the depth written is the sphere's. The outline is smoothed with alpha to coverage when
+// Ray-cast spheres: the ray from the eye through this fragment (orthographic: the ray along -z
+// through it) meets the sphere, or the fragment is dropped; the depth written is the sphere's. The outline is smoothed with alpha to coverage when
 // the framebuffer is multisampled.
 
 #include "particle_shading.glsl"
@@ -19,9 +19,12 @@ out vec4 fragColour;
 void main()
 {
     // the ray's closest approach to the centre, computed without cancellation for small spheres
-    vec3 dir = normalize(vQuadPoint);
-    float along = dot(dir, vCentre);
-    vec3 offset = dir * along - vCentre;  // centre to the closest point
+    bool orthographic = projection[3][3] == 1.0;
+    vec3 origin = orthographic ? vec3(vQuadPoint.xy, 0.0) : vec3(0.0);
+    vec3 dir = orthographic ? vec3(0.0, 0.0, -1.0) : normalize(vQuadPoint);
+    vec3 toCentre = vCentre - origin;
+    float along = dot(dir, toCentre);
+    vec3 offset = dir * along - toCentre;  // centre to the closest point
     float miss = length(offset);
 
     // coverage of this pixel by the outline, in pixels
@@ -32,10 +35,11 @@ void main()
 
     // the near hit (on the outline for the partly covered pixels outside it)
     float depthIn = sqrt(max(vRadius * vRadius - miss * miss, 0.0));
-    vec3 hit = dir * (along - depthIn);
+    vec3 hit = origin + dir * (along - depthIn);
     vec3 normal = normalize(offset - dir * depthIn);
 
     vec4 clip = projection * vec4(hit, 1.0);
     gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
-    fragColour = vec4(shadeParticle(normal, normalize(-vCentre), vColour, vMarks), coverage);
+    vec3 towardEye = orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vCentre);
+    fragColour = vec4(shadeParticle(normal, towardEye, vColour, vMarks), coverage);
 }

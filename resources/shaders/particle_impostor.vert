@@ -1,6 +1,7 @@
 #version 330 core
 // Ray-cast spheres: one quad per particle, facing the eye at the particle's centre and just large
-// enough to hold the sphere's outline under perspective; the fragment shader finds the sphere.
+// enough to hold the sphere's outline under perspective (under an orthographic projection, whose
+// matrix ends in 1, a square as wide as the sphere); the fragment shader finds the sphere.
 
 layout(location = 0) in vec2 corner;  // (±1, ±1)
 layout(location = 1) in vec3 centre;  // per particle, world, m
@@ -27,9 +28,17 @@ void main()
     vMarks = marks;
 
     // nothing to draw when the eye is inside the sphere: a point outside the clip volume
-    if (!(radius > 0.0) || d <= radius * 1.0001) {
+    bool orthographic = projection[3][3] == 1.0;
+    if (!(radius > 0.0) || (!orthographic && d <= radius * 1.0001)) {
         vQuadPoint = vec3(0.0);
         gl_Position = vec4(0.0, 0.0, 2.0, 1.0);
+        return;
+    }
+
+    // parallel rays: the outline is the sphere's own width
+    if (orthographic) {
+        vQuadPoint = c + vec3(corner * radius, 0.0);
+        gl_Position = projection * vec4(vQuadPoint, 1.0);
         return;
     }
 

@@ -20,7 +20,8 @@ void main()
     // the view has no scale, so its rotation turns normals as it turns points
     vec3 c = (view * vec4(centre, 1.0)).xyz;
     vNormal = mat3(view) * vertex;
-    vTowardEye = normalize(-c);
+    // orthographic (the matrix ends in 1): the eye is along +z from everywhere
+    vTowardEye = projection[3][3] == 1.0 ? vec3(0.0, 0.0, 1.0) : normalize(-c);
     vColour = colour;
     vMarks = marks;
     gl_Position = projection * vec4(c + vNormal * radius, 1.0);

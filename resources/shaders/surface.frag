@@ -4,7 +4,7 @@
 
 #include "particle_shading.glsl"
 
-in vec3 vPosition;
+in vec3 vTowardEye;
 in vec3 vNormal;
 
 uniform vec3 frontColour;
@@ -16,7 +16,7 @@ void main()
 {
     // the normal of the side seen; where the smooth normal turns away (near an outline or a
     // fold), or is missing, the one facing the eye
-    vec3 towardEye = normalize(-vPosition);
+    vec3 towardEye = normalize(vTowardEye);
     float size = length(vNormal);
     vec3 normal = size > 1.0e-6 ? vNormal / size : towardEye;
     if (!gl_FrontFacing)

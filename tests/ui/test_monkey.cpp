@@ -177,6 +177,9 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
             }
         });
     };
+    // every run starts from the same view: the View menu's toggles the last run left are kept in
+    // the settings (an orthographic view picks other particles than a perspective one)
+    QSettings().remove(QStringLiteral("view"));
     // small: software GL draws every pixel
     if (!openEditor({.setup = answerAtRandom, .size = QSize(800, 600), .settle = false}))
         return failed(editorFailure());

@@ -1,13 +1,16 @@
 // Packing a snapshot for drawing, without GL: colours by strain and by pin and selection, the
 // sizes of the packed arrays, when the style must be uploaded again, and the decoration geometry
-// (a bounded plane drawn as exactly its rectangle, wherever the scene is).
+// (a bounded plane drawn as exactly its rectangle, wherever the scene is; the ground grid on the
+// floors alone, in their planes).
 
 #include "ui/viewport/render_data.h"
 
 #include <QtTest>
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <map>
 #include <set>
 
@@ -65,6 +68,9 @@ private slots:
     void niceSteps_data();
     void niceSteps();
     void gridLiesOnItsPlaneAroundTheScene();
+    void floorGridsLieOnFloorsOnly_data();
+    void floorGridsLieOnFloorsOnly();
+    void floorGridOnARectangleStaysWithinIt();
     void planeQuadsLieOnTheirPlanes();
     void rectanglesAreDrawnAsThemselves_data();
     void rectanglesAreDrawnAsThemselves();
@@ -291,6 +297,107 @@ void TestRenderData::gridLiesOnItsPlaneAroundTheScene()
     QCOMPARE_GT(maxX, scene.centre.x() + scene.radius);
     QCOMPARE_LT(minZ, scene.centre.z() - scene.radius);
     QCOMPARE_GT(maxZ, scene.centre.z() + scene.radius);
+}
+
+namespace {
+
+core::PlaneDesc planeOf(const Eigen::Vector3d &normal, double offset)
+{
+    core::PlaneDesc plane;
+    plane.normal = normal.normalized();
+    plane.offset = offset;
+    return plane;
+}
+
+}  // namespace
+
+void TestRenderData::floorGridsLieOnFloorsOnly_data()
+{
+    // the planes, and which of them carry a grid
+    QTest::addColumn<std::vector<core::PlaneDesc>>("planes");
+    QTest::addColumn<std::vector<int>>("floors");
+    const Eigen::Vector3d tilted5(std::sin(5.0 * std::numbers::pi / 180.0), std::cos(5.0 * std::numbers::pi / 180.0), 0.0);
+    const Eigen::Vector3d tilted20(std::sin(20.0 * std::numbers::pi / 180.0), std::cos(20.0 * std::numbers::pi / 180.0), 0.0);
+    QTest::newRow("no planes") << std::vector<core::PlaneDesc>{} << std::vector<int>{};
+    QTest::newRow("a wall") << std::vector{planeOf({1, 0, 0}, -2.0)} << std::vector<int>{};
+    QTest::newRow("a ceiling") << std::vector{planeOf({0, -1, 0}, -3.0)} << std::vector<int>{};
+    QTest::newRow("a slope of 20°") << std::vector{planeOf(tilted20, 0.0)} << std::vector<int>{};
+    QTest::newRow("a floor below") << std::vector{planeOf({0, 1, 0}, -0.5)} << std::vector<int>{0};
+    QTest::newRow("a floor tilted 5°") << std::vector{planeOf(tilted5, 0.2)} << std::vector<int>{0};
+    QTest::newRow("a wall and two floors")
+        << std::vector{planeOf({0, 0, 1}, -4.0), planeOf({0, 1, 0}, -1.0), planeOf({0, 1, 0}, 2.5)}
+        << std::vector<int>{1, 2};
+}
+
+void TestRenderData::floorGridsLieOnFloorsOnly()
+{
+    QFETCH(std::vector<core::PlaneDesc>, planes);
+    QFETCH(std::vector<int>, floors);
+    const ui::Sphere scene{QVector3D(3.0f, 2.0f, -1.0f), 2.0f};
+    const std::vector<float> grid = ui::packFloorGrids(planes, scene);
+    QCOMPARE(grid.size() % (2 * ui::kVertexFloats), std::size_t(0));
+    if (floors.empty()) {
+        QCOMPARE(grid.size(), std::size_t(0));
+        return;
+    }
+
+    // every vertex a hair above one of the floors, within its plane, and every floor gets lines
+    // reaching past the scene on every side, seen from above
+    std::map<int, int> vertices;
+    std::map<int, std::array<float, 4>> reach;  // min x, max x, min z, max z
+    for (std::size_t v = 0; v < grid.size(); v += ui::kVertexFloats) {
+        const Eigen::Vector3d p(grid[v], grid[v + 1], grid[v + 2]);
+        int on = -1;
+        for (const int f : floors) {
+            const double above = planes[std::size_t(f)].normal.dot(p) - planes[std::size_t(f)].offset;
+            if (above > 0.0 && above < 1e-3)
+                on = f;
+        }
+        QVERIFY2(on >= 0, qPrintable(QStringLiteral("(%1, %2, %3) on no floor").arg(p.x()).arg(p.y()).arg(p.z())));
+        ++vertices[on];
+        auto [found, made] = reach.try_emplace(on, std::array<float, 4>{1e9f, -1e9f, 1e9f, -1e9f});
+        std::array<float, 4> &r = found->second;
+        r = {std::min(r[0], float(p.x())), std::max(r[1], float(p.x())), std::min(r[2], float(p.z())),
+             std::max(r[3], float(p.z()))};
+    }
+    QCOMPARE(vertices.size(), floors.size());
+    for (const auto &[f, r] : reach) {
+        QCOMPARE_LT(r[0], scene.centre.x() - scene.radius);
+        QCOMPARE_GT(r[1], scene.centre.x() + scene.radius);
+        QCOMPARE_LT(r[2], scene.centre.z() - scene.radius);
+        QCOMPARE_GT(r[3], scene.centre.z() + scene.radius);
+    }
+}
+
+void TestRenderData::floorGridOnARectangleStaysWithinIt()
+{
+    // a table top 3 m × 1 m at y = 0.8, its width along x + z: the grid's lines run across it
+    // within its edges, as many as fit, and none leaves its plane
+    core::PlaneDesc table = planeOf({0, 1, 0}, 0.8);
+    table.size = {3.0, 1.0};
+    table.centre = {1.0, 0.8, -2.0};
+    table.axis = {1.0, 0.0, 1.0};
+    const ui::Sphere scene{QVector3D(1.0f, 1.0f, -2.0f), 1.5f};
+    const std::vector<float> grid = ui::packFloorGrids({table}, scene);
+    QCOMPARE_GT(grid.size(), std::size_t(0));
+    const QVector3D centre(1.0f, 0.8f, -2.0f);
+    const QVector3D along = QVector3D(1.0f, 0.0f, 1.0f).normalized();
+    const QVector3D across = QVector3D::crossProduct(QVector3D(0.0f, 1.0f, 0.0f), along);
+    float maxAlong = 0.0f, maxAcross = 0.0f;
+    for (std::size_t v = 0; v < grid.size(); v += ui::kVertexFloats) {
+        const QVector3D p(grid[v], grid[v + 1], grid[v + 2]);
+        QCOMPARE_GT(p.y(), 0.8f);
+        QCOMPARE_LT(p.y(), 0.801f);
+        const float a = std::abs(QVector3D::dotProduct(p - centre, along));
+        const float b = std::abs(QVector3D::dotProduct(p - centre, across));
+        QCOMPARE_LT(a, 1.5f + 1e-4f);
+        QCOMPARE_LT(b, 0.5f + 1e-4f);
+        maxAlong = std::max(maxAlong, a);
+        maxAcross = std::max(maxAcross, b);
+    }
+    // out to its edges
+    QCOMPARE_GT(maxAlong, 1.5f - 1e-4f);
+    QCOMPARE_GT(maxAcross, 0.5f - 1e-4f);
 }
 
 void TestRenderData::planeQuadsLieOnTheirPlanes()

@@ -57,6 +57,18 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
                 "x, y and z parts, and the pair becomes the selection"));
     addEntry(tr("Hover"), tr("What a click would pick is highlighted"));
 
+    // the camera: what View's keys above do not say
+    addSection(tr("Camera"));
+    addEntry(tr("A new scene, Edit › Generate"),
+             tr("A new scene is framed once it is shown; what Generate adds is framed with the rest of the scene "
+                "only when some of it is out of view"));
+    addEntry(tr("View › Orthographic"),
+             tr("Picking, zooming at the cursor, panning and the grid work as in perspective; kept for the next "
+                "session"));
+    addEntry(tr("Ground grid"),
+             tr("On the scene's floors (planes facing up, within about 8°), at their height; none in a scene "
+                "without a floor"));
+
     // files: what the menus do not show
     addSection(tr("Files"));
     addEntry(tr("Drop a .json file on the window"), tr("Open it (after asking about unsaved changes)"));

@@ -34,6 +34,45 @@ Rgb mix(const Rgb &a, const Rgb &b, float t)
 
 QVector3D toVector(const Eigen::Vector3d &v) { return QVector3D(float(v.x()), float(v.y()), float(v.z())); }
 
+// a grid's lines at most this many steps either side of its middle
+constexpr int kMaxHalfCells = 100;
+
+// lines across the rectangle centre ± halfU u ± halfV v, at whole steps from its centre, both ways
+void pushGridLines(std::vector<float> &out, const QVector3D &centre, const QVector3D &u, const QVector3D &v,
+                   float halfU, float halfV, float step)
+{
+    // a step's share is allowed for rounding, so that a grid of whole steps keeps its outer lines
+    const int cellsU = std::min(kMaxHalfCells, int(std::floor(halfU / step + 1.0e-3f)));
+    const int cellsV = std::min(kMaxHalfCells, int(std::floor(halfV / step + 1.0e-3f)));
+    for (int i = -cellsU; i <= cellsU; ++i) {
+        pushVertex(out, centre + u * (float(i) * step) - v * halfV, kGridColour);
+        pushVertex(out, centre + u * (float(i) * step) + v * halfV, kGridColour);
+    }
+    for (int i = -cellsV; i <= cellsV; ++i) {
+        pushVertex(out, centre + v * (float(i) * step) - u * halfU, kGridColour);
+        pushVertex(out, centre + v * (float(i) * step) + u * halfU, kGridColour);
+    }
+}
+
+// about ten cells across the scene
+float gridStep(const Sphere &scene) { return niceStep(std::max(scene.radius, 0.5f) / 4.0f); }
+
+// the square grid about the scene on the plane through origin with the unit normal n, snapped to
+// whole steps from origin so that it does not crawl as the scene moves
+void pushPlaneGrid(std::vector<float> &out, const QVector3D &origin, const QVector3D &n, const Sphere &scene)
+{
+    const float step = gridStep(scene);
+    const int halfCells = std::min(kMaxHalfCells, int(std::ceil(2.5f * std::max(scene.radius, 0.5f) / step)));
+    const float half = float(halfCells) * step;
+    // the plane's own directions: x along it, and the normal × that
+    const QVector3D u = (QVector3D(1.0f, 0.0f, 0.0f) - n.x() * n).normalized();
+    const QVector3D v = QVector3D::crossProduct(n, u);
+    const QVector3D fromOrigin = scene.centre - origin;
+    const float a = std::round(QVector3D::dotProduct(fromOrigin, u) / step) * step;
+    const float b = std::round(QVector3D::dotProduct(fromOrigin, v) / step) * step;
+    pushGridLines(out, origin + a * u + b * v, u, v, half, half, step);
+}
+
 }  // namespace
 
 Rgb strainColour(float strain, float fullStrain)
@@ -181,23 +220,40 @@ float niceStep(float length)
 
 std::vector<float> packGrid(const Sphere &scene, float height)
 {
-    // about ten cells across the scene, snapped to whole steps so the grid does not crawl
-    constexpr int kMaxHalfCells = 100;
-    const float radius = std::max(scene.radius, 0.5f);
-    const float step = niceStep(radius / 4.0f);
-    const int halfCells = std::min(kMaxHalfCells, int(std::ceil(2.5f * radius / step)));
-    const float cx = std::round(scene.centre.x() / step) * step;
-    const float cz = std::round(scene.centre.z() / step) * step;
-    const float half = halfCells * step;
-
     std::vector<float> vertices;
-    vertices.reserve(std::size_t(2 * halfCells + 1) * 4 * kVertexFloats);
-    for (int i = -halfCells; i <= halfCells; ++i) {
-        const float offset = i * step;
-        pushVertex(vertices, QVector3D(cx + offset, height, cz - half), kGridColour);
-        pushVertex(vertices, QVector3D(cx + offset, height, cz + half), kGridColour);
-        pushVertex(vertices, QVector3D(cx - half, height, cz + offset), kGridColour);
-        pushVertex(vertices, QVector3D(cx + half, height, cz + offset), kGridColour);
+    pushPlaneGrid(vertices, QVector3D(0.0f, height, 0.0f), QVector3D(0.0f, 1.0f, 0.0f), scene);
+    return vertices;
+}
+
+bool isFloor(const core::PlaneDesc &plane)
+{
+    const QVector3D n = toVector(plane.normal).normalized();
+    return n.y() >= kFloorNormalY;
+}
+
+std::vector<float> packFloorGrids(const std::vector<core::PlaneDesc> &planes, const Sphere &scene)
+{
+    std::vector<float> vertices;
+    for (const core::PlaneDesc &plane : planes) {
+        if (!isFloor(plane))
+            continue;
+        // a hair above the floor, so that the floor's translucent square does not hide it
+        const QVector3D n = toVector(plane.normal).normalized();
+        const QVector3D lift = n * (1.0e-4f * std::max(scene.radius, 0.5f));
+        if (!plane.bounded()) {
+            pushPlaneGrid(vertices, n * float(plane.offset) + lift, n, scene);
+            continue;
+        }
+        // a rectangle (a table top): lines across it, from its middle out to its edges, with no
+        // more of them than a whole plane's grid has
+        const core::Collider quad = core::makeCollider(plane, core::Settings{});
+        const float halfU = float(quad.halfWidth);
+        const float halfV = float(quad.halfHeight);
+        float step = gridStep(scene);
+        while (std::max(halfU, halfV) / step > float(kMaxHalfCells))
+            step = niceStep(2.5f * step);
+        pushGridLines(vertices, toVector(quad.centre) + lift, toVector(quad.axisU), toVector(quad.axisV), halfU, halfV,
+                      step);
     }
     return vertices;
 }

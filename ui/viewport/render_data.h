@@ -105,6 +105,15 @@ float niceStep(float length);
 // a square grid of lines on the plane y = height, centred under the scene and covering it
 std::vector<float> packGrid(const Sphere &scene, float height);
 
+// a plane whose unit normal is within about 8° of +y is a floor, and the ground grid lies on it
+inline constexpr float kFloorNormalY = 0.99f;
+bool isFloor(const core::PlaneDesc &plane);
+
+// the ground grid, on every floor and in its plane, a hair above it: on a whole plane a square
+// grid about the scene as packGrid's, on a rectangle (a table top) lines across it within its
+// edges; nothing when the scene has no floor, so that a grid never shows a floor that is not there
+std::vector<float> packFloorGrids(const std::vector<core::PlaneDesc> &planes, const Sphere &scene);
+
 // a unit sphere made by splitting each face of an icosahedron into four, `subdivisions` times:
 // 20·4^s triangles, counter-clockwise seen from outside; each vertex is also its normal
 struct SphereMesh {

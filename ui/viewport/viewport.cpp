@@ -59,8 +59,6 @@ bool buildProgram(QOpenGLShaderProgram &program, const QString &vertex, const QS
     return ok;
 }
 
-QVector3D toVector(const Eigen::Vector3d &v) { return QVector3D(float(v.x()), float(v.y()), float(v.z())); }
-
 }  // namespace
 
 // everything that lives in the GL context; destroyed with the context current
@@ -157,6 +155,7 @@ void Viewport::setSnapshot(std::shared_ptr<const core::Snapshot> snapshot)
     m_snapshot = std::move(snapshot);
     m_positionsStale = true;
     refreshSurface();
+    followSelection();
     if (!m_framed && m_snapshot && m_snapshot->particleCount() > 0) {
         frameAll();
         m_autoFramed = true;
@@ -183,6 +182,7 @@ void Viewport::setSelection(const std::vector<int> &particles)
 {
     m_selection = particles;
     m_selectionChanged = true;
+    followSelection();
     update();
 }
 
@@ -253,13 +253,7 @@ void Viewport::setParticleDrawing(ParticleDrawing drawing)
 
 void Viewport::frameAll()
 {
-    // the particles' bounding sphere, or a unit sphere at the origin for an empty scene
-    Sphere bounds{QVector3D(0.0f, 0.0f, 0.0f), 1.0f};
-    if (m_snapshot && m_snapshot->particleCount() > 0)
-        bounds = particleBounds(*m_snapshot);
-    if (!(bounds.radius > 0.0f))
-        bounds.radius = 1.0f;
-
+    const Sphere bounds = particleExtent();
     updateSceneBounds(bounds);
     m_camera.setViewportSize(size());
     m_camera.frameSphere(bounds.centre, bounds.radius);
@@ -578,18 +572,8 @@ void Viewport::uploadDecorations()
         return;
     Gpu &gpu = *m_gpu;
 
-    // the grid lies on the floor plane if the scene has one, else at y = 0 or under the particles
-    float floor = std::min(0.0f, m_sceneBounds.centre.y() - m_sceneBounds.radius);
-    for (const core::PlaneDesc &plane : m_planes) {
-        const QVector3D n = toVector(plane.normal).normalized();
-        if (n.y() > 0.999f) {
-            floor = float(plane.offset) / n.y();
-            break;
-        }
-    }
-
-    // a hair above the floor, so that the floor plane's square does not hide it
-    std::vector<float> lines = packGrid(m_sceneBounds, floor + 1.0e-4f * m_sceneBounds.radius);
+    // the grid on the floors, none in a scene without one
+    std::vector<float> lines = packFloorGrids(m_planes, m_sceneBounds);
     const std::vector<float> axes = packAxes(2.0f * niceStep(m_sceneBounds.radius / 4.0f));
     lines.insert(lines.end(), axes.begin(), axes.end());
     gpu.decorations.bind();

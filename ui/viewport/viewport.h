@@ -4,13 +4,14 @@
 // default, a mesh as the alternative — bench/viewport_fps.cpp compares them), springs as lines
 // coloured by strain (instanced quads a few pixels wide, with a legend in the corner), the
 // triangles of a spring mesh (a cloth) as a shaded two-sided sheet that torn springs open, planes
-// as translucent squares around the scene, a ground grid and the axes, and the steering arrow over
-// all (steering_arrow.h). The particles and springs
+// as translucent squares around the scene, a ground grid on the floors (planes facing up), the
+// axes, and the steering arrow over all (steering_arrow.h). The particles and springs
 // the sheet already shows are hidden unless the layers ask for them (or they are selected).
 // Positions are streamed once per new snapshot; radii, colours and marks are uploaded only when the
 // particles' radii or pins, or the selection, change. GL resources are made in initializeGL and
 // freed when the context goes away, as Qt's hellogl2 example does. renderImage() draws the same
 // scene (one drawing function for both) into an offscreen framebuffer of any size, for exports.
+// The camera's views (the presets, the projection, following the selection) are viewport_camera.cpp.
 
 #include "camera.h"
 #include "render_data.h"
@@ -96,6 +97,18 @@ public:
     Camera &camera() { return m_camera; }
     const Camera &camera() const { return m_camera; }
 
+    // the View menu's camera (viewport_camera.cpp): a preset looks along its axis at the current
+    // target, from just far enough for every particle to be in view; Default is the direction a
+    // scene opens with, framing the particles as Frame All does
+    void viewAlong(ViewPreset preset);
+    void setProjection(Projection projection);
+    // while on, the target follows the centroid of the selected particles in every new frame;
+    // turned off, the camera stays where it is
+    void setFollowSelection(bool on);
+    bool followsSelection() const { return m_followSelection; }
+    // whether every one of these particles (indices into the snapshot shown) is wholly in view
+    bool particlesInView(const std::vector<int> &particles) const;
+
     // the nearest particle whose sphere the ray through a pixel (logical) meets, or else whose
     // centre is within kPickPixels of the pixel on screen, so that tiny or far particles can still
     // be picked; -1 for none
@@ -158,6 +171,10 @@ private:
     void uploadSnapshot();
     void uploadDecorations();
     void updateSceneBounds(const Sphere &bounds);
+    // the particles' bounding sphere, or a unit sphere at the origin when there are none
+    Sphere particleExtent() const;
+    // the target to the selection's centroid, while following it
+    void followSelection();
 
     Camera m_camera;
     std::shared_ptr<const core::Snapshot> m_snapshot;
@@ -191,6 +208,7 @@ private:
     Sphere m_sceneBounds{QVector3D(0.0f, 0.0f, 0.0f), 1.0f};
     bool m_framed = false;
     bool m_autoFramed = false;  // framed by the first snapshot and not moved since
+    bool m_followSelection = false;
 
     // mouse gestures and frame timing
     Drag m_drag = Drag::None;

@@ -19,6 +19,7 @@
 #include "session/session_file.h"
 #include "ui/simulation/simulation_controller.h"
 #include "ui/panels/status_text.h"
+#include "camera_actions.h"
 #include "status_bar.h"
 #include "view_layer_actions.h"
 #include "ui/viewport/viewport.h"
@@ -104,8 +105,7 @@ MainWindow::MainWindow(QWidget *parent)
     // framed on a new scene once the worker shows it
     m_controller->follow(*m_document);
     connect(m_controller, &SimulationController::sceneReplaced, m_plots, &PlotsWidget::startOverAfter);
-    connect(m_controller, &SimulationController::sceneReplaced, this,
-            [this](std::uint64_t sequence) { m_frameAllAfter = sequence; });
+    connect(m_controller, &SimulationController::sceneReplaced, m_cameraActions, &CameraActions::frameAllWhenShown);
     connect(m_document, &SceneDocument::sceneChanged, this, &MainWindow::sceneChanged);
     connect(m_document, &SceneDocument::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
@@ -262,6 +262,8 @@ void MainWindow::createMenus()
     frameAll->setObjectName(QStringLiteral("actionFrameAll"));
     frameAll->setShortcuts({QKeySequence(Qt::Key_F), QKeySequence(Qt::Key_Home)});
     frameAll->setStatusTip(tr("Point the camera at the whole scene"));
+    m_cameraActions = new CameraActions(m_viewport, this);
+    m_viewMenu->addActions(m_cameraActions->actions());
     m_viewMenu->addSeparator();
     m_viewMenu->addActions((new ViewLayerActions(m_viewport, this))->actions());
     m_viewMenu->addSeparator();
@@ -575,10 +577,7 @@ void MainWindow::frameChanged()
     showTimeline(*frame);
     m_plots->addFrame(*frame);
     m_inspector->showSnapshot(frame->snapshot);
-    if (m_frameAllAfter != 0 && frame->appliedMessage >= m_frameAllAfter) {
-        m_frameAllAfter = 0;
-        m_viewport->frameAll();
-    }
+    m_cameraActions->frameShown(*frame);
 
     // the figures of the run
     const core::Snapshot &snapshot = *frame->snapshot;

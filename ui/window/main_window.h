@@ -33,6 +33,7 @@ namespace ui {
 class StatusBar;
 
 class AccuracyDialog;
+class CameraActions;
 class DocumentFiles;
 class EditTools;
 class GenerateDialog;
@@ -208,7 +209,7 @@ private:
     QString m_screenshotDirectory;
     Exporter *m_exporter = nullptr;
     Steering m_steering;
-    std::uint64_t m_frameAllAfter = 0;  // frame the view once the worker has applied this edit
+    CameraActions *m_cameraActions = nullptr;  // View's camera, and framing what is new
 
     // actions that change with the state
     QAction *m_playAction = nullptr;

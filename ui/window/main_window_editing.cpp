@@ -3,6 +3,7 @@
 
 #include "main_window.h"
 
+#include "camera_actions.h"
 #include "ui/viewport/edit_tools.h"
 #include "ui/dialogs/generate_dialog.h"
 #include "ui/dialogs/transform_dialog.h"
@@ -11,6 +12,7 @@
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
 #include "ui/panels/value_spin_box.h"
+#include "ui/simulation/simulation_controller.h"
 
 #include "core/validate.h"
 
@@ -200,6 +202,8 @@ void MainWindow::addGenerated()
     const QString what = m_generate->kindName();
     m_document->undoStack()->push(new SceneCommand(*m_document, tr("Generate %1").arg(what), std::move(edited)));
     m_tools->setSelection(added);
+    // once the worker shows it: framed with the rest if any of it is out of view
+    m_cameraActions->frameWhenShownIfHidden(m_controller->sync(), added.particles);
     statusBar()->showMessage(tr("Added %1: ").arg(what) + m_generate->countText(), kToolMessageMs);
 }
 
