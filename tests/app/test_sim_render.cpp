@@ -72,12 +72,13 @@ void TestSimRender::writesTheFramesOfTheRun()
              run.out.constData());
     QCOMPARE(ui::sequenceFramesIn(folder).size(), 4);
 
-    // each of the requested size, with something drawn, and the particles moving between them
+    // each of the requested size, with something drawn (the two particles and the axes: 680 pixels
+    // at the first frame; the scene has no floor, so no grid), and the particles moving between them
     QImage previous;
     for (int k = 0; k < 4; ++k) {
         const QImage frame(ui::sequenceFramePath(folder, k));
         QCOMPARE(frame.size(), QSize(321, 203));
-        QCOMPARE_GT(drawnPixels(frame), 1000);
+        QCOMPARE_GT(drawnPixels(frame), 300);
         if (k > 0)
             QVERIFY2(frame != previous, qPrintable(u"frame %1 is the same as the one before"_s.arg(k)));
         previous = frame;
