@@ -72,6 +72,7 @@ private slots:
     void floorGridsLieOnFloorsOnly();
     void floorGridOnARectangleStaysWithinIt();
     void planeQuadsLieOnTheirPlanes();
+    void planeQuadsMeetAtTheWalls();
     void rectanglesAreDrawnAsThemselves_data();
     void rectanglesAreDrawnAsThemselves();
     void icosphereIsAClosedOutwardUnitSphere_data();
@@ -410,6 +411,9 @@ void TestRenderData::planeQuadsLieOnTheirPlanes()
     planes[1].offset = 0.5;
     planes[2].normal = {0.0, 0.0, -1.0};
     planes[2].offset = 4.0;
+    // (two-sided, and the third with the scene behind it: no plane here walls the scene in, so
+    // none cuts another's square, which planeQuadsMeetAtTheWalls covers)
+    planes[0].twoSided = planes[1].twoSided = true;
     const std::vector<float> quads = ui::packPlaneQuads(planes, scene);
     QCOMPARE(quads.size(), std::size_t(3 * 6 * ui::kVertexFloats));
 
@@ -431,6 +435,54 @@ void TestRenderData::planeQuadsLieOnTheirPlanes()
         QCOMPARE_LT((sum / 6.0f - foot).length(), 1e-3f + (first - foot).length());
         QCOMPARE_GT((first - foot).length(), scene.radius);
     }
+}
+
+void TestRenderData::planeQuadsMeetAtTheWalls()
+{
+    // the pool: a floor and four walls 5 m from the middle, two balls 2 m out. The floor reaches
+    // the walls and stops there; each wall stands on the floor and ends at its neighbours
+    std::vector<core::PlaneDesc> planes(5);
+    planes[0].normal = {0.0, 1.0, 0.0};
+    const Eigen::Vector3d walls[] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int k = 0; k < 4; ++k) {
+        planes[std::size_t(k + 1)].normal = walls[k];
+        planes[std::size_t(k + 1)].offset = -5.0;
+    }
+    const ui::Sphere scene{QVector3D(0.0f, 0.5f, 0.25f), 2.6f};
+    const std::vector<float> quads = ui::packPlaneQuads(planes, scene);
+    QCOMPARE(quads.size() % (3 * ui::kVertexFloats), std::size_t(0));
+    const std::size_t count = quads.size() / ui::kVertexFloats;
+    QVERIFY(count >= 5 * 6);
+
+    // every corner on its plane and inside the pool; the floor's out to the walls on every side
+    float floorX = 0.0f, floorZ = 0.0f, wallBottom = 1e9f;
+    for (std::size_t v = 0; v < count; ++v) {
+        const float *f = quads.data() + v * ui::kVertexFloats;
+        QCOMPARE_LE(std::abs(f[0]), 5.0f + 1e-4f);
+        QCOMPARE_LE(std::abs(f[2]), 5.0f + 1e-4f);
+        QCOMPARE_GE(f[1], -1e-4f);
+        if (std::abs(f[1]) < 1e-4f) {
+            floorX = std::max(floorX, std::abs(f[0]));
+            floorZ = std::max(floorZ, std::abs(f[2]));
+        }
+        if (std::abs(std::abs(f[0]) - 5.0f) < 1e-4f)
+            wallBottom = std::min(wallBottom, f[1]);
+    }
+    QCOMPARE_GT(floorX, 5.0f - 1e-4f);  // before: the floor ended at 3.9 m, short of the walls
+    QCOMPARE_GT(floorZ, 5.0f - 1e-4f);
+    QCOMPARE_LT(wallBottom, 1e-4f);  // and the walls stood 3.4 m below the floor
+
+    // its grid ends at the walls too (it ran on to 6.3 m), and still reaches them
+    const std::vector<float> grid = ui::packFloorGrids(planes, scene);
+    QVERIFY(!grid.empty());
+    float gridX = 0.0f;
+    for (std::size_t v = 0; v < grid.size() / ui::kVertexFloats; ++v) {
+        const float *f = grid.data() + v * ui::kVertexFloats;
+        QCOMPARE_LE(std::abs(f[0]), 5.0f + 1e-4f);
+        QCOMPARE_LE(std::abs(f[2]), 5.0f + 1e-4f);
+        gridX = std::max(gridX, std::abs(f[0]));
+    }
+    QCOMPARE_GT(gridX, 5.0f - 1e-3f);
 }
 
 void TestRenderData::rectanglesAreDrawnAsThemselves_data()

@@ -231,17 +231,87 @@ bool isFloor(const core::PlaneDesc &plane)
     return n.y() >= kFloorNormalY;
 }
 
+namespace {
+
+// an unbounded one-sided plane with the scene's centre on its inner side: a wall of the room the
+// scene is in, which cuts the other planes' squares
+bool enclosesScene(const core::PlaneDesc &plane, const QVector3D &n, const Sphere &scene)
+{
+    return !plane.bounded() && !plane.twoSided && !n.isNull() &&
+           QVector3D::dotProduct(n, scene.centre) >= float(plane.offset);
+}
+
+// the part of a convex polygon on the inner side of the plane n·x = offset (n·x ≥ offset)
+std::vector<QVector3D> clipToInside(const std::vector<QVector3D> &polygon, const QVector3D &n, float offset)
+{
+    std::vector<QVector3D> kept;
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+        const QVector3D &a = polygon[k];
+        const QVector3D &b = polygon[(k + 1) % polygon.size()];
+        const float da = QVector3D::dotProduct(n, a) - offset;
+        const float db = QVector3D::dotProduct(n, b) - offset;
+        if (da >= 0.0f)
+            kept.push_back(a);
+        if ((da >= 0.0f) != (db >= 0.0f))
+            kept.push_back(a + (b - a) * (da / (da - db)));
+    }
+    return kept;
+}
+
+// keeps the part of each line (a pair of vertices from `first` on) inside the walls around the scene
+// other than `skip`: a pool's grid ends at its walls
+void clipLinesToWalls(std::vector<float> &vertices, std::size_t first, const std::vector<core::PlaneDesc> &planes,
+                      std::size_t skip, const Sphere &scene)
+{
+    std::vector<float> kept(vertices.begin(), vertices.begin() + std::ptrdiff_t(first));
+    for (std::size_t at = first; at + 2 * kVertexFloats <= vertices.size(); at += 2 * kVertexFloats) {
+        const QVector3D a(vertices[at], vertices[at + 1], vertices[at + 2]);
+        const QVector3D b(vertices[at + kVertexFloats], vertices[at + kVertexFloats + 1], vertices[at + kVertexFloats + 2]);
+        float from = 0.0f, to = 1.0f;
+        for (std::size_t q = 0; q < planes.size() && from <= to; ++q) {
+            const QVector3D n = toVector(planes[q].normal).normalized();
+            if (q == skip || !enclosesScene(planes[q], n, scene))
+                continue;
+            const float da = QVector3D::dotProduct(n, a) - float(planes[q].offset);
+            const float db = QVector3D::dotProduct(n, b) - float(planes[q].offset);
+            if (da < 0.0f && db < 0.0f)
+                to = -1.0f;
+            else if (da < 0.0f)
+                from = std::max(from, da / (da - db));
+            else if (db < 0.0f)
+                to = std::min(to, da / (da - db));
+        }
+        if (!(from < to))
+            continue;
+        // each end keeps its own colour
+        const float ends[2] = {from, to};
+        for (int e = 0; e < 2; ++e) {
+            const QVector3D x = a + (b - a) * ends[e];
+            const std::size_t source = at + std::size_t(e) * kVertexFloats;
+            kept.insert(kept.end(), {x.x(), x.y(), x.z()});
+            kept.insert(kept.end(), vertices.begin() + std::ptrdiff_t(source + 3),
+                        vertices.begin() + std::ptrdiff_t(source + kVertexFloats));
+        }
+    }
+    vertices = std::move(kept);
+}
+
+}  // namespace
+
 std::vector<float> packFloorGrids(const std::vector<core::PlaneDesc> &planes, const Sphere &scene)
 {
     std::vector<float> vertices;
-    for (const core::PlaneDesc &plane : planes) {
+    for (std::size_t p = 0; p < planes.size(); ++p) {
+        const core::PlaneDesc &plane = planes[p];
         if (!isFloor(plane))
             continue;
         // a hair above the floor, so that the floor's translucent square does not hide it
         const QVector3D n = toVector(plane.normal).normalized();
         const QVector3D lift = n * (1.0e-4f * std::max(scene.radius, 0.5f));
         if (!plane.bounded()) {
+            const std::size_t first = vertices.size();
             pushPlaneGrid(vertices, n * float(plane.offset) + lift, n, scene);
+            clipLinesToWalls(vertices, first, planes, p, scene);
             continue;
         }
         // a rectangle (a table top): lines across it, from its middle out to its edges, with no
@@ -333,11 +403,20 @@ std::vector<float> packAxes(float length)
 
 std::vector<float> packPlaneQuads(const std::vector<core::PlaneDesc> &planes, const Sphere &scene)
 {
-    const float half = 1.5f * std::max(scene.radius, 0.5f);
+    // the normals, and how far the walls around the scene are: a square must reach them
+    std::vector<QVector3D> normals;
+    float reach = 1.5f * std::max(scene.radius, 0.5f);
+    for (const core::PlaneDesc &plane : planes) {
+        normals.push_back(toVector(plane.normal).normalized());
+        if (enclosesScene(plane, normals.back(), scene))
+            reach = std::max(reach, QVector3D::dotProduct(normals.back(), scene.centre) - float(plane.offset));
+    }
+    const float half = reach;
     std::vector<float> vertices;
     vertices.reserve(planes.size() * 6 * kVertexFloats);
-    for (const core::PlaneDesc &plane : planes) {
-        const QVector3D n = toVector(plane.normal).normalized();
+    for (std::size_t p = 0; p < planes.size(); ++p) {
+        const core::PlaneDesc &plane = planes[p];
+        const QVector3D n = normals[p];
         if (n.isNull())
             continue;
 
@@ -360,10 +439,14 @@ std::vector<float> packPlaneQuads(const std::vector<core::PlaneDesc> &planes, co
         const QVector3D u = QVector3D::crossProduct(n, helper).normalized() * half;
         const QVector3D v = QVector3D::crossProduct(n, u).normalized() * half;
 
-        // two triangles
-        const QVector3D a = foot - u - v, b = foot + u - v, c = foot + u + v, d = foot - u + v;
-        for (const QVector3D &corner : {a, b, c, a, c, d})
-            pushVertex(vertices, corner, kPlaneColour, kPlaneAlpha);
+        // the square, cut by the walls around the scene, as a fan of triangles
+        std::vector<QVector3D> polygon{foot - u - v, foot + u - v, foot + u + v, foot - u + v};
+        for (std::size_t q = 0; q < planes.size() && polygon.size() >= 3; ++q)
+            if (q != p && enclosesScene(planes[q], normals[q], scene))
+                polygon = clipToInside(polygon, normals[q], float(planes[q].offset));
+        for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+            for (const QVector3D &corner : {polygon[0], polygon[k], polygon[k + 1]})
+                pushVertex(vertices, corner, kPlaneColour, kPlaneAlpha);
     }
     return vertices;
 }

@@ -111,7 +111,8 @@ bool isFloor(const core::PlaneDesc &plane);
 
 // the ground grid, on every floor and in its plane, a hair above it: on a whole plane a square
 // grid about the scene as packGrid's, on a rectangle (a table top) lines across it within its
-// edges; nothing when the scene has no floor, so that a grid never shows a floor that is not there
+// edges, the square cut where walls around the scene stand (a pool's grid ends at its walls);
+// nothing when the scene has no floor, so that a grid never shows a floor that is not there
 std::vector<float> packFloorGrids(const std::vector<core::PlaneDesc> &planes, const Sphere &scene);
 
 // a unit sphere made by splitting each face of an icosahedron into four, `subdivisions` times:
@@ -125,8 +126,10 @@ SphereMesh icosphere(int subdivisions);
 // the x, y and z axes from the origin in red, green and blue
 std::vector<float> packAxes(float length);
 
-// two triangles per plane, translucent: for an unbounded plane a square of it around the scene's
-// centre, for a rectangle (core::PlaneDesc::bounded) exactly the rectangle that collides
+// translucent triangles per plane: for a rectangle (core::PlaneDesc::bounded) exactly the rectangle
+// that collides; for an unbounded plane a square of it around the scene's centre, cut where it
+// leaves the room the other one-sided planes enclose the scene in (a pool's floor ends at its walls
+// and the walls stand on it), and wide enough to reach those walls
 std::vector<float> packPlaneQuads(const std::vector<core::PlaneDesc> &planes, const Sphere &scene);
 
 }  // namespace ui
