@@ -126,7 +126,9 @@ void SimulationRunner::stepOnceMessage()
         return;
     }
     // inside the recording: one step on through it; at its end, a new step
-    const std::optional<std::uint64_t> shown = m_scrubber.scrubStep();
+    // (from the step asked for, as stepBack)
+    const std::optional<std::uint64_t> pending = m_scrubber.pendingStep();
+    const std::optional<std::uint64_t> shown = pending ? pending : m_scrubber.scrubStep();
     if (shown && *shown < m_scrubber.timeline().lastStep()) {
         scrubTo(*shown + 1);
         return;
@@ -215,7 +217,9 @@ bool SimulationRunner::continueScrub()
 
 void SimulationRunner::stepBack()
 {
-    const std::uint64_t shown = m_scrubber.scrubStep().value_or(m_state.step);
+    // from the step asked for, not the one shown on the way there: a second step back while the
+    // first still replays from its keyframe (step 20, back to 19 from keyframe 10) went to 9
+    const std::uint64_t shown = m_scrubber.pendingStep().value_or(m_scrubber.scrubStep().value_or(m_state.step));
     if (shown > 0)
         scrubTo(shown - 1);
 }

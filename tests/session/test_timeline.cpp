@@ -174,6 +174,23 @@ void TestTimeline::scrubYieldsToMessages()
     waiting = false;
     QVERIFY(runner.continueScrub());
     QCOMPARE(core::stateHash(runner.shownState()), hashes[24]);
+
+    // Step Back twice, the second while the first still replays from its keyframe: two steps back
+    // from the step asked for, 22, not one back from the keyframe shown on the way (it went to 19),
+    // and Step while pending goes on from the step asked for too
+    waiting = true;
+    runner.apply(ui::StepBack{});
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(20));
+    QCOMPARE(runner.scrubber().pendingStep(), std::optional<std::uint64_t>(23));
+    runner.apply(ui::StepBack{});
+    QCOMPARE(runner.scrubber().pendingStep(), std::optional<std::uint64_t>(22));
+    runner.apply(ui::StepOnce{});
+    runner.apply(ui::StepBack{});
+    QCOMPARE(runner.scrubber().pendingStep(), std::optional<std::uint64_t>(22));
+    waiting = false;
+    QVERIFY(runner.continueScrub());
+    QCOMPARE(runner.scrubber().scrubStep(), std::optional<std::uint64_t>(22));
+    QCOMPARE(core::stateHash(runner.shownState()), hashes[22]);
 }
 
 void TestTimeline::slowScrubShowsEachStep()
