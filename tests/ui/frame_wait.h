@@ -11,7 +11,8 @@
 
 namespace test {
 
-// the newest frame once the worker has applied edit `sequence`, or null after timeoutMs
+// the newest frame once the worker has applied edit `sequence` and shows the state after it, or
+// null after timeoutMs
 inline std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::SimulationController &controller,
                                                              std::uint64_t sequence, int timeoutMs = 10000)
 {
@@ -19,17 +20,30 @@ inline std::shared_ptr<const ui::SimulationFrame> frameAfter(const ui::Simulatio
     const bool arrived = QTest::qWaitFor(
         [&] {
             frame = controller.frame();
-            return frame && frame->appliedMessage >= sequence;
+            // (a frame whose snapshot is behind it is followed at once by one with the snapshot)
+            return frame && frame->appliedMessage >= sequence && !frame->snapshotBehind;
         },
         timeoutMs);
     return arrived ? frame : nullptr;
 }
 
-// the newest frame once the worker has applied every edit made so far, or null after timeoutMs
+// the newest frame once the worker has applied every edit made so far and shows what they asked
+// for: every step taken (a Step cut short by the messages after it is owed, and taken after them)
+// and the step scrubbed to reached (the replay from the keyframe before it goes on after the
+// messages too), or null after timeoutMs
 inline std::shared_ptr<const ui::SimulationFrame> settledFrame(ui::SimulationController &controller,
                                                                int timeoutMs = 10000)
 {
-    return frameAfter(controller, controller.sync(), timeoutMs);
+    const std::uint64_t sequence = controller.sync();
+    std::shared_ptr<const ui::SimulationFrame> frame;
+    const bool arrived = QTest::qWaitFor(
+        [&] {
+            frame = controller.frame();
+            return frame && frame->appliedMessage >= sequence && !frame->snapshotBehind && frame->stepsOwed == 0 &&
+                   (!frame->timeline.scrubStep || *frame->timeline.scrubStep == frame->snapshot->step);
+        },
+        timeoutMs);
+    return arrived ? frame : nullptr;
 }
 
 // shows a window and makes it the active one, which shortcuts need; with no window manager it

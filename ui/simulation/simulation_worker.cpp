@@ -169,12 +169,9 @@ void SimulationWorker::tick()
 
 void SimulationWorker::makeSnapshot()
 {
-    QElapsedTimer clock;
-    clock.start();
     m_snapshot = m_runner.snapshot();
     m_snapshotModel = m_runner.shownModel();
     m_snapshotStale = false;
-    m_snapshotSeconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
 }
 
 void SimulationWorker::publish(Frame kind)
@@ -192,7 +189,8 @@ void SimulationWorker::publish(Frame kind)
     const bool sameState =
         !m_snapshotStale && sameModel && m_snapshot->step == shown.step && m_snapshot->time == shown.time;
     if (!sameState) {
-        if (kind == Frame::Answering && sameModel && m_snapshotSeconds > m_slowSnapshotSeconds) {
+        const std::int64_t elements = std::int64_t(frame->model->particleCount()) + frame->model->springCount();
+        if (kind == Frame::Answering && sameModel && elements > m_slowSnapshotElements) {
             // the answer goes now with the snapshot before; the new one comes in the next frame
             m_snapshotStale = true;
             frame->snapshotBehind = true;

@@ -39,8 +39,11 @@ public:
     static constexpr double kStepBudgetSeconds = 0.05;
     // ms between ticks while running
     static constexpr int kTickIntervalMs = 16;
-    // a snapshot that took longer than this (s) is made after the frame answering a message, not before
-    static constexpr double kSlowSnapshotSeconds = 0.02;
+    // a snapshot of more particles and springs together than this is made after the frame
+    // answering a message, not before: one of 278 002 (the 200 × 200 cloth) took 9.5 ms, one of
+    // 6 990 002 (the 1000 × 1000 cloth) 0.17 s. By size, not by the time the last one took, so
+    // that which frames go first does not depend on how busy the machine is
+    static constexpr std::int64_t kSlowSnapshotElements = 1000000;
 
     SimulationWorker(MessageQueue &messages, ReplyQueue &replies, LatestMailbox<SimulationFrame> &mailbox);
 
@@ -53,9 +56,9 @@ public:
     // the shortest time between two frames that bring nothing but new steps (ns), set by the UI
     // side to the pace it draws at; a frame that answers a message goes at once
     std::atomic<std::int64_t> &frameIntervalNs() { return m_frameIntervalNs; }
-    // how long a snapshot may take before a frame answering a message goes without it
-    // (kSlowSnapshotSeconds); set before the worker runs (the tests set 0 to see every answer go first)
-    void setSlowSnapshotSeconds(double seconds) { m_slowSnapshotSeconds = seconds; }
+    // how big a snapshot may be before a frame answering a message goes without it
+    // (kSlowSnapshotElements); set before the worker runs (the tests set 0 to see every answer go first)
+    void setSlowSnapshotElements(std::int64_t elements) { m_slowSnapshotElements = elements; }
     // the particle whose motion the plots' samples carry (-1: none), set by the UI side; read at
     // the start of each tick
     std::atomic<int> &plottedParticle() { return m_plottedParticle; }
@@ -75,10 +78,10 @@ private:
     void wake();
     void tick();
     // a frame of where the run is; answering: it answers messages, and goes at once even if its
-    // snapshot must wait (kSlowSnapshotSeconds)
+    // snapshot must wait (kSlowSnapshotElements)
     enum class Frame { Regular, Answering };
     void publish(Frame kind = Frame::Regular);
-    // the snapshot of the state shown, timed for kSlowSnapshotSeconds
+    // the snapshot of the state shown
     void makeSnapshot();
 
     MessageQueue &m_messages;
@@ -100,8 +103,7 @@ private:
     std::shared_ptr<const core::Snapshot> m_snapshot;
     std::shared_ptr<const core::Model> m_snapshotModel;
     bool m_snapshotStale = true;
-    double m_snapshotSeconds = 0.0;  // how long the latest took to make
-    double m_slowSnapshotSeconds = kSlowSnapshotSeconds;
+    std::int64_t m_slowSnapshotElements = kSlowSnapshotElements;
 
     // the rates, over the window m_window times
     QElapsedTimer m_window;
