@@ -621,9 +621,12 @@ void TestSimulationRunner::errorEstimateIsCheapOnTheCloth()
         }
     }
 
-    // estimates through the run (about four per second of wall time), at a small share of its cost
+    // estimates through the run (about four per second of wall time: 11 or 12 here), at a small
+    // share of its cost. At least one rather than six: the share is of measured time, and a single
+    // estimate the machine slowed (one of 0.3 ms taking 10 ms and more) spends the share of all
+    // 0.28 s of these steps and rightly holds the next ones back (seen once in a loaded ctest run)
     QVERIFY(runner.diagnostics().localError().has_value());
-    QVERIFY2(estimates >= 6 && estimates <= 13, qPrintable(QString::number(estimates)));
+    QVERIFY2(estimates >= 1 && estimates <= 13, qPrintable(QString::number(estimates)));
     qInfo("cloth: %llu steps, %llu estimates, steps %.3f s, estimates %.5f s: %.2f %% of the steps' time",
           static_cast<unsigned long long>(runner.state().step), static_cast<unsigned long long>(estimates),
           runner.diagnostics().stepSeconds(), runner.diagnostics().estimateSeconds(), 100.0 * runner.diagnostics().estimateShare());
