@@ -3,7 +3,7 @@
 // mouse and wheel; frame all by key; the style uploaded only when it changes; drawing again after
 // the context is replaced; and
 // the same view drawn offscreen at any size, with the camera scaled to it and its lines as much
-// wider; a cloth drawn as a sheet between its beads, holes where its springs tore, and the layers
+// wider, and smoothed as the view is; a cloth drawn as a sheet between its beads, holes where its springs tore, and the layers
 // that show its spheres and springs too; springs a few pixels wide, wider when selected, with the
 // legend to their colours while any is drawn; the steering arrow at the steered particle while
 // there is a push, as long as the push is strong, and gone without one.
@@ -164,6 +164,7 @@ private slots:
     void drawsAgainInANewContext();
     void rendersOffscreenAtAnySize_data();
     void rendersOffscreenAtAnySize();
+    void offscreenImagesAreSmoothedLikeTheView();
     void refusesImagesLargerThanTheDriverDraws();
     void clothIsDrawnAsASheet();
     void tornSpringsOpenHoles();
@@ -630,6 +631,25 @@ void TestViewport::rendersOffscreenAtAnySize()
     // the view on screen is as it was
     QCOMPARE(m_viewport->camera().viewportSize(), kViewportSize);
     QCOMPARE(grab(), onScreen);
+}
+
+void TestViewport::offscreenImagesAreSmoothedLikeTheView()
+{
+    // the view is multisampled here (Mesa's llvmpipe gives 4 samples), so outlines are smoothed
+    const QImage onScreen = grab().convertToFormat(QImage::Format_RGB32);
+    QCOMPARE_GT(m_viewport->samples(), 0);
+
+    // an image of the view's own size is the view's picture to the pixel, smoothed outlines
+    // included; an image drawn without samples differs from it all round every sphere, and one
+    // whose coverage was read as alpha has bright rims
+    QString error;
+    const QImage image = m_viewport->renderImage(onScreen.size(), &error);
+    QVERIFY2(!image.isNull(), qPrintable(error));
+    int differing = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            differing += image.pixel(x, y) != onScreen.pixel(x, y);
+    QCOMPARE(differing, 0);
 }
 
 void TestViewport::refusesImagesLargerThanTheDriverDraws()

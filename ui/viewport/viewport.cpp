@@ -366,6 +366,9 @@ void Viewport::initializeGL()
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
     m_maxImageSide = std::min({renderbuffer, texture, viewport[0], viewport[1]});
+    GLint maxSamples = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+    m_exportSamples = std::clamp(requestedFormat().samples(), 0, int(maxSamples));
 
     // the three programs: impostor spheres, mesh spheres, flat lines and triangles
     auto gpu = std::make_unique<Gpu>();
@@ -618,11 +621,12 @@ QImage Viewport::renderImage(QSize size, QString *error)
                         .arg(size.height())
                         .arg(m_maxImageSide));
 
-    // a framebuffer of the requested size, with depth and the multisampling the view asks for
+    // a framebuffer of the requested size, with depth and the multisampling the view asks for (the
+    // widget's format() is its context's, which has no samples: its own framebuffer has them)
     makeCurrent();
     QOpenGLFramebufferObjectFormat format;
     format.setAttachment(QOpenGLFramebufferObject::Depth);
-    format.setSamples(std::max(this->format().samples(), 0));
+    format.setSamples(m_exportSamples);
     QImage image;
     {
         QOpenGLFramebufferObject framebuffer(size, format);
@@ -632,6 +636,13 @@ QImage Viewport::renderImage(QSize size, QString *error)
             camera.setViewportSize(size);
             glViewport(0, 0, size.width(), size.height());
             drawScene(camera, framebuffer.format().samples(), size);
+            // the stored alpha made opaque: the outlines' coverage can leave it under one (the
+            // driver need not honour alpha-to-one), and the image, read as premultiplied, would
+            // then be divided by it into bright rims. The view on screen ignores alpha already.
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+            glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
             framebuffer.release();
             image = framebuffer.toImage().convertToFormat(QImage::Format_RGB32);
         }

@@ -201,6 +201,7 @@ private:
     int m_styleUploads = 0;
     int m_samples = 0;
     int m_maxImageSide = 0;
+    int m_exportSamples = 0;  // renderImage()'s multisampling: the view's, as far as the driver allows
     std::vector<float> m_springVertices;  // kept to reuse its memory
     std::vector<float> m_normals;         // likewise
 
