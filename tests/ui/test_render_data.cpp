@@ -73,6 +73,7 @@ private slots:
     void floorGridOnARectangleStaysWithinIt();
     void planeQuadsLieOnTheirPlanes();
     void planeQuadsMeetAtTheWalls();
+    void aViewTakesInTheFloorWallsCloseIn();
     void rectanglesAreDrawnAsThemselves_data();
     void rectanglesAreDrawnAsThemselves();
     void icosphereIsAClosedOutwardUnitSphere_data();
@@ -435,6 +436,41 @@ void TestRenderData::planeQuadsLieOnTheirPlanes()
         QCOMPARE_LT((sum / 6.0f - foot).length(), 1e-3f + (first - foot).length());
         QCOMPARE_GT((first - foot).length(), scene.radius);
     }
+}
+
+void TestRenderData::aViewTakesInTheFloorWallsCloseIn()
+{
+    // the pool: a floor and four walls 5 m from the middle around two balls
+    std::vector<core::PlaneDesc> planes(5);
+    planes[0].normal = {0.0, 1.0, 0.0};
+    const Eigen::Vector3d walls[] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int k = 0; k < 4; ++k) {
+        planes[std::size_t(k + 1)].normal = walls[k];
+        planes[std::size_t(k + 1)].offset = -5.0;
+    }
+    const ui::Sphere balls{QVector3D(1.0f, 0.3f, -0.5f), 1.5f};
+    const ui::Sphere pool = ui::withEnclosedFloors(planes, balls);
+    // the floor's four corners and the balls inside, and not much more: the table's half-diagonal
+    // is 7.07 m
+    for (const QVector3D corner : {QVector3D(5, 0, 5), QVector3D(-5, 0, 5), QVector3D(5, 0, -5), QVector3D(-5, 0, -5)})
+        QCOMPARE_LE((corner - pool.centre).length(), pool.radius + 1e-3f);
+    QCOMPARE_LE((balls.centre - pool.centre).length() + balls.radius, pool.radius + 1e-3f);
+    QCOMPARE_LT(pool.radius, 8.0f);
+
+    // a wall missing, a floor alone, walls without a floor, a table top: the scene's bounds as they are
+    auto same = [&](const std::vector<core::PlaneDesc> &some) {
+        const ui::Sphere framed = ui::withEnclosedFloors(some, balls);
+        return framed.centre == balls.centre && framed.radius == balls.radius;
+    };
+    QVERIFY(same({planes[0], planes[1], planes[2], planes[3]}));
+    QVERIFY(same({planes[0]}));
+    QVERIFY(same({planes[1], planes[2], planes[3], planes[4]}));
+    QVERIFY(same({}));
+    std::vector<core::PlaneDesc> table = planes;
+    table[0].size = {4.0, 4.0};
+    table[0].axis = {1.0, 0.0, 0.0};
+    QVERIFY(table[0].bounded());
+    QVERIFY(same(table));
 }
 
 void TestRenderData::planeQuadsMeetAtTheWalls()

@@ -160,6 +160,7 @@ private slots:
     void frameAllKeysBringEveryParticleIntoView_data();
     void frameAllKeysBringEveryParticleIntoView();
     void initialViewFramesTheSceneAtItsFinalSize();
+    void framesAPoolFromOutsideItsWalls();
     void reportsFrameTimes();
     void drawsAgainInANewContext();
     void rendersOffscreenAtAnySize_data();
@@ -557,6 +558,33 @@ void TestViewport::initialViewFramesTheSceneAtItsFinalSize()
         const QPointF pixel = viewport.camera().project(centre).value();
         QVERIFY2(sameHue(colourAt(image, viewport, pixel), colour, &why), qPrintable(why));
     }
+}
+
+void TestViewport::framesAPoolFromOutsideItsWalls()
+{
+    // a floor and four walls 5 m out around the small scene: framed from inside, the near wall
+    // would cover the whole view; framed whole, the eye is beyond a wall and the floor in view
+    std::vector<core::PlaneDesc> planes(5);
+    planes[0].normal = {0.0, 1.0, 0.0};
+    const Eigen::Vector3d walls[] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int k = 0; k < 4; ++k) {
+        planes[std::size_t(k + 1)].normal = walls[k];
+        planes[std::size_t(k + 1)].offset = -5.0;
+    }
+    m_viewport->setPlanes(planes);
+    m_viewport->frameAll();
+    const QVector3D eye = m_viewport->camera().eye();
+    QCOMPARE_GT(std::max(std::abs(eye.x()), std::abs(eye.z())), 5.0f);
+    for (const QVector3D corner : {QVector3D(5, 0, 5), QVector3D(-5, 0, 5), QVector3D(5, 0, -5), QVector3D(-5, 0, -5)}) {
+        const auto pixel = m_viewport->camera().project(corner);
+        QVERIFY(pixel.has_value());
+        QVERIFY(QRectF(QPointF(0, 0), QSizeF(kViewportSize)).contains(*pixel));
+    }
+
+    // and without the walls, the particles fill the view as before
+    m_viewport->setPlanes({planes[0]});
+    m_viewport->frameAll();
+    QCOMPARE_LT(m_viewport->camera().eye().length(), 5.0f);
 }
 
 void TestViewport::reportsFrameTimes()

@@ -401,6 +401,43 @@ std::vector<float> packAxes(float length)
     return vertices;
 }
 
+Sphere withEnclosedFloors(const std::vector<core::PlaneDesc> &planes, const Sphere &scene)
+{
+    // each floor as a square far wider than any room, cut by the walls: closed in, when every
+    // corner of it was cut away
+    constexpr float kFarther = 1.0e4f;
+    QVector3D lo = scene.centre - QVector3D(1, 1, 1) * scene.radius;
+    QVector3D hi = scene.centre + QVector3D(1, 1, 1) * scene.radius;
+    bool grown = false;
+    for (std::size_t p = 0; p < planes.size(); ++p) {
+        if (planes[p].bounded() || !isFloor(planes[p]))
+            continue;
+        const QVector3D n = toVector(planes[p].normal).normalized();
+        const QVector3D foot = scene.centre - (QVector3D::dotProduct(n, scene.centre) - float(planes[p].offset)) * n;
+        const QVector3D u = QVector3D::crossProduct(n, QVector3D(1, 0, 0)).normalized() * kFarther;
+        const QVector3D v = QVector3D::crossProduct(n, u).normalized() * kFarther;
+        std::vector<QVector3D> polygon{foot - u - v, foot + u - v, foot + u + v, foot - u + v};
+        for (std::size_t q = 0; q < planes.size() && polygon.size() >= 3; ++q) {
+            const QVector3D wall = toVector(planes[q].normal).normalized();
+            if (q != p && enclosesScene(planes[q], wall, scene))
+                polygon = clipToInside(polygon, wall, float(planes[q].offset));
+        }
+        const bool closed = polygon.size() >= 3 && std::all_of(polygon.begin(), polygon.end(), [&](const QVector3D &x) {
+                                return (x - foot).length() < 0.5f * kFarther;
+                            });
+        if (!closed)
+            continue;
+        for (const QVector3D &x : polygon) {
+            lo = QVector3D(std::min(lo.x(), x.x()), std::min(lo.y(), x.y()), std::min(lo.z(), x.z()));
+            hi = QVector3D(std::max(hi.x(), x.x()), std::max(hi.y(), x.y()), std::max(hi.z(), x.z()));
+        }
+        grown = true;
+    }
+    if (!grown)
+        return scene;
+    return Sphere{(lo + hi) * 0.5f, 0.5f * (hi - lo).length()};
+}
+
 std::vector<float> packPlaneQuads(const std::vector<core::PlaneDesc> &planes, const Sphere &scene)
 {
     // the normals, and how far the walls around the scene are: a square must reach them

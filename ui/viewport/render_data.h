@@ -126,6 +126,11 @@ SphereMesh icosphere(int subdivisions);
 // the x, y and z axes from the origin in red, green and blue
 std::vector<float> packAxes(float length);
 
+// what a view of the whole scene takes in: the scene's bounds, grown to hold a floor that walls
+// close in on every side (a pool's table, so that the view starts outside its walls, not inside
+// the near one); the scene's bounds alone where no walls close a floor in
+Sphere withEnclosedFloors(const std::vector<core::PlaneDesc> &planes, const Sphere &scene);
+
 // translucent triangles per plane: for a rectangle (core::PlaneDesc::bounded) exactly the rectangle
 // that collides; for an unbounded plane a square of it around the scene's centre, cut where it
 // leaves the room the other one-sided planes enclose the scene in (a pool's floor ends at its walls

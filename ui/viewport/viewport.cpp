@@ -256,7 +256,8 @@ void Viewport::frameAll()
     const Sphere bounds = particleExtent();
     updateSceneBounds(bounds);
     m_camera.setViewportSize(size());
-    m_camera.frameSphere(bounds.centre, bounds.radius);
+    const Sphere framed = withEnclosedFloors(m_planes, bounds);
+    m_camera.frameSphere(framed.centre, framed.radius);
     m_framed = true;
     m_autoFramed = false;
     update();

@@ -53,7 +53,8 @@ void Viewport::viewAlong(ViewPreset preset)
     // the target stays, so that what the user was looking at stays in the middle
     const Sphere bounds = particleExtent();
     updateSceneBounds(bounds);
-    m_camera.frameSphereFromTarget(bounds.centre, bounds.radius);
+    const Sphere framed = withEnclosedFloors(m_planes, bounds);
+    m_camera.frameSphereFromTarget(framed.centre, framed.radius);
     m_framed = true;
     m_autoFramed = false;
     update();
