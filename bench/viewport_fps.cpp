@@ -1,13 +1,19 @@
 // viewport_fps: frames per second of the viewport for 1k, 10k and 100k particles, impostor quads
 // against an instanced mesh sphere. Each frame gets a new snapshot (positions streamed, style kept),
 // as while a simulation runs. Each run lasts at least --seconds and three frames; the table gives
-// the median of --runs runs and their range.
+// the median of --runs runs and their range. --cloth N,M,...: N × N cloths instead (the generator's,
+// drawn as the editor draws them by default: a sheet that hides its spheres and springs).
 //
 // Without a display, run it under a virtual X server:
 //   xvfb-run -a -s "-screen 0 1280x1024x24" build/release/bench/viewport_fps
 
 #include "bench_common.h"
 #include "ui/viewport/viewport.h"
+
+#include "core/generators.h"
+#include "core/model.h"
+#include "core/snapshot.h"
+#include "core/state.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -45,6 +51,19 @@ std::shared_ptr<const core::Snapshot> lattice(int n, float phase)
     return s;
 }
 
+// a side × side cloth from the generator, flat; `phase` ripples it a little
+std::shared_ptr<const core::Snapshot> cloth(int side, float phase)
+{
+    core::ClothOptions options;
+    options.rows = options.cols = side;
+    const core::SceneDesc scene = core::makeCloth(options);
+    const auto model = core::compileModel(scene);
+    auto snapshot = std::make_shared<core::Snapshot>(*core::makeSnapshot(*model, core::makeState(*model, scene)));
+    for (std::size_t i = 0; i < snapshot->positions.size(); i += 3)
+        snapshot->positions[i + 1] += 0.01f * std::sin(phase + 0.1f * float(i % 997));
+    return snapshot;
+}
+
 // shows one snapshot and returns when it is on screen (false if it never got there)
 bool showFrame(ui::Viewport &viewport, std::shared_ptr<const core::Snapshot> snapshot)
 {
@@ -61,15 +80,18 @@ bool showFrame(ui::Viewport &viewport, std::shared_ptr<const core::Snapshot> sna
     return swapped;
 }
 
-// frames per second over one run
-double measure(ui::Viewport &viewport, const std::shared_ptr<const core::Snapshot> frames[2], double minSeconds)
+// frames per second over one run; `next`: the frame to show first, the other one is on screen
+// (the view does not draw the snapshot it shows again)
+double measure(ui::Viewport &viewport, const std::shared_ptr<const core::Snapshot> frames[2], int &next,
+               double minSeconds)
 {
     QElapsedTimer clock;
     clock.start();
     int count = 0;
     while (count < 3 || clock.nsecsElapsed() * 1e-9 < minSeconds) {
-        if (!showFrame(viewport, frames[count % 2]))
+        if (!showFrame(viewport, frames[next]))
             return 0.0;
+        next = 1 - next;
         ++count;
     }
     return count / (clock.nsecsElapsed() * 1e-9);
@@ -99,12 +121,17 @@ int main(int argc, char **argv)
                                         QStringLiteral("size"), QStringLiteral("992x678"));
     const QCommandLineOption drawingOption(QStringLiteral("drawing"), QStringLiteral("impostor, mesh or both."),
                                            QStringLiteral("which"), QStringLiteral("both"));
-    parser.addOptions({particlesOption, runsOption, secondsOption, sizeOption, drawingOption});
+    const QCommandLineOption clothOption(QStringLiteral("cloth"),
+                                         QStringLiteral("Comma-separated sides of square cloths, drawn as sheets, "
+                                                        "instead of particle lattices."),
+                                         QStringLiteral("list"));
+    parser.addOptions({particlesOption, runsOption, secondsOption, sizeOption, drawingOption, clothOption});
     parser.process(app);
 
     std::vector<int> counts;
-    for (const QString &text : parser.value(particlesOption).split(QLatin1Char(','), Qt::SkipEmptyParts))
-        counts.push_back(std::max(1, text.toInt()));
+    const bool cloths = parser.isSet(clothOption);
+    for (const QString &text : parser.value(cloths ? clothOption : particlesOption).split(QLatin1Char(','), Qt::SkipEmptyParts))
+        counts.push_back(std::max(cloths ? 2 : 1, text.toInt()));
     const int runs = std::max(1, parser.value(runsOption).toInt());
     const double seconds = std::max(0.0, parser.value(secondsOption).toDouble());
     const QStringList size = parser.value(sizeOption).split(QLatin1Char('x'));
@@ -124,7 +151,7 @@ int main(int argc, char **argv)
     QTextStream out(stdout);
     out << "viewport " << viewport.width() << "x" << viewport.height() << ", median of " << runs
         << " runs of at least " << seconds << " s\n\n";
-    out << "| particles |";
+    out << (cloths ? "| cloth |" : "| particles |");
     for (const auto &drawing : drawings)
         out << " " << drawing.second << " fps (range) |";
     out << "\n|---:|";
@@ -135,8 +162,12 @@ int main(int argc, char **argv)
 
     for (int n : counts) {
         // two frames to alternate, framed once
-        const std::shared_ptr<const core::Snapshot> frames[2] = {lattice(n, 0.0f), lattice(n, 1.0f)};
-        out << "| " << n << " |";
+        const std::shared_ptr<const core::Snapshot> frames[2] = {cloths ? cloth(n, 0.0f) : lattice(n, 0.0f),
+                                                                 cloths ? cloth(n, 1.0f) : lattice(n, 1.0f)};
+        if (cloths)
+            out << "| " << n << " × " << n << " |";
+        else
+            out << "| " << n << " |";
         for (const auto &[drawing, name] : drawings) {
             viewport.setParticleDrawing(drawing);
             viewport.frameAll();
@@ -144,8 +175,9 @@ int main(int argc, char **argv)
             viewport.frameAll();
             showFrame(viewport, frames[1]);
             std::vector<double> fps;
+            int next = 0;
             for (int run = 0; run < runs; ++run)
-                fps.push_back(measure(viewport, frames, seconds));
+                fps.push_back(measure(viewport, frames, next, seconds));
             const auto [lo, hi] = std::minmax_element(fps.begin(), fps.end());
             const QString cell = QStringLiteral(" %1 (%2–%3) |").arg(bench::median(fps), 0, 'f', 2).arg(*lo, 0, 'f', 2);
             out << cell.arg(*hi, 0, 'f', 2);

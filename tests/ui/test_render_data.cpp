@@ -60,6 +60,7 @@ private slots:
     void strainColourGrowsWithStrain();
     void styleColoursByPinAndSelection();
     void styleIgnoresSelectionOutOfRange();
+    void onlyTheParticlesDrawnAreGathered();
     void styleKeyNoticesWhatChangesTheStyle();
     void springLines();
     void brokenSpringsAreNotDrawn();
@@ -156,6 +157,33 @@ void TestRenderData::styleIgnoresSelectionOutOfRange()
     for (int i = 0; i < 3; ++i)
         QVERIFY(!style.selected(i));
     QCOMPARE(ui::packParticleStyle(core::Snapshot{}, {0}).count(), 0);
+}
+
+void TestRenderData::onlyTheParticlesDrawnAreGathered()
+{
+    // four particles, a sheet hides 1 and 2, 2 is selected: 0, 2 and 3 drawn
+    core::Snapshot s;
+    s.positions = {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3};
+    s.radii = {0.1f, 0.2f, 0.3f, 0.4f};
+    s.pinned = {0, 0, 0, 0};
+    const ui::ParticleStyle style = ui::packParticleStyle(s, {2}, -1, {0, 1, 1, 0});
+    const ui::DrawnParticles drawn = ui::drawnParticles(style);
+    QVERIFY(!drawn.all);
+    QCOMPARE(drawn.rows, (std::vector<std::uint32_t>{0, 2, 3}));
+    std::vector<float> gathered;
+    ui::gatherRows(s.positions.data(), 3, drawn.rows, gathered);
+    QCOMPARE(gathered, (std::vector<float>{0, 0, 0, 2, 2, 2, 3, 3, 3}));
+    ui::gatherRows(style.values.data(), ui::kStyleFloats, drawn.rows, gathered);
+    QCOMPARE(gathered.size(), std::size_t(3 * ui::kStyleFloats));
+    QCOMPARE(gathered[ui::kStyleFloats], 0.3f);  // particle 2's radius, now second
+
+    // nothing hidden: all, and no list to gather by; everything hidden: an empty list
+    const ui::DrawnParticles every = ui::drawnParticles(ui::packParticleStyle(s, {}));
+    QVERIFY(every.all);
+    QVERIFY(every.rows.empty());
+    const ui::DrawnParticles none = ui::drawnParticles(ui::packParticleStyle(s, {}, -1, {1, 1, 1, 1}));
+    QVERIFY(!none.all);
+    QVERIFY(none.rows.empty());
 }
 
 void TestRenderData::styleKeyNoticesWhatChangesTheStyle()

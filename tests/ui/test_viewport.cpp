@@ -801,6 +801,18 @@ void TestViewport::layersShowTheSheetsSpheresAndSprings()
     m_viewport->setSelection({5});
     image = grab();
     QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(5)), ui::kSelectedColour, &why), qPrintable(why));
+
+    // the hidden spheres are left out of the draw, not drawn at radius 0: the two drawn are each
+    // at their own place, and once nothing is selected none is drawn
+    m_viewport->setSelection({10, 5});
+    image = grab();
+    for (int particle : {5, 10})
+        QVERIFY2(sameHue(colourAt(image, *m_viewport, projected(particle)), ui::kSelectedColour, &why), qPrintable(why));
+    QVERIFY(isSheet(colourAt(image, *m_viewport, projected(6))));
+    m_viewport->setSelection({});
+    image = grab();
+    for (int particle : {5, 10})
+        QVERIFY(isSheet(colourAt(image, *m_viewport, projected(particle))));
 }
 
 void TestViewport::springsAreWideAndScaleWithTheImage()

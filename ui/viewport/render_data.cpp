@@ -118,6 +118,31 @@ ParticleStyle packParticleStyle(const core::Snapshot &snapshot, const std::vecto
     return style;
 }
 
+DrawnParticles drawnParticles(const ParticleStyle &style)
+{
+    DrawnParticles drawn;
+    const int n = style.count();
+    int first = 0;
+    while (first < n && style.radius(first) != 0.0f)
+        ++first;
+    if (first == n)
+        return drawn;
+    drawn.all = false;
+    drawn.rows.reserve(std::size_t(first));
+    for (int i = 0; i < n; ++i)
+        if (style.radius(i) != 0.0f)
+            drawn.rows.push_back(std::uint32_t(i));
+    return drawn;
+}
+
+void gatherRows(const float *from, int width, const std::vector<std::uint32_t> &rows, std::vector<float> &to)
+{
+    const std::size_t w = std::size_t(width);
+    to.resize(rows.size() * w);
+    for (std::size_t k = 0; k < rows.size(); ++k)
+        std::copy_n(from + rows[k] * w, w, to.data() + k * w);
+}
+
 bool StyleKey::matches(const core::Snapshot &snapshot) const
 {
     // bitwise, so that a radius that became NaN still counts as a change

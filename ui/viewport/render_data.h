@@ -56,6 +56,18 @@ struct ParticleStyle {
     bool selected(int i) const { return values[std::size_t(i) * kStyleFloats + 5] != 0.0f; }
 };
 
+// The particles a style draws, for the instanced draws to leave the others out altogether: a
+// hidden sphere (radius 0) still costs its vertices, and on a software renderer the 10⁶ spheres a
+// sheet hides took a third of a frame. `all`: every particle is drawn, in index order, and `rows`
+// is empty; else `rows` lists those drawn (radius not 0), in index order.
+struct DrawnParticles {
+    bool all = true;
+    std::vector<std::uint32_t> rows;
+};
+DrawnParticles drawnParticles(const ParticleStyle &style);
+// the given rows of an array of `width` floats a row, in order, into `to`
+void gatherRows(const float *from, int width, const std::vector<std::uint32_t> &rows, std::vector<float> &to);
+
 // selection: indices of selected particles, in any order; those out of range are ignored; hover:
 // the particle under the cursor (-1: none), drawn in the hover colour over any other; hidden: 1 per
 // particle not to be drawn (radius 0) unless selected or hovered, or empty for none

@@ -78,8 +78,13 @@ struct Viewport::Gpu {
     // per-particle data: positions streamed, style uploaded when it changes
     QOpenGLBuffer positions{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer styles{QOpenGLBuffer::VertexBuffer};
-    int particleCount = 0;  // streamed positions
-    int styleCount = 0;     // uploaded styles
+    int positionCount = 0;  // particles in `positions`, which the sheet's corners index
+    int particleCount = 0;  // instances with a position
+    int styleCount = 0;     // instances with a style
+    // the positions of the particles drawn, where a sheet hides the others (styles then holds
+    // theirs alone); the particles' VAOs read their positions from here while `compacted`
+    QOpenGLBuffer drawnPositions{QOpenGLBuffer::VertexBuffer};
+    bool compacted = false;
 
     // lines, a pair of vertices each, drawn as instances of the line program's quad
     QOpenGLBuffer lineCorners{QOpenGLBuffer::VertexBuffer};
@@ -398,7 +403,7 @@ void Viewport::initializeGL()
     gpu->lineCorners.allocate(kLineCorners, int(sizeof(kLineCorners)));
 
     // dynamic buffers, empty for now
-    for (QOpenGLBuffer *buffer : {&gpu->positions, &gpu->springs, &gpu->normals, &gpu->arrow}) {
+    for (QOpenGLBuffer *buffer : {&gpu->positions, &gpu->drawnPositions, &gpu->springs, &gpu->normals, &gpu->arrow}) {
         buffer->setUsagePattern(QOpenGLBuffer::StreamDraw);
         buffer->create();
     }
@@ -522,6 +527,7 @@ void Viewport::uploadSnapshot()
 {
     Gpu &gpu = *m_gpu;
     if (!m_snapshot) {
+        gpu.positionCount = 0;
         gpu.particleCount = 0;
         gpu.styleCount = 0;
         gpu.springLines = 0;
@@ -530,15 +536,25 @@ void Viewport::uploadSnapshot()
     }
     const core::Snapshot &s = *m_snapshot;
 
-    // the style, only when the radii, the pins or the selection changed
+    // the style, only when the radii, the pins or the selection changed; of the particles drawn
+    // alone where a sheet hides some
+    bool regather = false;
     if (m_selectionChanged || !m_styleKey.matches(s)) {
         const ParticleStyle style = packParticleStyle(s, m_selection, m_hoverParticle, m_hiddenParticles);
+        m_drawn = drawnParticles(style);
         gpu.styles.bind();
-        gpu.styles.allocate(style.values.data(), int(style.values.size() * sizeof(float)));
-        gpu.styleCount = style.count();
+        if (m_drawn.all) {
+            gpu.styles.allocate(style.values.data(), int(style.values.size() * sizeof(float)));
+            gpu.styleCount = style.count();
+        } else {
+            gatherRows(style.values.data(), kStyleFloats, m_drawn.rows, m_gathered);
+            gpu.styles.allocate(m_gathered.data(), int(m_gathered.size() * sizeof(float)));
+            gpu.styleCount = int(m_drawn.rows.size());
+        }
         m_styleKey.remember(s);
         m_selectionChanged = false;
         ++m_styleUploads;
+        regather = true;
     }
 
     // positions and spring lines, once per new snapshot
@@ -549,7 +565,7 @@ void Viewport::uploadSnapshot()
         gpu.springs.bind();
         gpu.springs.allocate(m_springVertices.data(), int(m_springVertices.size() * sizeof(float)));
         gpu.springLines = int(m_springVertices.size() / (2 * kVertexFloats));
-        gpu.particleCount = std::min<int>(s.particleCount(), int(s.positions.size() / 3));
+        regather = true;
         // the sheet's normals at these positions
         if (m_surface.triangleCount() > 0 && m_layers.surface) {
             surfaceNormals(s, m_surface.indices, m_normals);
@@ -557,6 +573,32 @@ void Viewport::uploadSnapshot()
             gpu.normals.allocate(m_normals.data(), int(m_normals.size() * sizeof(float)));
         }
         m_positionsStale = false;
+    }
+
+    // the drawn particles' positions, from the buffer the sheet reads when all are drawn
+    if (regather) {
+        const int n = std::min<int>(s.particleCount(), int(s.positions.size() / 3));
+        gpu.positionCount = n;
+        if (m_drawn.all) {
+            gpu.particleCount = n;
+        } else {
+            const auto end = std::lower_bound(m_drawn.rows.begin(), m_drawn.rows.end(), std::uint32_t(n));
+            m_drawn.rows.erase(end, m_drawn.rows.end());
+            gatherRows(s.positions.data(), 3, m_drawn.rows, m_gathered);
+            gpu.drawnPositions.bind();
+            gpu.drawnPositions.allocate(m_gathered.data(), int(m_gathered.size() * sizeof(float)));
+            gpu.particleCount = int(m_drawn.rows.size());
+        }
+        if (gpu.compacted != !m_drawn.all) {
+            gpu.compacted = !m_drawn.all;
+            QOpenGLBuffer &source = gpu.compacted ? gpu.drawnPositions : gpu.positions;
+            for (QOpenGLVertexArrayObject *vao : {&gpu.impostorVao, &gpu.meshVao}) {
+                vao->bind();
+                source.bind();
+                glVertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+                vao->release();
+            }
+        }
     }
 
     // the sheet's triangles, when they or the broken springs changed
@@ -699,7 +741,7 @@ void Viewport::drawScene(const Camera &camera, int samples, QSize pixels)
     }
 
     // the sheet, both sides, a little behind the lines that lie in it
-    if (m_layers.surface && gpu.surfaceIndexCount > 0 && gpu.particleCount > 0) {
+    if (m_layers.surface && gpu.surfaceIndexCount > 0 && gpu.positionCount > 0) {
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.0f, 1.0f);
         gpu.surfaceProgram.bind();

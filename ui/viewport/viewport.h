@@ -201,6 +201,8 @@ private:
     int m_styleUploads = 0;
     int m_samples = 0;
     int m_maxImageSide = 0;
+    DrawnParticles m_drawn;       // which particles the instanced draws show
+    std::vector<float> m_gathered;  // their styles or positions on the way to the buffers
     int m_exportSamples = 0;  // renderImage()'s multisampling: the view's, as far as the driver allows
     std::vector<float> m_springVertices;  // kept to reuse its memory
     std::vector<float> m_normals;         // likewise
