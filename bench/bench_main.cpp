@@ -12,8 +12,10 @@
 //   springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]
 //                                                    one xpbd sub-step's cost: the core's pass beside
 //                                                    the colour-by-colour pass it replaced
-//   springlab-bench pause --scene FILE [--runs R]     how long a Pause takes to stop a big scene's
-//                                                    step and to make the snapshot answering it
+//   springlab-bench pause --scene FILE [--runs R] [--timeline-mb M]
+//                                                    how long a Pause takes to stop a big scene's
+//                                                    step and to make the snapshot answering it;
+//                                                    then a Step and a scrub, paused
 //   springlab-bench write-references DIR             the reference problems as scene files
 //
 // The plots are painted into images, which needs a QGuiApplication for the fonts but no display:
@@ -50,7 +52,7 @@ const char *const kUsage =
     "       springlab-bench contacts [--out DIR] [--quick]\n"
     "       springlab-bench stiff [--out DIR] [--quick] [--size N]... [--stiffness K]...\n"
     "       springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]\n"
-    "       springlab-bench pause --scene FILE [--runs R]\n"
+    "       springlab-bench pause --scene FILE [--runs R] [--timeline-mb M]\n"
     "       springlab-bench write-references DIR\n";
 
 int badArguments(QTextStream &err, const QString &message)
@@ -216,17 +218,23 @@ int pause(const QStringList &arguments, QTextStream &out, QTextStream &err)
                                    QStringLiteral("FILE"));
     const QCommandLineOption runs(QStringLiteral("runs"), QStringLiteral("Pauses timed."), QStringLiteral("R"),
                                   QString::number(defaults.runs));
-    parser.addOptions({scene, runs});
+    const QCommandLineOption timeline(QStringLiteral("timeline-mb"),
+                                      QStringLiteral("The recording's budget, MB (the editor's default: 512)."),
+                                      QStringLiteral("M"), QString::number(defaults.timelineMegabytes));
+    parser.addOptions({scene, runs, timeline});
     if (const std::optional<int> done = parseMode(parser, arguments, out, err, QStringLiteral("pause")))
         return *done;
     bench::PauseLatencyOptions options;
-    bool ok = false;
+    bool ok = false, timelineOk = false;
     options.scene = parser.value(scene);
     options.runs = parser.value(runs).toInt(&ok);
+    options.timelineMegabytes = parser.value(timeline).toInt(&timelineOk);
     if (options.scene.isEmpty())
         return badArguments(err, QStringLiteral("pause: --scene FILE is needed"));
     if (!ok || options.runs < 1)
         return badArguments(err, QStringLiteral("pause: --runs must be a whole number of at least 1"));
+    if (!timelineOk || options.timelineMegabytes < 0 || options.timelineMegabytes > (1 << 20))
+        return badArguments(err, QStringLiteral("pause: --timeline-mb must be a whole number from 0 to 1048576"));
     return bench::runPauseLatency(options, out, err);
 }
 

@@ -37,6 +37,9 @@ int runPauseLatency(const PauseLatencyOptions &options, QTextStream &out, QTextS
     std::atomic<bool> waiting{false};
     ui::SimulationRunner runner;
     runner.setInterrupt(&waiting);
+    // a recording budget that holds a keyframe of this scene, so that the scrub below has one to
+    // go back to (the editor's default of 512 MB holds none at 10⁶ particles, and says so)
+    runner.apply(ui::SetTimelineBudget{std::size_t(options.timelineMegabytes) << 20});
     runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
     runner.apply(ui::Play{});
     const double h = runner.model()->timeStep;
@@ -85,6 +88,30 @@ int runPauseLatency(const PauseLatencyOptions &options, QTextStream &out, QTextS
         << *std::max_element(stops.begin(), stops.end()) * 1e3 << " ms\n";
     out << "snapshot: median " << median(snapshots) * 1e3 << " ms, largest "
         << *std::max_element(snapshots.begin(), snapshots.end()) * 1e3 << " ms\n";
+
+    // then, paused, how long a Step and a scrub back to the first step take to be answered: what
+    // the worker does before the frame answering them goes (that frame carries the snapshot before,
+    // at this size, and the next one the picture, whose making the snapshot figure above gives)
+    runner.apply(ui::Pause{});
+    clock.start();
+    runner.apply(ui::StepOnce{});
+    const double stepAnswer = secondsOf(clock);
+    out << "Step, paused: answered in " << stepAnswer * 1e3 << " ms, "
+        << (runner.stepsOwed() > 0 ? "the step owed, taken after the answer" : "the step taken before the answer")
+        << "\n";
+    runner.apply(ui::Pause{});  // the Step not wanted after all: dropped, as a Pause drops it
+    const std::uint64_t last = runner.state().step;
+    const ui::Timeline &timeline = runner.scrubber().timeline();
+    out << "recording: " << (timeline.usedBytes() >> 20) << " MB of a budget of " << (timeline.budget() >> 20)
+        << " MB, steps " << timeline.firstStep() << " to " << timeline.lastStep() << "\n";
+    clock.start();
+    runner.apply(ui::Scrub{0});
+    const double scrubAnswer = secondsOf(clock);
+    if (runner.scrubber().scrubStep() == std::optional<std::uint64_t>(0))
+        out << "scrub from step " << last << " to step 0: answered in " << scrubAnswer * 1e3
+            << " ms, showing step 0\n";
+    else
+        out << "scrub from step " << last << " to step 0: not recorded (a larger --timeline-mb keeps it)\n";
     out << "load average after: " << loadAverage() << "\n";
     return 0;
 }

@@ -3,7 +3,8 @@
 // big scene, without the window: the runner (session/simulation_runner.h) plays the scene, a second
 // thread raises the messages-waiting flag part way through a step, as a Pause does, and the bench
 // times how long the step takes to stop and put the state back, and how long the snapshot of the
-// state it stopped at takes to make (what the frame answering the Pause carries).
+// state it stopped at takes to make (what the frame answering the Pause carries); then, paused,
+// how long a Step and a scrub back to step 0 take to be answered.
 
 #include <QString>
 #include <QTextStream>
@@ -13,6 +14,7 @@ namespace bench {
 struct PauseLatencyOptions {
     QString scene;  // the scene file to play
     int runs = 7;   // Pauses timed, each at another point of a step
+    int timelineMegabytes = 512;  // the recording's budget (the editor's default)
 };
 
 int runPauseLatency(const PauseLatencyOptions &options, QTextStream &out, QTextStream &err);

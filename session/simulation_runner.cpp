@@ -135,6 +135,12 @@ void SimulationRunner::stepOnceMessage()
     }
     if (m_scrubber.isScrubbing())
         resumeFromScrub();
+    // a slow step is owed, not taken here: the worker answers the Step first (a frame saying so
+    // within milliseconds) and then takes it, where a later message may cut it (takeOwedSteps)
+    if (hasScene() && m_interrupt && stepsAreSlow()) {
+        m_stepsOwed = 1;
+        return;
+    }
     if (hasScene()) {
         m_lastGood = m_state;
         if (interruptibleStep(&m_lastGood))

@@ -59,7 +59,8 @@ public:
 
     // the flag that stops a long step for waiting messages (MessageQueue::waiting); null: never
     void setInterrupt(const std::atomic<bool> *flag);
-    // steps asked for by StepOnce and cut short, still to take
+    // steps asked for by StepOnce and not taken yet: cut short, or slow (with an interrupt flag
+    // set, a slow step is owed at once, so that the Step is answered before it is taken)
     std::uint64_t stepsOwed() const { return m_stepsOwed; }
     // takes the owed steps, each of which may be cut short again; true if one was taken
     bool takeOwedSteps();
@@ -174,7 +175,7 @@ private:
     core::State m_lastGood;  // the state before the latest steps, restored if they blow up
     const std::atomic<bool> *m_interrupt = nullptr;
     core::State m_stepStart;      // where the step in progress began, when it is slow (see above)
-    std::uint64_t m_stepsOwed = 0;  // StepOnce steps cut short, still to take
+    std::uint64_t m_stepsOwed = 0;  // StepOnce steps still to take (cut short or slow)
     double m_lastStepSeconds = 0.0;  // computing time of the latest step, s (a cut one: so far)
     bool m_running = false;
     double m_owed = 0.0;  // s of simulated time not yet covered by a whole step

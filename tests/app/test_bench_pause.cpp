@@ -62,6 +62,24 @@ void TestBenchPause::everyPauseCutsAStep()
                                QRegularExpression::MultilineOption)
                 .match(out)
                 .hasMatch());
+
+    // then, paused: the Step owed (its steps are slow) and the scrub back to step 0 shown
+    QVERIFY2(QRegularExpression(uR"(^Step, paused: answered in [0-9.e-]+ ms, the step owed, taken after the answer$)"_s,
+                                QRegularExpression::MultilineOption)
+                 .match(out)
+                 .hasMatch(),
+             run.out.constData());
+    QVERIFY2(QRegularExpression(uR"(^scrub from step [1-9]\d* to step 0: answered in [0-9.e-]+ ms, showing step 0$)"_s,
+                                QRegularExpression::MultilineOption)
+                 .match(out)
+                 .hasMatch(),
+             run.out.constData());
+
+    // with no recording, the scrub says it has nothing to show
+    const test::ProgramRun unrecorded =
+        test::runBench({u"pause"_s, u"--scene"_s, m_scene, u"--runs"_s, u"1"_s, u"--timeline-mb"_s, u"0"_s});
+    QVERIFY2(unrecorded.exitCode == 0, unrecorded.err.constData());
+    QVERIFY2(unrecorded.out.contains("to step 0: not recorded"), unrecorded.out.constData());
 }
 
 void TestBenchPause::badArguments()
@@ -71,6 +89,9 @@ void TestBenchPause::badArguments()
     QVERIFY2(none.err.contains("--scene FILE is needed"), none.err.constData());
     const test::ProgramRun runs = test::runBench({u"pause"_s, u"--scene"_s, m_scene, u"--runs"_s, u"0"_s});
     QCOMPARE(runs.exitCode, 2);
+    const test::ProgramRun budget = test::runBench({u"pause"_s, u"--scene"_s, m_scene, u"--timeline-mb"_s, u"-1"_s});
+    QCOMPARE(budget.exitCode, 2);
+    QVERIFY2(budget.err.contains("--timeline-mb"), budget.err.constData());
     const test::ProgramRun missing = test::runBench({u"pause"_s, u"--scene"_s, m_dir.filePath(u"none.json"_s)});
     QCOMPARE(missing.exitCode, 1);
     QVERIFY2(missing.err.contains("none.json"), missing.err.constData());

@@ -86,6 +86,7 @@ private slots:
     void accuracyPlanIsMadeFromTheRunnersState();
     void raisedInterruptCutsTheStepShort();
     void cutStepOnceIsOwedAndTakenAfter();
+    void slowStepOnceIsOwedBeforeItIsTaken();
     void pauseDropsTheOwedSteps();
     void slowStepStopsMidway();
 };
@@ -718,6 +719,39 @@ void TestSimulationRunner::cutStepOnceIsOwedAndTakenAfter()
     plain.apply(ui::SetSceneEdit{stiffer, ui::SceneChange::Parameters});
     plain.apply(ui::StepOnce{});
     plain.apply(ui::StepOnce{});
+    QVERIFY(sameMotion(runner.state(), plain.state()));
+    QCOMPARE(runner.stepsTaken(), 2u);
+}
+
+void TestSimulationRunner::slowStepOnceIsOwedBeforeItIsTaken()
+{
+    // a 32 × 32 cloth at 2000 sub-steps a step: tens of ms a step, over the 10 ms that makes a
+    // step slow. Once a step is known to be slow, a Step is owed at once and taken by
+    // takeOwedSteps, to the bit as a Step taken in place; without an interrupt flag it is taken in
+    // place as before
+    core::ClothOptions options;
+    options.rows = options.cols = 32;
+    options.substeps = 2000;
+    const auto scene = std::make_shared<const core::SceneDesc>(core::makeCloth(options));
+    std::atomic<bool> waiting{false};
+    ui::SimulationRunner runner = runnerWith(scene);
+    runner.setInterrupt(&waiting);
+    ui::SimulationRunner plain = runnerWith(scene);
+    runner.apply(ui::StepOnce{});
+    plain.apply(ui::StepOnce{});
+    QCOMPARE(runner.stepsOwed(), 0u);  // the first step: not known to be slow, taken in place
+    QCOMPARE(runner.state().step, 1u);
+    QVERIFY(runner.stepsAreSlow());
+    runner.apply(ui::StepOnce{});
+    QCOMPARE(runner.stepsOwed(), 1u);
+    QCOMPARE(runner.state().step, 1u);
+    QVERIFY(runner.takeOwedSteps());
+    QCOMPARE(runner.stepsOwed(), 0u);
+    QCOMPARE(runner.state().step, 2u);
+    QVERIFY(plain.stepsAreSlow());
+    plain.apply(ui::StepOnce{});
+    QCOMPARE(plain.stepsOwed(), 0u);
+    QCOMPARE(plain.state().step, 2u);
     QVERIFY(sameMotion(runner.state(), plain.state()));
     QCOMPARE(runner.stepsTaken(), 2u);
 }

@@ -1,7 +1,8 @@
 // SimulationWorker on the test's own thread, every frame it publishes taken as it comes: a frame
 // answering a message on a scene whose snapshot is slow to make goes at once with the snapshot
 // before it, marked behind, and the snapshot of the state it stopped at follows in the same tick;
-// where the snapshot is quick, the answer brings it. Waits are on frames, never fixed sleeps.
+// where the snapshot is quick, the answer brings it. A Step on a scene whose steps are slow is
+// answered by a frame that owes it before it is taken. Waits are on frames, never fixed sleeps.
 
 #include "ui/simulation/simulation_worker.h"
 
@@ -67,6 +68,7 @@ class TestSimulationWorker : public QObject {
 private slots:
     void pauseOnASlowSnapshotIsAnsweredBeforeItsPicture();
     void pauseOnAQuickSnapshotBringsIt();
+    void stepOnASlowSceneIsAnsweredBeforeItIsTaken();
 };
 
 void TestSimulationWorker::pauseOnASlowSnapshotIsAnsweredBeforeItsPicture()
@@ -78,7 +80,8 @@ void TestSimulationWorker::pauseOnASlowSnapshotIsAnsweredBeforeItsPicture()
     QVERIFY(w.send(ui::SetSceneEdit{slowCloth(), ui::SceneChange::Replace}));
     w.worker.frameIntervalNs().store(std::int64_t(3600) * 1000000000, std::memory_order_relaxed);
     QVERIFY(w.send(ui::Play{}));
-    QTest::qWait(300);  // ticks of the worker's timer: steps taken, none shown
+    // ticks of the worker's timer: steps taken, none shown
+    QVERIFY(QTest::qWaitFor([&] { return w.worker.stepsTaken() >= 2; }, 30000));
 
     const std::size_t before = w.frames.size();
     const std::optional<std::size_t> answer = w.send(ui::Pause{});
@@ -108,7 +111,7 @@ void TestSimulationWorker::pauseOnAQuickSnapshotBringsIt()
     QVERIFY(w.send(ui::SetSceneEdit{slowCloth(), ui::SceneChange::Replace}));
     w.worker.frameIntervalNs().store(std::int64_t(3600) * 1000000000, std::memory_order_relaxed);
     QVERIFY(w.send(ui::Play{}));
-    QTest::qWait(300);
+    QVERIFY(QTest::qWaitFor([&] { return w.worker.stepsTaken() >= 2; }, 30000));
     const std::optional<std::size_t> answer = w.send(ui::Pause{});
     QVERIFY(answer);
     const auto &paused = w.frames[*answer];
@@ -116,6 +119,28 @@ void TestSimulationWorker::pauseOnAQuickSnapshotBringsIt()
     QVERIFY(!paused->snapshotBehind);
     QCOMPARE(paused->snapshot->step, paused->shownStep);
     QVERIFY(paused->shownStep > 0);
+}
+
+void TestSimulationWorker::stepOnASlowSceneIsAnsweredBeforeItIsTaken()
+{
+    // paused after slow steps: a Step is answered by a frame that owes it, at the step shown,
+    // and the frame with the step taken follows
+    Worker w;
+    QVERIFY(w.send(ui::SetSceneEdit{slowCloth(), ui::SceneChange::Replace}));
+    QVERIFY(w.send(ui::StepOnce{}));  // the first step, in place: now the steps are known to be slow
+    const std::optional<std::size_t> paused = w.send(ui::Pause{});
+    QVERIFY(paused);
+    const std::uint64_t from = w.frames[*paused]->shownStep;
+    QCOMPARE(from, 1u);
+
+    const std::optional<std::size_t> answer = w.send(ui::StepOnce{});
+    QVERIFY(answer);
+    const auto &owed = w.frames[*answer];
+    QCOMPARE(owed->stepsOwed, 1u);
+    QCOMPARE(owed->shownStep, from);
+    QVERIFY(QTest::qWaitFor([&] { return w.frames.back()->stepsOwed == 0; }, 30000));
+    QCOMPARE(w.frames.back()->shownStep, from + 1);
+    QCOMPARE(w.frames.back()->snapshot->step, from + 1);
 }
 
 QTEST_GUILESS_MAIN(TestSimulationWorker)

@@ -53,6 +53,9 @@ void TestStatusText::figures()
     QCOMPARE(ui::timeText(1.25), QStringLiteral("t = 1.250 s"));
     QCOMPARE(ui::stepsText(true, 849.6), QStringLiteral("850 steps/s"));
     QCOMPARE(ui::stepsText(false, 849.6), QString());
+    QCOMPARE(ui::stepsText(false, 0.0, 1), QStringLiteral("taking a step…"));
+    QCOMPARE(ui::stepsText(false, 0.0, 3), QStringLiteral("taking 3 steps…"));
+    QCOMPARE(ui::stepsText(true, 12.4, 1), QStringLiteral("12 steps/s"));
     // slow runs keep two significant digits, never "0 steps/s"; 0 is "not measured yet"
     QCOMPARE(ui::stepsText(true, 12.4), QStringLiteral("12 steps/s"));
     QCOMPARE(ui::stepsText(true, 4.24), QStringLiteral("4.2 steps/s"));

@@ -51,8 +51,11 @@ QString rateText(bool running, double realTimeFactor)
     return QStringLiteral("×%1").arg(factor);
 }
 
-QString stepsText(bool running, double stepsPerSecond)
+QString stepsText(bool running, double stepsPerSecond, std::uint64_t owed)
 {
+    // paused with a Step still being taken (a slow scene: seconds at 10⁶ particles)
+    if (!running && owed > 0)
+        return owed == 1 ? tr("taking a step…") : tr("taking %1 steps…").arg(owed);
     if (!running)
         return QString();
     return stepsPerSecond > 0.0 ? tr("%1 steps/s").arg(rateFigure(stepsPerSecond)) : tr("… steps/s");

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <QString>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 namespace ui {
@@ -22,8 +23,9 @@ QString timeText(double seconds);
 // digits ("×0.0021"), never "×0.00"
 QString rateText(bool running, double realTimeFactor);
 // rates while running, empty while paused; 0 means "not measured yet" ("… steps/s"), and a slow
-// rate keeps two significant digits ("0.19 steps/s"), never "0 steps/s"
-QString stepsText(bool running, double stepsPerSecond);
+// rate keeps two significant digits ("0.19 steps/s"), never "0 steps/s"; paused with steps that
+// Step asked for still owed, "taking a step…"
+QString stepsText(bool running, double stepsPerSecond, std::uint64_t owed = 0);
 QString framesText(bool running, double framesPerSecond);
 QString energyText(double joules);
 

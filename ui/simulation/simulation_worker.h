@@ -63,6 +63,9 @@ public:
     // the start of each tick
     std::atomic<int> &plottedParticle() { return m_plottedParticle; }
 
+    // the steps the run has taken, on the worker's thread only (the tests, which drive it on theirs)
+    std::uint64_t stepsTaken() const { return m_runner.stepsTaken(); }
+
 protected:
     void customEvent(QEvent *event) override;
 

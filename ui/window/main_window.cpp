@@ -583,7 +583,7 @@ void MainWindow::frameChanged()
     const core::Snapshot &snapshot = *frame->snapshot;
     m_timeLabel->setText(timeText(snapshot.time));
     m_rateLabel->setText(rateText(frame->running, frame->realTimeFactor));
-    m_stepsLabel->setText(stepsText(frame->running, frame->stepsPerSecond));
+    m_stepsLabel->setText(stepsText(frame->running, frame->stepsPerSecond, frame->stepsOwed));
     m_framesLabel->setText(framesText(frame->running, m_pacer.framesPerSecond()));
     m_energyLabel->setText(energyText(snapshot.energies.total()));
     m_driftLabel->setText(driftText(frame->initialEnergies, snapshot.energies.total()));
