@@ -30,6 +30,7 @@ struct TimelineInfo {
     std::optional<std::uint64_t> scrubStep;  // the step shown while scrubbing
     std::size_t usedBytes = 0;
     std::size_t budgetBytes = 0;
+    std::size_t keyframeOverBudget = 0;  // a keyframe too large for the budget, so none is kept (bytes)
     std::vector<std::uint64_t> breakSteps;  // steps in which springs broke
     bool locked = false;  // a session is being recorded: no scrubbing until it ends
     // how often the run went on from a step scrubbed to, and the step it last did

@@ -154,11 +154,13 @@ void Timeline::add(TimelineKey key)
 {
     const bool newModel = m_keys.empty() || m_keys.back().model != key.model;
     const std::size_t bytes = key.bytes + (newModel ? modelBytes(key.model) : 0);
-    // a keyframe larger than the whole budget: nothing can be kept
+    // a keyframe larger than the whole budget: nothing can be kept, and the bar says why
     if (bytes > m_budget) {
         clear();
+        m_tooLarge = bytes;
         return;
     }
+    m_tooLarge = 0;
     // the breaks since the keyframe before: each keyframe lists every break since its state was
     // built, in the order they happened
     const std::uint64_t previous = m_keys.empty() ? 0 : m_keys.back().state.step;

@@ -81,6 +81,10 @@ public:
     // the keyframe a replay to step starts from: the newest at or before it (null if none)
     const TimelineKey *keyAtOrBefore(std::uint64_t step) const;
 
+    // the bytes of the latest keyframe that could not be kept because it alone is over the budget
+    // (its model and state: 693 MB for 10⁶ particles and 6·10⁶ springs); 0 once one was kept
+    std::size_t keyframeOverBudget() const { return m_tooLarge; }
+
     // the steps springs broke in, within the recording, ascending and each once
     const std::vector<std::uint64_t> &breakSteps() const { return m_breakSteps; }
 
@@ -92,6 +96,7 @@ private:
     std::deque<TimelineKey> m_keys;
     std::size_t m_budget = kDefaultBudget;
     std::size_t m_used = 0;
+    std::size_t m_tooLarge = 0;
     std::uint64_t m_lastStep = 0;
     double m_lastTime = 0.0;
     std::vector<std::uint64_t> m_breakSteps;  // kept up to date as keyframes come and go

@@ -57,6 +57,7 @@ private slots:
     void editWhileScrubbedDropsTheFuture();
     void scrubbedStepShowsItsOwnScene();
     void longRunStaysWithinTheBudget();
+    void aKeyframeOverTheBudgetIsReported();
     void breaksAreMarked();
     void noScrubbingWhileASessionIsRecorded();
 };
@@ -326,6 +327,26 @@ void TestTimeline::longRunStaysWithinTheBudget()
     // a smaller budget drops more at once
     runner.apply(ui::SetTimelineBudget{kBudget / 4});
     QVERIFY(runner.scrubber().timeline().usedBytes() <= kBudget / 4);
+}
+
+void TestTimeline::aKeyframeOverTheBudgetIsReported()
+{
+    // a budget smaller than one keyframe of the cloth: nothing recorded, and how much one needs
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetTimelineBudget{1024});
+    runner.apply(ui::SetSceneEdit{clothScene(), ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 12, hashes);
+    const ui::Timeline &timeline = runner.scrubber().timeline();
+    QVERIFY(timeline.empty());
+    QCOMPARE_GT(timeline.keyframeOverBudget(), std::size_t(1024));
+    const std::size_t needed = timeline.keyframeOverBudget();
+
+    // a budget that holds it: recorded again from the next keyframe, and nothing reported
+    runner.apply(ui::SetTimelineBudget{16 * needed});
+    stepAndRecord(runner, 12, hashes);
+    QVERIFY(!timeline.empty());
+    QCOMPARE(timeline.keyframeOverBudget(), std::size_t(0));
 }
 
 void TestTimeline::breaksAreMarked()

@@ -49,6 +49,7 @@ private slots:
     void scrubbingToTheStartDrawsTheStartAgain();
     void stepsBackAndForthAndPlaysOn();
     void budgetReachesTheWorker();
+    void saysWhenAStepIsOverTheBudget();
     void breaksAreRedTicks();
 
 private:
@@ -189,6 +190,30 @@ void TestTimelineBar::budgetReachesTheWorker()
     QCOMPARE(bar().budgetBox()->value(), 3);
     frame = settledFrame(controller());
     QCOMPARE(frame->timeline.budgetBytes, std::size_t(3) << 20);
+}
+
+void TestTimelineBar::saysWhenAStepIsOverTheBudget()
+{
+    // what a frame of the 10⁶-particle cloth says with the default budget: nothing recorded, since
+    // one keyframe needs 693 MB of the 512
+    ui::TimelineInfo info;
+    info.empty = true;
+    info.budgetBytes = std::size_t(512) << 20;
+    info.keyframeOverBudget = std::size_t(693) << 20;
+    bar().showTimeline(info, 3, 0.03);
+    auto *memory = bar().findChild<QLabel *>(QStringLiteral("timelineMemory"));
+    QVERIFY(memory);
+    QCOMPARE(memory->text(), QStringLiteral("off: a step needs 693.0 MB"));
+    QVERIFY2(memory->toolTip().contains(QStringLiteral("more than the budget of 512.0 MB")), qPrintable(memory->toolTip()));
+    QVERIFY(!bar().findChild<QSlider *>()->isEnabled());
+
+    // once a keyframe is kept, the figures as usual
+    info.empty = false;
+    info.keyframeOverBudget = 0;
+    info.usedBytes = std::size_t(700) << 20;
+    info.budgetBytes = std::size_t(1024) << 20;
+    bar().showTimeline(info, 3, 0.03);
+    QCOMPARE(memory->text(), QStringLiteral("700.0 / 1024.0 MB"));
 }
 
 void TestTimelineBar::breaksAreRedTicks()

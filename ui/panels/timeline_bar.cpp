@@ -123,11 +123,21 @@ void TimelineBar::showTimeline(const TimelineInfo &info, std::uint64_t shownStep
     const bool usable = !info.empty && !info.locked;
     m_slider->setEnabled(usable);
     m_back->setEnabled(usable && shownStep > info.firstStep);
-    m_slider->setToolTip(info.locked ? tr("No scrubbing while a session is recorded (Simulation › Record Session)")
-                                     : tr("Scrub through the recorded run; Play goes on from the step shown and "
-                                          "drops what was recorded after it. Red ticks: springs broke"));
+    const QString tooLarge =
+        info.empty && info.keyframeOverBudget > 0
+            ? tr("Nothing is recorded: one step of this scene (its model and state) needs %1 MB, more than the "
+                 "budget of %2 MB. Raise the budget to scrub")
+                  .arg(megabytes(info.keyframeOverBudget), megabytes(info.budgetBytes))
+            : QString();
+    m_slider->setToolTip(info.locked            ? tr("No scrubbing while a session is recorded (Simulation › Record Session)")
+                         : !tooLarge.isEmpty() ? tooLarge
+                                               : tr("Scrub through the recorded run; Play goes on from the step shown and "
+                                                    "drops what was recorded after it. Red ticks: springs broke"));
     m_time->setText(timeText());
     m_memory->setText(memoryText());
+    m_memory->setToolTip(tooLarge.isEmpty() ? tr("Memory the recording uses, of its budget; past the budget the "
+                                                 "oldest steps go")
+                                            : tooLarge);
 }
 
 QString TimelineBar::timeText() const
@@ -137,6 +147,8 @@ QString TimelineBar::timeText() const
 
 QString TimelineBar::memoryText() const
 {
+    if (m_info.empty && m_info.keyframeOverBudget > 0)
+        return tr("off: a step needs %1 MB").arg(megabytes(m_info.keyframeOverBudget));
     return tr("%1 / %2 MB").arg(megabytes(m_info.usedBytes), megabytes(m_info.budgetBytes));
 }
 

@@ -224,6 +224,7 @@ void SimulationWorker::publish(Frame kind)
     info.scrubStep = scrubber.scrubStep();
     info.usedBytes = timeline.usedBytes();
     info.budgetBytes = timeline.budget();
+    info.keyframeOverBudget = timeline.keyframeOverBudget();
     info.breakSteps = timeline.breakSteps();
     info.locked = m_runner.isRecording();
     info.resumes = scrubber.resumes();
