@@ -5,6 +5,8 @@
 
 #include "ui/viewport/render_data.h"
 
+#include "pool_planes.h"
+
 #include <QtTest>
 
 #include <array>
@@ -469,13 +471,7 @@ void TestRenderData::planeQuadsLieOnTheirPlanes()
 void TestRenderData::aViewTakesInTheFloorWallsCloseIn()
 {
     // the pool: a floor and four walls 5 m from the middle around two balls
-    std::vector<core::PlaneDesc> planes(5);
-    planes[0].normal = {0.0, 1.0, 0.0};
-    const Eigen::Vector3d walls[] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
-    for (int k = 0; k < 4; ++k) {
-        planes[std::size_t(k + 1)].normal = walls[k];
-        planes[std::size_t(k + 1)].offset = -5.0;
-    }
+    const std::vector<core::PlaneDesc> planes = test::poolPlanes();
     const ui::Sphere balls{QVector3D(1.0f, 0.3f, -0.5f), 1.5f};
     const ui::Sphere pool = ui::withEnclosedFloors(planes, balls);
     // the floor's four corners and the balls inside, and not much more: the table's half-diagonal
@@ -505,13 +501,7 @@ void TestRenderData::planeQuadsMeetAtTheWalls()
 {
     // the pool: a floor and four walls 5 m from the middle, two balls 2 m out. The floor reaches
     // the walls and stops there; each wall stands on the floor and ends at its neighbours
-    std::vector<core::PlaneDesc> planes(5);
-    planes[0].normal = {0.0, 1.0, 0.0};
-    const Eigen::Vector3d walls[] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
-    for (int k = 0; k < 4; ++k) {
-        planes[std::size_t(k + 1)].normal = walls[k];
-        planes[std::size_t(k + 1)].offset = -5.0;
-    }
+    const std::vector<core::PlaneDesc> planes = test::poolPlanes();
     const ui::Sphere scene{QVector3D(0.0f, 0.5f, 0.25f), 2.6f};
     const std::vector<float> quads = ui::packPlaneQuads(planes, scene);
     QCOMPARE(quads.size() % (3 * ui::kVertexFloats), std::size_t(0));

@@ -22,6 +22,7 @@
 
 #include "editor_test_setup.h"
 #include "line_thickness.h"
+#include "pool_planes.h"
 
 #include <cmath>
 
@@ -564,13 +565,7 @@ void TestViewport::framesAPoolFromOutsideItsWalls()
 {
     // a floor and four walls 5 m out around the small scene: framed from inside, the near wall
     // would cover the whole view; framed whole, the eye is beyond a wall and the floor in view
-    std::vector<core::PlaneDesc> planes(5);
-    planes[0].normal = {0.0, 1.0, 0.0};
-    const Eigen::Vector3d walls[] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
-    for (int k = 0; k < 4; ++k) {
-        planes[std::size_t(k + 1)].normal = walls[k];
-        planes[std::size_t(k + 1)].offset = -5.0;
-    }
+    const std::vector<core::PlaneDesc> planes = test::poolPlanes();
     m_viewport->setPlanes(planes);
     m_viewport->frameAll();
     const QVector3D eye = m_viewport->camera().eye();
