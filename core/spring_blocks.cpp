@@ -221,6 +221,10 @@ struct Pass {
     double h;
     int reach;  // SpringLayout::reach
     RunSet runs;
+    // raised from another thread to stop the step (Workspace::interrupt; null: never); each share
+    // then stops at its next block and says so in `cut`: the caller discards the half-done step
+    const std::atomic<bool> *interrupt = nullptr;
+    std::atomic<bool> *cut = nullptr;
 };
 
 // the window extended to hold particles [slot.hi, to): this thread's own from the arrays (not moved
@@ -507,6 +511,12 @@ bool stepShare(const Pass &pass, Slot &slot, int first, int last)
                 break;  // goes on into the next block
         }
         begin = end;
+        // a Pause on 10⁶ particles waited for the whole pass (66 ms on one thread): stop between
+        // blocks instead
+        if (begin < last && pass.interrupt && pass.interrupt->load(std::memory_order_relaxed)) {
+            pass.cut->store(true, std::memory_order_relaxed);
+            break;
+        }
         if (begin < last) {
             slideWindow(slot, std::max(0, begin - pass.reach));
             extendWindow(pass, slot, last, std::min(n, std::min(last, begin + kSpringBlock) + pass.reach));
@@ -565,7 +575,8 @@ bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double 
     if (work.blockScratch.size() != size)
         work.blockScratch.resize(size);  // on first use, and when the thread count changes
     const bool breakable = !state.springBroken.empty();
-    const Pass pass{model, state, h, reach, runSetFor(model, breakable)};
+    std::atomic<bool> cut = false;
+    const Pass pass{model, state, h, reach, runSetFor(model, breakable), work.interrupt, &cut};
     double *scratch = work.blockScratch.data();
     bool bad = false;
     if (breakable)
@@ -574,6 +585,11 @@ bool stepSpringBlocks(const Model &model, State &state, Workspace &work, double 
         bad = symplectic ? stepBlocks<false, true>(pass, scratch, inTurn)
                          : stepBlocks<false, false>(pass, scratch, inTurn);
     work.profile.forceEvaluations += 1;
+    if (cut.load(std::memory_order_relaxed)) {
+        // half the particles moved: the step stops here (stopsHere sees it) and is put back
+        work.interrupted = true;
+        ++work.springPassesCut;
+    }
     return !bad;
 }
 

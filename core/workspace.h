@@ -49,6 +49,9 @@ struct Workspace {
     bool interrupted = false;
     // the stop points the steps passed: how finely a step can be cut
     std::uint64_t stopPoints = 0;
+    // fused spring passes (spring_blocks) that the raised flag cut between two blocks of particles,
+    // where a stage-long wait would be too long on 10⁶ particles
+    std::uint64_t springPassesCut = 0;
     // the stop point (a value of stopPoints) at which a step stops as if asked to: for the tests
     // that cut a step at each of its stop points in turn; 0 in a run
     std::uint64_t stopAtPoint = 0;

@@ -6,7 +6,9 @@
 
 #include <QtTest>
 #include <atomic>
+#include <chrono>
 #include <cstring>
+#include <thread>
 
 class TestStep : public QObject {
     Q_OBJECT
@@ -24,6 +26,7 @@ private slots:
     void interruptStopsBeforeASubStep_data();
     void interruptStopsBeforeASubStep();
     void aStepCutAtAnyStopPointIsRetakenToTheBit();
+    void aStepCutInsideTheSpringPassIsRetakenToTheBit();
 };
 
 namespace {
@@ -297,6 +300,55 @@ void TestStep::aStepCutAtAnyStopPointIsRetakenToTheBit()
                  qPrintable(QStringLiteral("cut at stop point %1").arg(at)));
         QCOMPARE(cut.state.step, 1u);
     }
+}
+
+void TestStep::aStepCutInsideTheSpringPassIsRetakenToTheBit()
+{
+    // a 160 × 160 cloth on the fused lattice path without contacts: the spring pass is nearly all
+    // of a step, and it stops between two blocks of particles once the flag is up (at 10⁶
+    // particles the pass is 66 ms long, too long for a Pause). A second thread raises the flag at
+    // 12 points of a step; each step it cut, put back and taken again, has the bits of a step
+    // never cut, and some of the cuts fell inside the pass
+    core::ClothOptions options;
+    options.rows = options.cols = 160;
+    options.substeps = 4;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.settings.planeCollisions = false;
+    scene.settings.particleCollisions = false;
+    test::Sim plain = test::compile(scene);
+    QCOMPARE(plain.model->plan.subStep, core::SubStepPath::FusedLattice);
+    const auto began = std::chrono::steady_clock::now();
+    QVERIFY(plain.step());
+    const std::chrono::duration<double> stepLength = std::chrono::steady_clock::now() - began;
+
+    constexpr int kTries = 12;
+    int cuts = 0;
+    std::uint64_t inPass = 0;
+    for (int r = 0; r < kTries; ++r) {
+        test::Sim cut = test::compile(scene);
+        const core::State before = cut.state;
+        std::atomic<bool> flag{false};
+        cut.work.interrupt = &flag;
+        std::thread raiser([&] {
+            std::this_thread::sleep_for(stepLength * ((r + 0.5) / kTries));
+            flag.store(true, std::memory_order_relaxed);
+        });
+        const bool whole = cut.step();
+        raiser.join();
+        if (whole)
+            continue;  // the step ended before the flag
+        ++cuts;
+        QVERIFY(cut.work.interrupted);
+        QVERIFY(!cut.work.blowup);
+        inPass += cut.work.springPassesCut;
+        cut.state = before;
+        flag.store(false, std::memory_order_relaxed);
+        QVERIFY(cut.step());
+        QVERIFY2(cut.state.position == plain.state.position && cut.state.velocity == plain.state.velocity,
+                 qPrintable(QStringLiteral("cut at %1 of the step").arg((r + 0.5) / kTries)));
+    }
+    QCOMPARE_GT(cuts, 0);
+    QCOMPARE_GT(inPass, std::uint64_t(0));
 }
 
 QTEST_APPLESS_MAIN(TestStep)
