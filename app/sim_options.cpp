@@ -1,9 +1,9 @@
 #include "sim_options.h"
 
 #include "core/io/scene_words.h"
-#include "core/parameters.h"
-#include "core/solver_names.h"
-#include "core/validate.h"
+#include "core/model/parameters.h"
+#include "core/contacts/solver_names.h"
+#include "core/model/validate.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,13 +1,13 @@
 #pragma once
 // The command line of springlab-sim, parsed with QCommandLineParser and checked against the same
-// parameter table as scene files (core/parameters.h), so "--time-step 5" is refused with the
+// parameter table as scene files (core/model/parameters.h), so "--time-step 5" is refused with the
 // same words as "timeStep": 5 in a file.
 
 #include "sim_set.h"
 #include "sim_summary.h"
 
-#include "core/integrator.h"
-#include "core/scene.h"
+#include "core/integrators/integrator.h"
+#include "core/model/scene.h"
 
 #include <QJsonObject>
 #include <QSize>

@@ -3,7 +3,7 @@
 #include "ui/export/image_sequence.h"
 #include "ui/viewport/viewport.h"
 
-#include "core/snapshot.h"
+#include "core/model/snapshot.h"
 
 #include <QApplication>
 #include <QDir>

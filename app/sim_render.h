@@ -5,9 +5,9 @@
 // it stops with exit code 2 and says to run it under a virtual X server (xvfb-run -a). Every
 // other mode of springlab-sim runs without a display.
 
-#include "core/model.h"
-#include "core/scene.h"
-#include "core/state.h"
+#include "core/model/model.h"
+#include "core/model/scene.h"
+#include "core/model/state.h"
 
 #include <QCoreApplication>
 #include <QSize>

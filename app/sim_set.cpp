@@ -1,12 +1,12 @@
 // Design note. Each family of keys (settings, particles, springs, planes) has one table: the key as
 // the scene file spells it, the kind of value it takes, and how it is written into the element.
 // No range is written here: the changed scene is checked by core::findProblem against the
-// parameter table (core/parameters.h), as the file itself was when it was loaded.
+// parameter table (core/model/parameters.h), as the file itself was when it was loaded.
 
 #include "sim_set.h"
 
 #include "core/io/scene_words.h"
-#include "core/validate.h"
+#include "core/model/validate.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -4,7 +4,7 @@
 // true or false, a name, [x, y, z]), and the changed scene goes through core::findProblem, the
 // check every loaded file passes, so a value is refused with the file's own ranges and words.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <QJsonValue>
 #include <QString>

@@ -4,7 +4,7 @@
 // into one table (docs/batch.md). One list of fields makes both, so the JSON keys and the CSV
 // columns are the same names in the same order.
 
-#include "core/diagnostics.h"
+#include "core/model/diagnostics.h"
 
 #include <QByteArray>
 #include <QJsonObject>

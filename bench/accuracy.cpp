@@ -23,8 +23,8 @@
 #include "work_precision.h"
 #include "work_precision_plot.h"
 
-#include "core/model.h"
-#include "core/state.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 #include "core/step.h"
 
 #include <QDir>

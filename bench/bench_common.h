@@ -2,7 +2,7 @@
 // Small things every benchmark mode needs: the machine it ran on and how busy it was, process CPU
 // time, and an integrator's name as scene files spell it.
 
-#include "core/integrator.h"
+#include "core/integrators/integrator.h"
 
 #include <QDir>
 #include <QElapsedTimer>

@@ -10,7 +10,7 @@
 // differ from the core's beyond round-off and the benchmark checks only that the scene is the same
 // (throughput.cpp, docs/benchmarks.md). Bullet's types stay in bullet_cloth.cpp.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <Eigen/Core>
 #include <memory>

@@ -13,7 +13,7 @@
 // (docs/benchmarks.md), so the spheres' rotation can be locked (an angular factor of 0) to compare
 // like with like. Bullet's types stay in bullet_spheres.cpp.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <Eigen/Core>
 #include <memory>

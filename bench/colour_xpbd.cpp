@@ -2,7 +2,7 @@
 
 #include "core/parallel.h"
 #include "core/passes.h"
-#include "core/xpbd_layout.h"
+#include "core/integrators/xpbd_layout.h"
 
 #include <numeric>
 

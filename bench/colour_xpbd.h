@@ -2,12 +2,12 @@
 // xpbd's sub-step as the core first ran it, kept as the yardstick of `springlab-bench xpbd-substep`:
 // the springs coloured greedily over the whole model, projected colour by colour with Eigen columns,
 // one spring at a time, each colour a parallel loop of its own (so a barrier a colour). The physics
-// is the core's (core/xpbd.cpp, one constraint pass a sub-step); only the order of the springs and
+// is the core's (core/integrators/xpbd.cpp, one constraint pass a sub-step); only the order of the springs and
 // the organisation of the loop differ, which is what the benchmark measures.
 
-#include "core/model.h"
-#include "core/state.h"
-#include "core/workspace.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
+#include "core/model/workspace.h"
 
 #include <vector>
 

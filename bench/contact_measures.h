@@ -2,7 +2,7 @@
 // What the contacts benchmark reads off a run, the same way for either engine: from positions,
 // velocities, masses and radii alone, so the core and Bullet are judged by one ruler.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <Eigen/Core>
 #include <optional>

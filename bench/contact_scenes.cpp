@@ -1,6 +1,6 @@
 #include "contact_scenes.h"
 
-#include "core/generators.h"
+#include "core/model/generators.h"
 
 #include <cmath>
 #include <cstdint>

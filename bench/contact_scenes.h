@@ -4,7 +4,7 @@
 // build from (the core, and Bullet's rigid spheres in bullet_spheres.h), with what the benchmark
 // measures on it and, for the heap, the rate at which its balls are poured in.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <string>
 

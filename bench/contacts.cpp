@@ -43,11 +43,11 @@
 #include "bullet_spheres.h"
 #endif
 
-#include "core/model.h"
-#include "core/state.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 #include "core/step.h"
 #include "core/threads.h"
-#include "core/workspace.h"
+#include "core/model/workspace.h"
 
 #include <QDir>
 #include <QElapsedTimer>

@@ -15,7 +15,7 @@
 #include "ui/document/document_files.h"
 #include "ui/document/scene_edits.h"
 
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/io/scene_file.h"
 
 #include <QCommandLineParser>

@@ -7,7 +7,7 @@
 // particles never move); only the organisation of the data and the calls differs, which is what
 // the benchmark measures (docs/benchmarks.md).
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <Eigen/Core>
 #include <memory>

@@ -1,11 +1,11 @@
 #pragma once
-// The plain reference of the throughput benchmark: the physics of core/gravity.cpp,
-// core/springs.cpp and symplectic Euler (core/integrate.cpp) as the simplest loops over flat
+// The plain reference of the throughput benchmark: the physics of core/forces/gravity.cpp,
+// core/springs/springs.cpp and symplectic Euler (core/integrators/integrate.cpp) as the simplest loops over flat
 // arrays, on one thread. No Eigen, no step plan, no profile, no checks: what a careful
 // programmer writes in an afternoon. Measured side by side with the core, it shows what the
 // core's structure costs or saves (docs/benchmarks.md).
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <Eigen/Core>
 #include <vector>

@@ -5,7 +5,7 @@
 // stiff) their decades and grid, and for every plot of integrators their colours. The plots
 // themselves draw their own lines and legends.
 
-#include "core/integrator.h"
+#include "core/integrators/integrator.h"
 
 #include <QColor>
 #include <QFont>

@@ -1,4 +1,4 @@
-// The exact answers used here, from the closed forms in core/reference.h:
+// The exact answers used here, from the closed forms in core/integrators/reference.h:
 //
 // 1. oscillator: the free particle sits at (l0 + u(T), 0, 0), u the stretch of the exact solution.
 // 2. bounce: the ball falls from rest, so before the first impact y = H - g t²/2. Impact n happens
@@ -13,8 +13,8 @@
 // simulation, so problems 2 and 3 measure how well each integrator lives with that, not its order.
 #include "reference_problems.h"
 
-#include "core/generators.h"
-#include "core/reference.h"
+#include "core/model/generators.h"
+#include "core/integrators/reference.h"
 
 #include <cassert>
 #include <cmath>

@@ -3,7 +3,7 @@
 // where one exists, the exact positions at that time. The same scenes are shipped in
 // resources/scenes/reference/ (written by `springlab-bench write-references`).
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <Eigen/Core>
 #include <optional>

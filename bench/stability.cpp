@@ -1,7 +1,7 @@
 // The stability benchmark. For each explicit integrator and each cell of a grid of link stiffness
 // (N/m), particle mass (kg) and chain length, the largest stable time step is found by bisection
 // (stable: the energy stays below 10× its start at every step of the trial, see stability_sweep.h)
-// and set against the limit core/stability.h predicts from ω_max of the chain.
+// and set against the limit core/integrators/stability.h predicts from ω_max of the chain.
 //
 // - The chain's dynamics depend on k and m only through √(k/m), so the grid covers the limit over
 //   many decades of time step; the ratio measured / theory should not move across it. Cells whose
@@ -16,7 +16,7 @@
 #include "stability_plot.h"
 #include "stability_sweep.h"
 
-#include "core/parameters.h"
+#include "core/model/parameters.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -146,7 +146,7 @@ int runStability(const StabilityOptions &options, QTextStream &out)
                .arg(kEnergyGrowthLimit)
                .arg(grid.search.steps)
                .arg(grid.search.relativeWidth);
-    out << "ratio = measured largest stable step / theoretical limit (core/stability.h)\n\n";
+    out << "ratio = measured largest stable step / theoretical limit (core/integrators/stability.h)\n\n";
     out.flush();
 
     // every explicit integrator on every cell

@@ -1,6 +1,6 @@
 #pragma once
 // `springlab-bench stability`: for each explicit integrator, the largest stable time step measured
-// on spring chains across stiffness and mass, against the limit core/stability.h predicts; and
+// on spring chains across stiffness and mass, against the limit core/integrators/stability.h predicts; and
 // implicit Euler run at 100 times that limit (see stability.cpp and docs/benchmarks.md).
 
 #include <QString>

@@ -116,7 +116,7 @@ QImage drawStabilityMap(const QString &title, const std::vector<StabilityPoint> 
     painter.drawLine(QPointF(plot.left(), toY(1.0)), QPointF(plot.right(), toY(1.0)));
 
     // the frame and the axis labels, with units
-    drawPlotFrame(painter, plot, QStringLiteral("theoretical stability limit (s), core/stability.h"),
+    drawPlotFrame(painter, plot, QStringLiteral("theoretical stability limit (s), core/integrators/stability.h"),
                   QStringLiteral("measured largest stable step / theoretical limit"));
 
     // the cells, hollow ones first so the filled ones stay visible where they coincide

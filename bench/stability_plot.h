@@ -4,7 +4,7 @@
 // colour per integrator, filled markers for the shortest chain and hollow ones for the longest.
 // Needs a QGuiApplication for the text (the offscreen platform will do).
 
-#include "core/integrator.h"
+#include "core/integrators/integrator.h"
 
 #include <QImage>
 #include <QSize>

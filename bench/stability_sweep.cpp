@@ -1,10 +1,10 @@
 #include "stability_sweep.h"
 
-#include "core/diagnostics.h"
-#include "core/generators.h"
-#include "core/model.h"
-#include "core/stability.h"
-#include "core/state.h"
+#include "core/model/diagnostics.h"
+#include "core/model/generators.h"
+#include "core/model/model.h"
+#include "core/integrators/stability.h"
+#include "core/model/state.h"
 #include "core/step.h"
 
 #include <cmath>

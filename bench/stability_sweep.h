@@ -1,9 +1,9 @@
 #pragma once
 // The measurement behind `springlab-bench stability`: on a spring chain, the largest time step an
-// integrator stays stable at, found by bisection, next to the limit core/stability.h predicts.
+// integrator stays stable at, found by bisection, next to the limit core/integrators/stability.h predicts.
 
-#include "core/integrator.h"
-#include "core/scene.h"
+#include "core/integrators/integrator.h"
+#include "core/model/scene.h"
 
 #include <optional>
 
@@ -29,7 +29,7 @@ inline constexpr double kEnergyGrowthLimit = 10.0;
 // linearly and the linear theory applies without approximation
 core::SceneDesc stabilityChain(const ChainCase &chain);
 
-// the largest stable sub-step core/stability.h predicts for this chain (s)
+// the largest stable sub-step core/integrators/stability.h predicts for this chain (s)
 double theoreticalStep(const core::SceneDesc &scene, core::Integrator integrator);
 
 // whether the chain run with `integrator` at `timeStep` for `steps` steps keeps its energy below

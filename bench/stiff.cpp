@@ -35,10 +35,10 @@
 #include "stiff_plot.h"
 #include "stiff_scene.h"
 
-#include "core/diagnostics.h"
-#include "core/model.h"
-#include "core/stability.h"
-#include "core/state.h"
+#include "core/model/diagnostics.h"
+#include "core/model/model.h"
+#include "core/integrators/stability.h"
+#include "core/model/state.h"
 #include "core/step.h"
 #include "core/threads.h"
 

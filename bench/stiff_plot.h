@@ -5,7 +5,7 @@
 // estimates hollow and joined by a dashed line. Needs a QGuiApplication for the text (the
 // offscreen platform will do).
 
-#include "core/integrator.h"
+#include "core/integrators/integrator.h"
 
 #include <QImage>
 #include <QSize>

@@ -5,8 +5,8 @@
 // the two corners of its first row, structural springs of k, shear of 0.2 k and bend of 0.03 k (the
 // examples' proportions), no contacts, steps of 0.01 s.
 
-#include "core/generators.h"
-#include "core/scene.h"
+#include "core/model/generators.h"
+#include "core/model/scene.h"
 
 #include <string>
 

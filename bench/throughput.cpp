@@ -40,11 +40,11 @@
 #include "throughput_plot.h"
 #include "throughput_scenes.h"
 
-#include "core/model.h"
-#include "core/state.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 #include "core/step.h"
 #include "core/threads.h"
-#include "core/validate.h"
+#include "core/model/validate.h"
 
 #include <QDir>
 #include <QElapsedTimer>

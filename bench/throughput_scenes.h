@@ -2,13 +2,13 @@
 // The scenes of the throughput benchmark and the bytes a sub-step of each must move at the least
 // (the accounting is spelled out in throughput_scenes.cpp and docs/benchmarks.md).
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 namespace bench {
 
 // an n × n cloth (core::makeCloth: structural, shear and bend springs, about 6 per particle, the
 // two corners of its first row pinned) under gravity, no contacts, symplectic Euler, one sub-step
-// of 0.5 ms per step (inside the stability limit: ω h ≤ 1.2, see core/generators.h)
+// of 0.5 ms per step (inside the stability limit: ω h ≤ 1.2, see core/model/generators.h)
 core::SceneDesc throughputCloth(int n);
 
 // `particles` particles, no springs, in a closed box of six planes at a volume fraction of 30%,

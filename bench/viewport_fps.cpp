@@ -10,10 +10,10 @@
 #include "bench_common.h"
 #include "ui/viewport/viewport.h"
 
-#include "core/generators.h"
-#include "core/model.h"
-#include "core/snapshot.h"
-#include "core/state.h"
+#include "core/model/generators.h"
+#include "core/model/model.h"
+#include "core/model/snapshot.h"
+#include "core/model/state.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -2,7 +2,7 @@
 // Work-precision data: for each integrator, the runs of one sweep as (error, cost) points, and the
 // cost read off such a curve at a given error.
 
-#include "core/integrator.h"
+#include "core/integrators/integrator.h"
 
 #include <optional>
 #include <vector>

@@ -9,9 +9,9 @@
 #include "colour_xpbd.h"
 #include "stiff_scene.h"
 
-#include "core/model.h"
+#include "core/model/model.h"
 #include "core/passes.h"
-#include "core/state.h"
+#include "core/model/state.h"
 #include "core/threads.h"
 
 #include <QElapsedTimer>

@@ -1,6 +1,6 @@
 #pragma once
 // `springlab-bench xpbd-substep`: the cost of one xpbd sub-step on the stiff cloth, the pass the core
-// runs (core/xpbd.cpp) beside the colour-by-colour pass it replaced (colour_xpbd.h) and symplectic
+// runs (core/integrators/xpbd.cpp) beside the colour-by-colour pass it replaced (colour_xpbd.h) and symplectic
 // Euler's fused lattice sub-step, on 1 and 2 threads, and the stretch each ordering leaves.
 
 #include <QTextStream>

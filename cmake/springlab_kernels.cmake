@@ -1,4 +1,4 @@
-# How the vectorised spring kernels (core/springs.cpp, core/spring_blocks.cpp) are built, carried by
+# How the vectorised spring kernels (core/springs/springs.cpp, core/springs/spring_blocks.cpp) are built, carried by
 # the interface library springlab_kernel_flags that springlab_core links publicly:
 #
 #   SPRINGLAB_KERNEL_CLONES=ON   (default) one copy of each kernel per CPU family, chosen when the
@@ -61,7 +61,7 @@ endif()
 
 # a function template with the kernels' clones (some kernels are templates, which clang 14 cannot
 # clone), built and run: proves that the compiler takes the list and that the assembler and the
-# loader handle the ifunc that picks a clone (keep the list the same as core/spring_kernels.h's)
+# loader handle the ifunc that picks a clone (keep the list the same as core/springs/spring_kernels.h's)
 check_cxx_source_runs([[
 template <bool kTwice>
 __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"))) int scaled(int x) { return kTwice ? 2 * x : x; }

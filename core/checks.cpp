@@ -1,6 +1,6 @@
-#include "parallel.h"
-#include "passes.h"
-#include "step.h"
+#include "core/parallel.h"
+#include "core/passes.h"
+#include "core/step.h"
 
 #include <atomic>
 #include <cmath>

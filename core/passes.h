@@ -3,9 +3,9 @@
 // own file: the State is what the run is, the Workspace what the stage may use besides. Each
 // returns at once when the step plan says the scene does not need it.
 
-#include "model.h"
-#include "state.h"
-#include "workspace.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
+#include "core/model/workspace.h"
 
 namespace core {
 

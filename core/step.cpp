@@ -1,7 +1,7 @@
-#include "step.h"
+#include "core/step.h"
 
-#include "passes.h"
-#include "timed.h"
+#include "core/passes.h"
+#include "core/timed.h"
 
 namespace core {
 

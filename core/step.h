@@ -1,10 +1,10 @@
 #pragma once
 // One step of the simulation: forces, integration, collisions, checks (see step.cpp).
 
-#include "model.h"
-#include "parameters.h"
-#include "state.h"
-#include "workspace.h"
+#include "core/model/model.h"
+#include "core/model/parameters.h"
+#include "core/model/state.h"
+#include "core/model/workspace.h"
 
 namespace core {
 

@@ -4,7 +4,7 @@
 // evaluates the forces): each is charged its own time only, the inner stages' time taken off the
 // outer one's, so the entries add up to the step's time.
 
-#include "profile.h"
+#include "core/profile.h"
 
 #include <chrono>
 

@@ -4,8 +4,8 @@
 // initial conditions must be the run's own doubles, and its broken springs. Immutable once
 // published.
 
-#include "core/scene.h"
-#include "core/state.h"
+#include "core/model/scene.h"
+#include "core/model/state.h"
 
 #include <memory>
 

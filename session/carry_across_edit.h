@@ -27,9 +27,9 @@
 
 #include "messages.h"
 
-#include "core/model.h"
-#include "core/scene.h"
-#include "core/state.h"
+#include "core/model/model.h"
+#include "core/model/scene.h"
+#include "core/model/state.h"
 
 namespace ui {
 

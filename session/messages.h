@@ -7,7 +7,7 @@
 // never read or written from the UI thread (MuJoCo's `simulate` applies its pending actions the
 // same way). Qt-free, so the unit tests can drive it directly.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <Eigen/Core>
 #include <atomic>
@@ -57,7 +57,7 @@ struct StepOnce {};  // one step, then paused
 struct Reset {};     // back to the scene's initial conditions
 struct Sync {};      // changes nothing; its frame shows that every earlier message was applied
 
-// plan the integrator and substeps for a tolerance from the current state (core/accuracy_planner.h);
+// plan the integrator and substeps for a tolerance from the current state (core/integrators/accuracy_planner.h);
 // the plan comes back as an AccuracyPlanReply, tagged with the request's number
 struct PlanAccuracy {
     double tolerance = 1e-6;    // m, local position error per sub-step

@@ -8,7 +8,7 @@
 #include "captured_state.h"
 #include "session_recording.h"
 
-#include "core/accuracy_planner.h"
+#include "core/integrators/accuracy_planner.h"
 
 #include <cstdint>
 #include <memory>

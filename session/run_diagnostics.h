@@ -12,13 +12,13 @@
 // the run nor a Pause. The pair speed warning, the explanation of a blow-up at the last good state,
 // and the accuracy plan asked for. Qt-free.
 
-#include "core/accuracy_planner.h"
-#include "core/diagnostics.h"
-#include "core/error_estimate.h"
-#include "core/model.h"
-#include "core/stability.h"
-#include "core/state.h"
-#include "core/workspace.h"
+#include "core/integrators/accuracy_planner.h"
+#include "core/model/diagnostics.h"
+#include "core/integrators/error_estimate.h"
+#include "core/model/model.h"
+#include "core/integrators/stability.h"
+#include "core/model/state.h"
+#include "core/model/workspace.h"
 
 #include <atomic>
 #include <cstdint>

@@ -10,10 +10,10 @@
 
 #include "timeline.h"
 
-#include "core/model.h"
-#include "core/scene.h"
-#include "core/state.h"
-#include "core/workspace.h"
+#include "core/model/model.h"
+#include "core/model/scene.h"
+#include "core/model/state.h"
+#include "core/model/workspace.h"
 
 #include <atomic>
 #include <cstdint>

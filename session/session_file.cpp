@@ -3,7 +3,7 @@
 #include "core/io/json_scan.h"
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
-#include "core/validate.h"
+#include "core/model/validate.h"
 
 #include <QFile>
 #include <QJsonArray>

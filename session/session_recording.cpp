@@ -2,7 +2,7 @@
 
 #include "simulation_runner.h"
 
-#include "core/state_hash.h"
+#include "core/model/state_hash.h"
 
 namespace ui {
 

@@ -7,8 +7,8 @@
 
 #include "messages.h"
 
-#include "core/scene.h"
-#include "core/state.h"
+#include "core/model/scene.h"
+#include "core/model/state.h"
 
 #include <cstdint>
 #include <memory>

@@ -4,11 +4,11 @@
 // Immutable once published. (One-off answers come back as replies, replies.h.)
 
 
-#include "core/diagnostics.h"
-#include "core/model.h"
-#include "core/scene.h"
-#include "core/snapshot.h"
-#include "core/stability.h"
+#include "core/model/diagnostics.h"
+#include "core/model/model.h"
+#include "core/model/scene.h"
+#include "core/model/snapshot.h"
+#include "core/integrators/stability.h"
 
 #include "step_samples.h"
 

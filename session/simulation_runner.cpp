@@ -2,7 +2,7 @@
 
 #include "carry_across_edit.h"
 
-#include "core/state_hash.h"
+#include "core/model/state_hash.h"
 
 #include "core/step.h"
 

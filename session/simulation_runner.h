@@ -31,10 +31,10 @@
 #include "session_recording.h"
 #include "step_samples.h"
 
-#include "core/model.h"
-#include "core/snapshot.h"
-#include "core/state.h"
-#include "core/workspace.h"
+#include "core/model/model.h"
+#include "core/model/snapshot.h"
+#include "core/model/state.h"
+#include "core/model/workspace.h"
 
 #include <atomic>
 #include <memory>

@@ -8,9 +8,9 @@
 // have been taken (the mailbox was found empty); a frame may therefore carry a sample again, and
 // each sample's sequence number lets the window see it once. Qt-free.
 
-#include "core/diagnostics.h"
-#include "core/model.h"
-#include "core/state.h"
+#include "core/model/diagnostics.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 
 #include <Eigen/Core>
 

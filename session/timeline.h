@@ -7,9 +7,9 @@
 // timeline holds the most recent stretch of the run that fits. Qt-free; the runner's Scrubber
 // (scrubber.h) owns it.
 
-#include "core/model.h"
-#include "core/scene.h"
-#include "core/state.h"
+#include "core/model/model.h"
+#include "core/model/scene.h"
+#include "core/model/state.h"
 
 #include <Eigen/Core>
 #include <cstddef>

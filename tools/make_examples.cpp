@@ -1,8 +1,8 @@
 // Writes the example scenes of resources/scenes/ from the scene generators and the handout's
 // parameters. Run it after changing a generator: tools/make_examples resources/scenes
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/io/scene_file.h"
-#include "core/validate.h"
+#include "core/model/validate.h"
 
 #include <QDir>
 #include <cmath>

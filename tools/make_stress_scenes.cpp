@@ -1,12 +1,12 @@
 // Writes the stress scenes of resources/scenes/stress/: scenes that push the core to its limits,
 // each with a pass criterion checked by tests/stress/test_stress.cpp. Run it after changing a
 // scene here: tools/make_stress_scenes resources/scenes/stress
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/io/scene_file.h"
-#include "core/model.h"
-#include "core/stability.h"
-#include "core/state.h"
-#include "core/validate.h"
+#include "core/model/model.h"
+#include "core/integrators/stability.h"
+#include "core/model/state.h"
+#include "core/model/validate.h"
 
 #include <QDir>
 #include <cmath>

@@ -12,7 +12,7 @@
 // coincident particles would otherwise need memory quadratic in its size (the cap is far above
 // the 12 that equal spheres can touch, so only such a crowd meets it).
 
-#include "broad_phase.h"
+#include "core/contacts/broad_phase.h"
 
 #include <algorithm>
 #include <cmath>

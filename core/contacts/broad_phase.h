@@ -3,8 +3,8 @@
 // functions give the same list, every pair i < j with ‖x_i − x_j‖ < r_i + r_j and at least one of
 // the two free, in lexicographic (i, j) order; a particle whose position is not finite is in none.
 
-#include "contact_grid.h"
-#include "model.h"
+#include "core/contacts/contact_grid.h"
+#include "core/model/model.h"
 
 #include <Eigen/Core>
 #include <vector>

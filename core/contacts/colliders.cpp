@@ -1,6 +1,6 @@
-#include "colliders.h"
+#include "core/contacts/colliders.h"
 
-#include "validate.h"
+#include "core/model/validate.h"
 
 #include <Eigen/Geometry>
 

@@ -4,7 +4,7 @@
 // two-sided (a thin wall: a particle stays on the side it came from), or a bounded rectangle of
 // its plane (a two-sided sheet with edges and corners, for tables, shelves and boxes).
 
-#include "scene.h"
+#include "core/model/scene.h"
 
 #include <Eigen/Core>
 

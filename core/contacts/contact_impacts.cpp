@@ -5,9 +5,9 @@
 // velocity. A bounce then loses or gains nothing the integrator would not, and a pair 4 m apart
 // closing at 400 m/s still meets: nothing passes through anything in one sub-step.
 
-#include "broad_phase.h"
-#include "particle_path.h"
-#include "passes.h"
+#include "core/contacts/broad_phase.h"
+#include "core/contacts/particle_path.h"
+#include "core/passes.h"
 
 #include <algorithm>
 #include <cmath>

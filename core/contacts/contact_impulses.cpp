@@ -1,4 +1,4 @@
-#include "contact_impulses.h"
+#include "core/contacts/contact_impulses.h"
 
 #include <vector>
 

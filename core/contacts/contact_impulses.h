@@ -2,7 +2,7 @@
 // Keeping a scene's saved contact impulses (SceneDesc::contactImpulses) true to its particles and
 // planes when an edit renumbers them: an impulse whose particle or plane is gone goes with it.
 
-#include "scene.h"
+#include "core/model/scene.h"
 
 #include <vector>
 

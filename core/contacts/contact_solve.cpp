@@ -21,10 +21,10 @@
 // schemes, ½ for the second-order ones), and the target speeds are set for where the sub-step then
 // ends. A resting particle ends where it began, and a pile comes to rest for good.
 
-#include "broad_phase.h"
-#include "geometry.h"
-#include "particle_path.h"
-#include "passes.h"
+#include "core/contacts/broad_phase.h"
+#include "core/geometry.h"
+#include "core/contacts/particle_path.h"
+#include "core/passes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 //      (contact_solve.cpp).
 // docs/physics.md, "Contacts", gives the model and the reasons for it.
 
-#include "passes.h"
+#include "core/passes.h"
 
 #include <cmath>
 

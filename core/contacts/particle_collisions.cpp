@@ -1,6 +1,6 @@
-#include "broad_phase.h"
-#include "geometry.h"
-#include "passes.h"
+#include "core/contacts/broad_phase.h"
+#include "core/geometry.h"
+#include "core/passes.h"
 
 #include <cmath>
 

@@ -7,7 +7,7 @@
 // schemes along the cubic Hermite curve through both ends, exact for motion under a constant force
 // and otherwise as close as their own step.
 
-#include "integrator.h"
+#include "core/integrators/integrator.h"
 
 #include <Eigen/Core>
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "solver_names.h"
+#include "core/contacts/solver_names.h"
 
 namespace core {
 

@@ -2,7 +2,7 @@
 // The contact solvers a scene can choose (core::ContactSolver, scene.h), and their names in scene
 // files and on the command line, as integrator.h does for the integrators.
 
-#include "scene.h"
+#include "core/model/scene.h"
 
 #include <optional>
 #include <string_view>

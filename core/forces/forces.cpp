@@ -1,5 +1,5 @@
-#include "passes.h"
-#include "timed.h"
+#include "core/passes.h"
+#include "core/timed.h"
 
 namespace core {
 

@@ -1,6 +1,6 @@
-#include "parallel.h"
-#include "passes.h"
-#include "spring_kernels.h"
+#include "core/parallel.h"
+#include "core/passes.h"
+#include "core/springs/spring_kernels.h"
 
 namespace core {
 

@@ -1,10 +1,10 @@
-#include "accuracy_planner.h"
+#include "core/integrators/accuracy_planner.h"
 
-#include "error_estimate.h"
-#include "parameters.h"
-#include "passes.h"
-#include "stability.h"
-#include "step.h"
+#include "core/integrators/error_estimate.h"
+#include "core/model/parameters.h"
+#include "core/passes.h"
+#include "core/integrators/stability.h"
+#include "core/step.h"
 
 #include <algorithm>
 #include <chrono>

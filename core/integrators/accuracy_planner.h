@@ -35,10 +35,10 @@
 // The planner allocates and steps copies of the state: call it off the step path (the editor's
 // worker runs it between two steps, when asked).
 
-#include "integrator.h"
-#include "model.h"
-#include "profile.h"
-#include "state.h"
+#include "core/integrators/integrator.h"
+#include "core/model/model.h"
+#include "core/profile.h"
+#include "core/model/state.h"
 
 #include <string>
 #include <vector>

@@ -4,7 +4,7 @@
 // velocities, on every component). A rejected step is retried smaller; an accepted one keeps the
 // fifth-order solution and suggests the next step size. The step never exceeds the sub-step h it
 // is asked to cover, so contacts are still resolved at every sub-step boundary.
-#include "passes.h"
+#include "core/passes.h"
 
 #include <algorithm>
 #include <cmath>

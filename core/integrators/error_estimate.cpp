@@ -1,6 +1,6 @@
-#include "error_estimate.h"
+#include "core/integrators/error_estimate.h"
 
-#include "step.h"
+#include "core/step.h"
 
 #include <cmath>
 

@@ -4,9 +4,9 @@
 // C h^(p+1) and the two half steps leave 1/2^p of it, so the difference is (1 - 2^-p) of the
 // error. The estimate runs on copies: the state being simulated is not touched.
 
-#include "model.h"
-#include "state.h"
-#include "workspace.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
+#include "core/model/workspace.h"
 
 #include <atomic>
 #include <memory>

@@ -8,8 +8,8 @@
 // when the spring is compressed (l < l0) so that the matrix stays symmetric positive definite
 // and conjugate gradients converge. Pinned particles are handled exactly: their rows are the
 // identity with a zero right-hand side, so their Δv is 0.
-#include "passes.h"
-#include "spring_jacobian.h"
+#include "core/passes.h"
+#include "core/springs/spring_jacobian.h"
 
 
 namespace core {

@@ -1,8 +1,8 @@
-#include "parallel.h"
-#include "passes.h"
-#include "spring_kernels.h"
+#include "core/parallel.h"
+#include "core/passes.h"
+#include "core/springs/spring_kernels.h"
 
-#include "step.h"
+#include "core/step.h"
 
 #include <algorithm>
 #include <atomic>

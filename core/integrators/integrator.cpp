@@ -1,4 +1,4 @@
-#include "integrator.h"
+#include "core/integrators/integrator.h"
 
 namespace core {
 

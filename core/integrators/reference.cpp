@@ -1,4 +1,4 @@
-#include "reference.h"
+#include "core/integrators/reference.h"
 
 #include <cmath>
 

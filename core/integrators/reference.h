@@ -2,7 +2,7 @@
 // Reference problems with closed-form solutions, for the accuracy tests and benchmark. Each comes
 // as a scene generator and the exact answer it should produce.
 
-#include "scene.h"
+#include "core/model/scene.h"
 
 namespace core {
 

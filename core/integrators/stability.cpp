@@ -1,8 +1,8 @@
-#include "stability.h"
+#include "core/integrators/stability.h"
 
-#include "geometry.h"
-#include "parameters.h"
-#include "spring_jacobian.h"
+#include "core/geometry.h"
+#include "core/model/parameters.h"
+#include "core/springs/spring_jacobian.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,9 +7,9 @@
 // (springs' dampers, a zero-rest-length spring's in every direction, and the medium's drag) narrows symplectic Euler's limit from 2/ω to
 // (√(γ² + 4ω²) - γ)/ω².
 
-#include "blowup.h"
-#include "model.h"
-#include "state.h"
+#include "core/blowup.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 
 #include <optional>
 #include <string>

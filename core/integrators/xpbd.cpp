@@ -18,11 +18,11 @@
 // waits for all threads once after the prediction and once after each phase of each pass. A pinned
 // particle has w = 0 and never moves.
 
-#include "integrator.h"
-#include "parallel.h"
-#include "passes.h"
-#include "spring_kernels.h"
-#include "xpbd_layout.h"
+#include "core/integrators/integrator.h"
+#include "core/parallel.h"
+#include "core/passes.h"
+#include "core/springs/spring_kernels.h"
+#include "core/integrators/xpbd_layout.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include "xpbd_layout.h"
+#include "core/integrators/xpbd_layout.h"
 
-#include "model.h"
+#include "core/model/model.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,7 +1,7 @@
 // Design note. Reading goes token by token (scene_reader.h over json_pull.h) straight into a
 // SceneDesc, so that a load needs the file's bytes and the scene and no tree of the document: a
 // QJsonDocument of a scene took 12 to 14 times the file's size. Value ranges are checked
-// afterwards by core::findProblem(), so a range is written once (core/parameters.cpp). Only text
+// afterwards by core::findProblem(), so a range is written once (core/model/parameters.cpp). Only text
 // that is not one JSON object goes to QJsonDocument, for the words and the place of its syntax
 // error. Writing is done by hand rather than by QJsonDocument::toJson() for two reasons: Qt writes
 // -0.0 as "0" (losing the sign bit), and its indented style puts every number of every vector on a
@@ -19,8 +19,8 @@
 #include "scene_reader.h"
 #include "scene_words.h"
 
-#include "core/solver_names.h"
-#include "core/validate.h"
+#include "core/contacts/solver_names.h"
+#include "core/model/validate.h"
 
 #include <QDir>
 #include <QFile>

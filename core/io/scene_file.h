@@ -4,7 +4,7 @@
 // JSON path and the reason; nothing is half-loaded. Saving is atomic (safe_write.h) and writes
 // doubles so that loading gives back the same bits.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <QByteArray>
 #include <QLatin1StringView>

@@ -12,8 +12,8 @@
 #include "json_scan.h"
 #include "scene_words.h"
 
-#include "core/solver_names.h"
-#include "core/validate.h"
+#include "core/contacts/solver_names.h"
+#include "core/model/validate.h"
 
 #include <QJsonValue>
 

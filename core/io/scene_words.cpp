@@ -1,6 +1,6 @@
 #include "scene_words.h"
 
-#include "core/solver_names.h"
+#include "core/contacts/solver_names.h"
 
 #include <QStringList>
 

@@ -3,7 +3,7 @@
 // by the scene reader and springlab-sim's command line (--integrator, --set), so that a value is
 // refused in the same words wherever it comes from.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <QJsonValue>
 #include <QString>

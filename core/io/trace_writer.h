@@ -4,8 +4,8 @@
 // the same bits); the editor's File › Export › Trace CSV writes them from Snapshots, whose floats
 // are written the same way as floats. Both have the same header.
 
-#include "core/snapshot.h"
-#include "core/state.h"
+#include "core/model/snapshot.h"
+#include "core/model/state.h"
 
 #include <QByteArray>
 #include <QFile>

@@ -1,4 +1,4 @@
-#include "diagnostics.h"
+#include "core/model/diagnostics.h"
 
 namespace core {
 

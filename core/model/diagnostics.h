@@ -1,8 +1,8 @@
 #pragma once
 // Energies and momentum of a state, for the status bar, the plots and the tests.
 
-#include "model.h"
-#include "state.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 
 #include <Eigen/Core>
 

@@ -1,9 +1,9 @@
 // The generators' option checks (generators.h): each names the first option that is wrong and why,
 // in the words of the parameter table (parameters.h) where the option is a scene value, so that the
 // editor's Generate dialog can say it and refuse to generate.
-#include "generators.h"
+#include "core/model/generators.h"
 
-#include "parameters.h"
+#include "core/model/parameters.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "generators.h"
+#include "core/model/generators.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // Scene generators: functions that build a SceneDesc, shared by the examples, the editor's
 // Generate menu, the tests and the benchmarks.
 
-#include "scene.h"
+#include "core/model/scene.h"
 
 #include <cstdint>
 #include <optional>

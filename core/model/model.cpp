@@ -1,10 +1,10 @@
-#include "model.h"
+#include "core/model/model.h"
 
-#include "parameters.h"
-#include "stability.h"
-#include "state.h"
-#include "validate.h"
-#include "xpbd_layout.h"
+#include "core/model/parameters.h"
+#include "core/integrators/stability.h"
+#include "core/model/state.h"
+#include "core/model/validate.h"
+#include "core/integrators/xpbd_layout.h"
 
 #include <cassert>
 

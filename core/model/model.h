@@ -3,11 +3,11 @@
 // between threads as std::shared_ptr<const Model>. The step plan says which passes this scene
 // needs; a pass the plan leaves out is never run.
 
-#include "colliders.h"
-#include "scene.h"
-#include "spring_layout.h"
-#include "spring_triangles.h"
-#include "xpbd_layout.h"
+#include "core/contacts/colliders.h"
+#include "core/model/scene.h"
+#include "core/springs/spring_layout.h"
+#include "core/springs/spring_triangles.h"
+#include "core/integrators/xpbd_layout.h"
 
 #include <Eigen/Core>
 #include <memory>

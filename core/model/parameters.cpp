@@ -1,4 +1,4 @@
-#include "parameters.h"
+#include "core/model/parameters.h"
 
 #include <cassert>
 #include <cmath>

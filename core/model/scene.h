@@ -2,7 +2,7 @@
 // SceneDesc: plain values, exactly what a scene file holds. The GUI thread owns it; the physics
 // compiles it into a Model (model.h) and a State (state.h).
 
-#include "integrator.h"
+#include "core/integrators/integrator.h"
 
 #include <Eigen/Core>
 #include <optional>

@@ -3,10 +3,10 @@
 // since it is for drawing and display. The worker builds one after a step and publishes it
 // through a latest-wins mailbox; the viewport never waits for a step.
 
-#include "diagnostics.h"
-#include "model.h"
-#include "blowup.h"
-#include "state.h"
+#include "core/model/diagnostics.h"
+#include "core/model/model.h"
+#include "core/blowup.h"
+#include "core/model/state.h"
 
 #include <cstdint>
 #include <memory>

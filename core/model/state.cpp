@@ -1,4 +1,4 @@
-#include "state.h"
+#include "core/model/state.h"
 
 #include <algorithm>
 #include <cassert>

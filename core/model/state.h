@@ -4,7 +4,7 @@
 // state, the state hash, storeState) copies this one type. What a step uses besides it lives in a
 // Workspace (workspace.h), never copied with it.
 
-#include "model.h"
+#include "core/model/model.h"
 
 #include <Eigen/Core>
 #include <cstdint>

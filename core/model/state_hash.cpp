@@ -1,4 +1,4 @@
-#include "state_hash.h"
+#include "core/model/state_hash.h"
 
 #include <bit>
 

@@ -2,7 +2,7 @@
 // A fingerprint of a run's state: equal hashes mean (short of a 64-bit collision) the same bits in
 // every position and velocity. Determinism tests and replays compare runs by it.
 
-#include "state.h"
+#include "core/model/state.h"
 
 #include <cstdint>
 

@@ -1,6 +1,6 @@
-#include "validate.h"
+#include "core/model/validate.h"
 
-#include "parameters.h"
+#include "core/model/parameters.h"
 
 #include <cmath>
 #include <limits>

@@ -3,7 +3,7 @@
 // spring joining two distinct existing particles, every plane normal non-zero. Shared by the file
 // loader and the editor, so both give the same message.
 
-#include "scene.h"
+#include "core/model/scene.h"
 
 #include <optional>
 #include <string>

@@ -4,11 +4,11 @@
 // contact grid, the profile, and how the last step ended. Everything in it is made on first use
 // and reused, so that a step allocates nothing after the first.
 
-#include "contact_grid.h"
-#include "contact_scratch.h"
-#include "blowup.h"
-#include "profile.h"
-#include "xpbd_layout.h"
+#include "core/contacts/contact_grid.h"
+#include "core/contacts/contact_scratch.h"
+#include "core/blowup.h"
+#include "core/profile.h"
+#include "core/integrators/xpbd_layout.h"
 
 #include <Eigen/Core>
 #include <array>

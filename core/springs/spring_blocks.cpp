@@ -19,10 +19,10 @@
 // Every force and every update comes from the same operations in the same order as the separate
 // passes (computeForces, then the Euler update), so the bits are theirs, on any number of threads.
 
-#include "spring_kernels.h"
-#include "parallel.h"
-#include "passes.h"
-#include "step.h"
+#include "core/springs/spring_kernels.h"
+#include "core/parallel.h"
+#include "core/passes.h"
+#include "core/step.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "passes.h"
+#include "core/passes.h"
 
 namespace core {
 

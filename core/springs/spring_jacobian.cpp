@@ -1,6 +1,6 @@
-#include "spring_jacobian.h"
+#include "core/springs/spring_jacobian.h"
 
-#include "geometry.h"
+#include "core/geometry.h"
 
 #include <algorithm>
 

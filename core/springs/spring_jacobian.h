@@ -2,8 +2,8 @@
 // Products with the springs' linearisation, without building a matrix: used by the implicit
 // integrator's solve and by the stability analysis.
 
-#include "model.h"
-#include "state.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 
 namespace core {
 

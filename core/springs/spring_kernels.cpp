@@ -1,4 +1,4 @@
-#include "spring_kernels.h"
+#include "core/springs/spring_kernels.h"
 
 namespace core {
 

@@ -6,9 +6,9 @@
 // (gravity.cpp's start, integrate.cpp's Euler update), so that both give the same bits by
 // construction.
 
-#include "geometry.h"
-#include "model.h"
-#include "step.h"
+#include "core/geometry.h"
+#include "core/model/model.h"
+#include "core/step.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "spring_layout.h"
+#include "core/springs/spring_layout.h"
 
 #include <algorithm>
 #include <cstdlib>

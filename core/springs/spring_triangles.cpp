@@ -1,4 +1,4 @@
-#include "spring_triangles.h"
+#include "core/springs/spring_triangles.h"
 
 #include <Eigen/Geometry>
 

@@ -10,7 +10,7 @@
 // once per scene (compileModel), and the triangles are turned so that neighbours agree, which
 // smooth normals need. A triangle is drawn while none of its three springs has broken.
 
-#include "scene.h"
+#include "core/model/scene.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
-#include "spring_kernels.h"
-#include "geometry.h"
-#include "parallel.h"
-#include "passes.h"
+#include "core/springs/spring_kernels.h"
+#include "core/geometry.h"
+#include "core/parallel.h"
+#include "core/passes.h"
 
 #include <algorithm>
 #include <cmath>

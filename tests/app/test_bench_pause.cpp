@@ -5,7 +5,7 @@
 
 #include "bench_run.h"
 
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/io/scene_file.h"
 
 #include <QRegularExpression>

@@ -10,9 +10,9 @@
 
 #include "bench_run.h"
 
-#include "core/diagnostics.h"
-#include "core/model.h"
-#include "core/state.h"
+#include "core/model/diagnostics.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 #include "core/step.h"
 
 #include <QFile>

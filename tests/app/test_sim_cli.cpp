@@ -1,8 +1,8 @@
 // springlab-sim end to end, through QProcess: exit codes, the CSV trace's shape, and that
 // --output then resuming gives the same bits as a run that never stopped.
 
-#include "core/generators.h"
-#include "core/reference.h"
+#include "core/model/generators.h"
+#include "core/integrators/reference.h"
 #include "core/io/scene_file.h"
 #include "program_run.h"
 #include "session/session_file.h"

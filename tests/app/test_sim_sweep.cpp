@@ -2,10 +2,10 @@
 // refuses what the file would refuse; --summary-json and --summary-csv hold the run's figures,
 // also when it blows up or is refused; tools/sweep_parallel.sh gathers a sweep into one table.
 
-#include "core/diagnostics.h"
+#include "core/model/diagnostics.h"
 #include "core/io/scene_file.h"
-#include "core/model.h"
-#include "core/state.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 #include "program_run.h"
 
 #include <QDir>

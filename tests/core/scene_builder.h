@@ -1,11 +1,11 @@
 #pragma once
 // Small helpers for building test scenes by hand.
 
-#include "core/model.h"
-#include "core/scene.h"
-#include "core/state.h"
+#include "core/model/model.h"
+#include "core/model/scene.h"
+#include "core/model/state.h"
 #include "core/step.h"
-#include "core/workspace.h"
+#include "core/model/workspace.h"
 
 #include <algorithm>
 #include <cstdint>

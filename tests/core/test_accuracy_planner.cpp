@@ -2,10 +2,10 @@
 // a factor of 3, measured by step doubling over the run, from any phase), a tighter tolerance never
 // needs fewer substeps, the pick is the cheapest row, explicit schemes stay below their stability
 // limit, and the counts of force evaluations are those of each scheme.
-#include "core/accuracy_planner.h"
-#include "core/error_estimate.h"
-#include "core/reference.h"
-#include "core/stability.h"
+#include "core/integrators/accuracy_planner.h"
+#include "core/integrators/error_estimate.h"
+#include "core/integrators/reference.h"
+#include "core/integrators/stability.h"
 #include "core/step.h"
 #include "scene_builder.h"
 

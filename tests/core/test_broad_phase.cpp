@@ -1,7 +1,7 @@
 // The broad phase of particle contacts: the grid finds exactly the brute force's pairs, in the
 // same order, on ordinary and degenerate scenes, and a run with it equals a run with the brute
 // force to the last bit.
-#include "core/broad_phase.h"
+#include "core/contacts/broad_phase.h"
 #include "core/passes.h"
 #include "core/step.h"
 #include "scene_builder.h"

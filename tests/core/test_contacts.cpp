@@ -1,11 +1,11 @@
-// The iterative contact solver (core/contacts.cpp and its passes): Coulomb friction to the formula,
+// The iterative contact solver (core/contacts/contacts.cpp and its passes): Coulomb friction to the formula,
 // impacts located in time, nothing passing through anything, stacks that stand, piles that settle,
 // two-sided planes and rectangles, and the handout's passes still selectable.
 
-#include "core/generators.h"
-#include "core/integrator.h"
-#include "core/reference.h"
-#include "core/state_hash.h"
+#include "core/model/generators.h"
+#include "core/integrators/integrator.h"
+#include "core/integrators/reference.h"
+#include "core/model/state_hash.h"
 #include "bench/contact_measures.h"
 #include "bench/contact_scenes.h"
 #include "pile_checks.h"

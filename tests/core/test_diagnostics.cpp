@@ -1,6 +1,6 @@
 // Energies and momentum against values worked out by hand; energy behaviour over a run.
-#include "core/diagnostics.h"
-#include "core/generators.h"
+#include "core/model/diagnostics.h"
+#include "core/model/generators.h"
 #include "core/step.h"
 #include "scene_builder.h"
 

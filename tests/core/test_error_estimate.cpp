@@ -1,6 +1,6 @@
 // Step doubling estimates the true local error of a sub-step within a factor of 3.
-#include "core/error_estimate.h"
-#include "core/reference.h"
+#include "core/integrators/error_estimate.h"
+#include "core/integrators/reference.h"
 #include "core/step.h"
 #include "scene_builder.h"
 

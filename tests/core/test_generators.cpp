@@ -1,8 +1,8 @@
 // Scene generators: counts, rest lengths, pins, and that every generated scene is valid; granular
 // blocks and balls never overlap and jitter the same for the same seed; a soft ball's points lie on
 // its sphere; options out of range are refused with a message naming the option.
-#include "core/generators.h"
-#include "core/validate.h"
+#include "core/model/generators.h"
+#include "core/model/validate.h"
 
 #include <QtTest>
 

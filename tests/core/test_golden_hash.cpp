@@ -8,8 +8,8 @@
 // build type, compiler flags, the machine, or running it again; the design keeps -ffast-math and
 // FMA contraction out so that none of those can.
 
-#include "core/generators.h"
-#include "core/state_hash.h"
+#include "core/model/generators.h"
+#include "core/model/state_hash.h"
 #include "core/step.h"
 #include "scene_builder.h"
 

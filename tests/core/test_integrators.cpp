@@ -1,8 +1,8 @@
 // The integrators: measured convergence order, energy behaviour, stiff stability, the adaptive
 // scheme's tolerance.
-#include "core/diagnostics.h"
-#include "core/generators.h"
-#include "core/reference.h"
+#include "core/model/diagnostics.h"
+#include "core/model/generators.h"
+#include "core/integrators/reference.h"
 #include "core/step.h"
 #include "scene_builder.h"
 

@@ -1,8 +1,8 @@
 // No heap allocation inside a step, once its scratch arrays exist: malloc itself is counted
 // (Eigen allocates through malloc, not operator new), for every integrator on a scene that runs
 // every pass, small and large enough to be split across threads.
-#include "core/generators.h"
-#include "core/integrator.h"
+#include "core/model/generators.h"
+#include "core/integrators/integrator.h"
 #include "core/step.h"
 #include "scene_builder.h"
 

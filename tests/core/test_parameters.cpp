@@ -1,5 +1,5 @@
 // The parameter table: complete, in enum order, sane ranges, and clear refusals.
-#include "core/parameters.h"
+#include "core/model/parameters.h"
 
 #include <QtTest>
 #include <limits>

@@ -1,5 +1,5 @@
 // Particle–particle contacts: conservation laws, restitution, pinned particles, degenerate cases.
-#include "core/diagnostics.h"
+#include "core/model/diagnostics.h"
 #include "core/passes.h"
 #include "scene_builder.h"
 

@@ -1,5 +1,5 @@
 // Particle–plane contacts: projection out of the plane, reflection with restitution, rest.
-#include "core/diagnostics.h"
+#include "core/model/diagnostics.h"
 #include "core/passes.h"
 #include "core/step.h"
 #include "scene_builder.h"

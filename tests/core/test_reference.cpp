@@ -1,6 +1,6 @@
 // The closed-form reference solutions agree with what they describe (and with the simulation at
 // a fine step), so that the accuracy benchmark measures against the truth.
-#include "core/reference.h"
+#include "core/integrators/reference.h"
 #include "core/step.h"
 #include "scene_builder.h"
 

@@ -1,5 +1,5 @@
 // Snapshots: floats of the state (positions and velocities), strains, pins, energies, step id.
-#include "core/snapshot.h"
+#include "core/model/snapshot.h"
 #include "core/step.h"
 #include "scene_builder.h"
 

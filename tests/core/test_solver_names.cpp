@@ -1,7 +1,7 @@
 // The contact solvers' names: each solver has one, the name reads back as that solver, and any
 // other text (another case, a blank) is no solver, so a file or a command line naming it is refused.
 
-#include "core/solver_names.h"
+#include "core/contacts/solver_names.h"
 
 #include <QTest>
 

@@ -1,9 +1,9 @@
-// The fused lattice sub-step (core/spring_blocks.cpp) against the separate passes it replaces:
+// The fused lattice sub-step (core/springs/spring_blocks.cpp) against the separate passes it replaces:
 // the same bits on random runs of every shape, with and without gravity, drag, applied forces,
 // pins and broken springs, on 1 and 2 threads; which models take it; its index of runs by block;
 // its finite check; and its profile.
 
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/parallel.h"
 #include "core/passes.h"
 #include "core/step.h"

@@ -1,8 +1,8 @@
 // Breakable springs: a spring breaks the step its strain passes its breaking strain, never when
 // compressed, and once broken exerts no force, stores no energy and is skipped by every scheme;
 // the pass costs nothing in a scene where nothing can break.
-#include "core/diagnostics.h"
-#include "core/generators.h"
+#include "core/model/diagnostics.h"
+#include "core/model/generators.h"
 #include "core/passes.h"
 #include "core/step.h"
 #include "scene_builder.h"

@@ -1,9 +1,9 @@
 // Spring triangles: a cloth's cells each covered once by two triangles, turned alike; no triangle
 // along a line (a row and its bend spring), none in a net of squares, all four faces of a solid
 // tetrahedron; and every snapshot of a model shares the model's triangles.
-#include "core/generators.h"
-#include "core/snapshot.h"
-#include "core/spring_triangles.h"
+#include "core/model/generators.h"
+#include "core/model/snapshot.h"
+#include "core/springs/spring_triangles.h"
 #include "scene_builder.h"
 
 #include <Eigen/Geometry>

@@ -1,6 +1,6 @@
 // The damped spring force against values worked out by hand, and Newton's third law; both
 // threaded passes (gathered, and by runs of lattice-like springs) against the plain scatter loop.
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/passes.h"
 #include "core/step.h"
 #include "core/threads.h"

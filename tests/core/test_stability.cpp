@@ -1,10 +1,10 @@
 // The stability limit: exact on a single oscillator, matched by experiment on chains, the same
 // bits when analysed a slice at a time, and the blow-up message names what failed, where, why and
 // the fix.
-#include "core/diagnostics.h"
-#include "core/generators.h"
-#include "core/reference.h"
-#include "core/stability.h"
+#include "core/model/diagnostics.h"
+#include "core/model/generators.h"
+#include "core/integrators/reference.h"
+#include "core/integrators/stability.h"
 #include "core/step.h"
 #include "scene_builder.h"
 

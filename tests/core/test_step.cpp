@@ -1,6 +1,6 @@
 // The step: order of passes, sub-steps, passes the plan skips, blow-up detection, determinism.
-#include "core/generators.h"
-#include "core/integrator.h"
+#include "core/model/generators.h"
+#include "core/integrators/integrator.h"
 #include "core/step.h"
 #include "scene_builder.h"
 

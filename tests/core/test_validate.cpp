@@ -1,5 +1,5 @@
 // Scene validation: each kind of bad value is named with its path and reason.
-#include "core/validate.h"
+#include "core/model/validate.h"
 #include "scene_builder.h"
 
 #include <QtTest>

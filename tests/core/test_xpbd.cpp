@@ -1,14 +1,14 @@
-// The xpbd integrator (core/xpbd.cpp): springs as compliant distance constraints. What it must do
+// The xpbd integrator (core/integrators/xpbd.cpp): springs as compliant distance constraints. What it must do
 // for a user: hold the spring's own stiffness whatever the sub-step (the statics of a hanging
 // mass), run stiff springs that explicit schemes cannot at the same step, keep pins exact, give
 // the same bits on any number of threads, and break springs and collide like every integrator;
 // more constraint passes a sub-step hold the springs closer to their rest lengths.
 
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/passes.h"
-#include "core/stability.h"
+#include "core/integrators/stability.h"
 #include "core/threads.h"
-#include "core/xpbd_layout.h"
+#include "core/integrators/xpbd_layout.h"
 #include "scene_builder.h"
 
 #include <QtTest>

@@ -1,10 +1,10 @@
 #include "scene_input_check.h"
 
 #include "core/io/scene_file.h"
-#include "core/model.h"
-#include "core/state.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 #include "core/step.h"
-#include "core/validate.h"
+#include "core/model/validate.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // save_loop OUT: saves two different scenes to OUT, one after the other, for ever, printing
 // "saving" once before the first save and "saved" after each. test_atomic_save kills it (SIGKILL) at random moments and
 // checks what it left behind.
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/io/scene_file.h"
 
 #include <QCoreApplication>

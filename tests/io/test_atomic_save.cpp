@@ -1,7 +1,7 @@
 // Saving is atomic: a process killed (SIGKILL) at a random moment while it saves, again and again,
 // always leaves either the whole old scene or the whole new one, never a mix or a torn file. The
 // saver is save_loop, which alternates two cloths; the kill times come from a seeded generator.
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/io/scene_file.h"
 
 #include <QDir>

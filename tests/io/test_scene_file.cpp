@@ -6,10 +6,10 @@
 // atomic; files past a size, count or nesting limit are refused with the limit named, files at
 // the limits load.
 
-#include "core/colliders.h"
+#include "core/contacts/colliders.h"
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
-#include "core/validate.h"
+#include "core/model/validate.h"
 #include "tests/address_space_cap.h"
 
 #include <QDir>

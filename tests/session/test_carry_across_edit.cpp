@@ -6,7 +6,7 @@
 
 #include "session/carry_across_edit.h"
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 #include <QtTest>
 #include <algorithm>

@@ -6,9 +6,9 @@
 #include "session/session_file.h"
 #include "session/simulation_runner.h"
 
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/io/scene_file.h"
-#include "core/state_hash.h"
+#include "core/model/state_hash.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -6,9 +6,9 @@
 
 #include "session/simulation_runner.h"
 
-#include "core/error_estimate.h"
-#include "core/generators.h"
-#include "core/stability.h"
+#include "core/integrators/error_estimate.h"
+#include "core/model/generators.h"
+#include "core/integrators/stability.h"
 #include "core/io/scene_file.h"
 #include "core/step.h"
 #include "tests/address_space_cap.h"

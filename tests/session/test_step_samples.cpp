@@ -7,7 +7,7 @@
 #include "session/simulation_runner.h"
 #include "session/step_samples.h"
 
-#include "core/diagnostics.h"
+#include "core/model/diagnostics.h"
 #include "core/step.h"
 
 #include <QtTest>

@@ -6,8 +6,8 @@
 
 #include "session/simulation_runner.h"
 
-#include "core/generators.h"
-#include "core/state_hash.h"
+#include "core/model/generators.h"
+#include "core/model/state_hash.h"
 
 #include <QtTest>
 #include <atomic>

@@ -2,10 +2,10 @@
 // resources/scenes/stress/ are loaded from the shipped files, so the files themselves are proven;
 // tools/make_stress_scenes writes them. Long runs belong outside CI: the elastic box runs 2000
 // steps here, and SPRINGLAB_STRESS_STEPS=N runs it for N (docs/benchmarks.md).
-#include "core/diagnostics.h"
-#include "core/generators.h"
+#include "core/model/diagnostics.h"
+#include "core/model/generators.h"
 #include "core/io/scene_file.h"
-#include "core/stability.h"
+#include "core/integrators/stability.h"
 #include "core/step.h"
 #include "../core/scene_builder.h"
 

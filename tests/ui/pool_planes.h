@@ -2,7 +2,7 @@
 // The pool example's planes, for the tests of what is drawn and framed around them: a floor at
 // y = 0 and four walls 5 m from the middle, facing in.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <vector>
 

@@ -9,7 +9,7 @@
 #include "ui/panels/value_spin_box.h"
 #include "ui/window/main_window.h"
 
-#include "core/accuracy_planner.h"
+#include "core/integrators/accuracy_planner.h"
 
 #include <QHeaderView>
 #include <QPushButton>

@@ -10,7 +10,7 @@
 #include "ui/viewport/render_data.h"
 #include "ui/viewport/viewport.h"
 
-#include "core/parameters.h"
+#include "core/model/parameters.h"
 
 #include <QComboBox>
 #include <QScrollArea>

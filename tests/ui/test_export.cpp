@@ -16,8 +16,8 @@
 #include "ui/export/video_encoder.h"
 #include "ui/viewport/viewport.h"
 
-#include "core/model.h"
-#include "core/state.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 #include "core/step.h"
 
 #include <QAction>

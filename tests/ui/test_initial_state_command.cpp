@@ -8,7 +8,7 @@
 #include "session/simulation_runner.h"
 
 #include "core/io/scene_file.h"
-#include "core/state_hash.h"
+#include "core/model/state_hash.h"
 
 #include <QUndoStack>
 #include <QtTest>

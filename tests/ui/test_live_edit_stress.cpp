@@ -16,7 +16,7 @@
 #include "ui/simulation/simulation_controller.h"
 #include "ui/viewport/viewport.h"
 
-#include "core/validate.h"
+#include "core/model/validate.h"
 
 #include <QAbstractSlider>
 #include <QDoubleSpinBox>

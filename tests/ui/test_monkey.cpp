@@ -15,9 +15,9 @@
 #include "ui/document/scene_document.h"
 #include "ui/viewport/viewport.h"
 
-#include "core/integrator.h"
-#include "core/solver_names.h"
-#include "core/validate.h"
+#include "core/integrators/integrator.h"
+#include "core/contacts/solver_names.h"
+#include "core/model/validate.h"
 #include "ui/export/exporter.h"
 
 #include <QAbstractSlider>

@@ -11,8 +11,8 @@
 #include "ui/document/scene_document.h"
 #include "ui/panels/value_spin_box.h"
 
-#include "core/generators.h"
-#include "core/solver_names.h"
+#include "core/model/generators.h"
+#include "core/contacts/solver_names.h"
 
 #include <QAbstractItemView>
 #include <QCheckBox>

@@ -17,9 +17,9 @@
 #include "ui/simulation/simulation_controller.h"
 #include "ui/viewport/viewport.h"
 
-#include "core/diagnostics.h"
-#include "core/model.h"
-#include "core/state.h"
+#include "core/model/diagnostics.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 #include "core/step.h"
 
 #include <QComboBox>

@@ -3,9 +3,9 @@
 
 #include "ui/document/scene_edits.h"
 
-#include "core/contact_impulses.h"
-#include "core/generators.h"
-#include "core/validate.h"
+#include "core/contacts/contact_impulses.h"
+#include "core/model/generators.h"
+#include "core/model/validate.h"
 
 #include <QTest>
 

@@ -8,7 +8,7 @@
 
 #include "ui/document/scene_document.h"
 
-#include "core/generators.h"
+#include "core/model/generators.h"
 
 #include <QSignalSpy>
 #include <QThread>

@@ -6,7 +6,7 @@
 
 #include "ui/simulation/simulation_worker.h"
 
-#include "core/generators.h"
+#include "core/model/generators.h"
 
 #include <QtTest>
 

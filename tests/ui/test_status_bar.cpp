@@ -8,7 +8,7 @@
 #include "ui/window/main_window.h"
 #include "ui/window/status_bar.h"
 
-#include "core/accuracy_planner.h"
+#include "core/integrators/accuracy_planner.h"
 
 #include <QAction>
 #include <QLabel>

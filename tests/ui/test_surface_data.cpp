@@ -6,9 +6,9 @@
 #include "ui/viewport/render_data.h"
 #include "ui/viewport/surface_data.h"
 
-#include "core/generators.h"
-#include "core/model.h"
-#include "core/state.h"
+#include "core/model/generators.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
 
 #include <QtTest>
 

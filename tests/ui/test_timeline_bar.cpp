@@ -11,7 +11,7 @@
 #include "ui/panels/timeline_bar.h"
 #include "ui/viewport/viewport.h"
 
-#include "core/generators.h"
+#include "core/model/generators.h"
 #include "core/io/scene_file.h"
 
 #include <QLabel>

@@ -11,10 +11,10 @@
 #include "ui/viewport/strain_legend.h"
 #include "ui/viewport/viewport.h"
 
-#include "core/generators.h"
-#include "core/model.h"
-#include "core/snapshot.h"
-#include "core/state.h"
+#include "core/model/generators.h"
+#include "core/model/model.h"
+#include "core/model/snapshot.h"
+#include "core/model/state.h"
 
 #include <QSignalSpy>
 #include <QVBoxLayout>

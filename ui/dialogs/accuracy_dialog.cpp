@@ -4,8 +4,8 @@
 #include "ui/panels/status_text.h"
 #include "ui/panels/value_spin_box.h"
 
-#include "core/accuracy_planner.h"
-#include "core/parameters.h"
+#include "core/integrators/accuracy_planner.h"
+#include "core/model/parameters.h"
 
 #include <QFormLayout>
 #include <QHBoxLayout>

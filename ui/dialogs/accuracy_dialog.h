@@ -1,7 +1,7 @@
 #pragma once
 // AccuracyDialog: Simulation › Accuracy. The user types the local position error per step the run
 // should keep under; the main window asks the worker to run the accuracy planner
-// (core/accuracy_planner.h) on its state and, with Plan and Apply, applies the pick as one
+// (core/integrators/accuracy_planner.h) on its state and, with Plan and Apply, applies the pick as one
 // undoable edit; Preview shows the same plan and leaves the scene alone. The dialog then says
 // what was picked and why, above the table of every integrator it was chosen from. adaptive-rk45
 // is not planned (it chooses its own steps), so its row offers it at the tolerance typed: Use

@@ -3,11 +3,11 @@
 // soft ball), a form of its options with their units, where the middle of the result goes, and a
 // preview of what it makes, remade as soon as a value changes, with the count of particles and
 // springs, or what is wrong with the options (then the Add button is off). The generators and their
-// checks are core's (core/generators.h); the main window adds the result to the scene as one
+// checks are core's (core/model/generators.h); the main window adds the result to the scene as one
 // undoable edit (ui::addGenerated). Shown with open(): modal to the window, without an event loop
 // of its own, so the tests drive it like any widget. The options stay as set between openings.
 
-#include "core/generators.h"
+#include "core/model/generators.h"
 
 #include <Eigen/Core>
 #include <QDialog>

@@ -4,7 +4,7 @@
 // to the widget, in the viewport's palette: springs as lines, particles as discs to scale (pinned
 // in violet). A huge scene is thinned to every k-th item so that a repaint stays quick.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <QWidget>
 #include <memory>

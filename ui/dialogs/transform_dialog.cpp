@@ -5,7 +5,7 @@
 #include "ui/panels/value_spin_box.h"
 #include "ui/viewport/edit_tools.h"
 
-#include "core/validate.h"
+#include "core/model/validate.h"
 
 #include <QCheckBox>
 #include <QComboBox>

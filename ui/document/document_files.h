@@ -6,7 +6,7 @@
 // (ui/dialogs/prompts.h), which the tests answer. The window builds the File menu around it and
 // shows what it reports: statusMessage() in the status bar, warning() in the warning field.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <QObject>
 #include <QString>

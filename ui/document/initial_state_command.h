@@ -5,8 +5,8 @@
 // (F5) starts from the state as it was, not with torn springs whole again. The run itself goes on
 // untouched.
 
-#include "core/scene.h"
-#include "core/state.h"
+#include "core/model/scene.h"
+#include "core/model/state.h"
 
 #include <QUndoCommand>
 #include <memory>

@@ -2,7 +2,7 @@
 // Undo commands for the scene's parameters. Consecutive changes of the same parameter merge into
 // one command, named after the last, so a slider drag is one step of undo that says where it ended.
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <QUndoCommand>
 #include <memory>

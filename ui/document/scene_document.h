@@ -7,7 +7,7 @@
 
 #include "session/messages.h"
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <QObject>
 #include <QString>

@@ -1,6 +1,6 @@
 #include "scene_edits.h"
 
-#include "core/contact_impulses.h"
+#include "core/contacts/contact_impulses.h"
 
 #include <Eigen/Geometry>
 

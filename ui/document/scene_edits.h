@@ -4,8 +4,8 @@
 // (SceneCommand, scene_commands.h). Particle indices refer to scene.particles; functions that
 // remove or add particles keep the springs and the steerable index pointing at the same particles.
 
-#include "core/generators.h"
-#include "core/scene.h"
+#include "core/model/generators.h"
+#include "core/model/scene.h"
 
 #include <Eigen/Core>
 #include <cstddef>
@@ -74,7 +74,7 @@ Fragment copyItems(const core::SceneDesc &scene, const Selection &selection);
 // appends the fragment moved by offset; returns the selection of what was added
 Selection pasteFragment(core::SceneDesc &scene, const Fragment &fragment, const Eigen::Vector3d &offset);
 
-// appends a generated scene (core/generators.h) with the middle of its particles' bounding box at
+// appends a generated scene (core/model/generators.h) with the middle of its particles' bounding box at
 // `centre`: its particles and springs, and its substeps where they are more than the scene's (a
 // cloth's stiff springs need them); the rest of its settings are not taken. Returns the selection
 // of what was added.

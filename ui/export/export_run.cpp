@@ -2,7 +2,7 @@
 
 #include "ui/simulation/simulation_controller.h"
 
-#include "core/snapshot.h"
+#include "core/model/snapshot.h"
 
 namespace ui {
 

@@ -11,7 +11,7 @@
 #include "ui/viewport/viewport.h"
 
 #include "core/io/trace_writer.h"
-#include "core/snapshot.h"
+#include "core/model/snapshot.h"
 
 #include <QAction>
 #include <QDir>

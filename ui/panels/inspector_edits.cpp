@@ -3,7 +3,7 @@
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
 
-#include "core/validate.h"
+#include "core/model/validate.h"
 
 #include <QUndoStack>
 

@@ -6,8 +6,8 @@
 // leaves the field or types a value, the selection changes, or the scene changes from elsewhere
 // (undo, redo, another tool), so an earlier sequence is never extended by a later one.
 
-#include "core/parameters.h"
-#include "core/scene.h"
+#include "core/model/parameters.h"
+#include "core/model/scene.h"
 
 #include <QObject>
 #include <QString>

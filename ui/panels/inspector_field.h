@@ -7,7 +7,7 @@
 
 #include "value_spin_box.h"
 
-#include "core/parameters.h"
+#include "core/model/parameters.h"
 
 namespace ui {
 

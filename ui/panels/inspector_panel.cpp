@@ -8,7 +8,7 @@
 #include "ui/document/scene_document.h"
 #include "ui/document/scene_edits.h"
 
-#include "core/snapshot.h"
+#include "core/model/snapshot.h"
 
 #include <QCheckBox>
 #include <QFormLayout>

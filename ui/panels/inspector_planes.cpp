@@ -4,8 +4,8 @@
 #include "inspector_field.h"
 #include "ui/document/scene_document.h"
 
-#include "core/contact_impulses.h"
-#include "core/validate.h"
+#include "core/contacts/contact_impulses.h"
+#include "core/model/validate.h"
 
 #include <QCheckBox>
 #include <QFormLayout>

@@ -6,7 +6,7 @@
 
 #include "slider_scale.h"
 
-#include "core/parameters.h"
+#include "core/model/parameters.h"
 
 #include <QWidget>
 

@@ -5,8 +5,8 @@
 #include "ui/document/scene_document.h"
 #include "status_text.h"
 
-#include "core/solver_names.h"
-#include "core/stability.h"
+#include "core/contacts/solver_names.h"
+#include "core/integrators/stability.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #pragma once
 // ParametersPanel: the dock that tunes the scene's parameters live. Its rows are generated from
-// the parameter table (core/parameters.h), one ParameterRow per binding below, never written out
+// the parameter table (core/model/parameters.h), one ParameterRow per binding below, never written out
 // widget by widget; the integrator and the contact solver are combo boxes of core::kIntegrators and
 // core::kContactSolvers, and the static friction row follows the friction row until it is set (a
 // check box lets it follow again). An accepted change becomes an undo command on the document,

@@ -1,11 +1,11 @@
 #pragma once
-// How a parameter's slider maps positions to values. The parameter table (core/parameters.h)
+// How a parameter's slider maps positions to values. The parameter table (core/model/parameters.h)
 // gives the safe range and the scale; a slider spans the useful part of that range (a gravity of
 // ±10⁴ m/s² is safe, but a slider over it could not set 9.81), so the table also gives each
 // parameter a slider range. A log slider whose safe range starts at 0 keeps its first position for
 // exactly 0 ("off"). Qt-free, for the unit tests.
 
-#include "core/parameters.h"
+#include "core/model/parameters.h"
 
 namespace ui {
 

@@ -2,8 +2,8 @@
 
 #include "ui/document/scene_edits.h"
 
-#include "core/parameters.h"
-#include "core/stability.h"
+#include "core/model/parameters.h"
+#include "core/integrators/stability.h"
 
 #include <QCoreApplication>
 #include <algorithm>

@@ -4,8 +4,8 @@
 // "0.19 steps/s", "12 frames/s", "E = 12.5 J", "local error ≈ 3.2e-6 m/step", "ΔE = +0.4 %", and
 // what the accuracy planner picked.
 
-#include "core/accuracy_planner.h"
-#include "core/diagnostics.h"
+#include "core/integrators/accuracy_planner.h"
+#include "core/model/diagnostics.h"
 
 #include <Eigen/Core>
 #include <QString>

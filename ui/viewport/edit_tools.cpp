@@ -1,6 +1,6 @@
 #include "edit_tools.h"
 
-#include "core/colliders.h"
+#include "core/contacts/colliders.h"
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
 #include "ui/panels/status_text.h"

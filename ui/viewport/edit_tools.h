@@ -13,7 +13,7 @@
 
 #include "ui/document/scene_edits.h"
 
-#include "core/scene.h"
+#include "core/model/scene.h"
 
 #include <QObject>
 #include <QLineF>

@@ -1,6 +1,6 @@
 #include "render_data.h"
 
-#include "core/colliders.h"
+#include "core/contacts/colliders.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,8 +5,8 @@
 // only when its inputs change; spring lines and the scene's decorations (grid, axes, planes) are
 // packed as line or triangle vertices of position and colour.
 
-#include "core/scene.h"
-#include "core/snapshot.h"
+#include "core/model/scene.h"
+#include "core/model/snapshot.h"
 
 #include <QVector3D>
 

@@ -8,7 +8,7 @@
 
 #include "render_data.h"
 
-#include "core/snapshot.h"
+#include "core/model/snapshot.h"
 
 #include <QVector3D>
 

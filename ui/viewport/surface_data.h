@@ -1,12 +1,12 @@
 #pragma once
-// Surface data: a snapshot's spring triangles (core/spring_triangles.h) turned into what the
+// Surface data: a snapshot's spring triangles (core/springs/spring_triangles.h) turned into what the
 // viewport draws a cloth with, without GL, so that it can be unit-tested: the indices of the
 // triangles none of whose springs has broken (a torn spring opens a hole), which particles and
 // springs the sheet already shows (the viewport hides them unless asked), and smooth normals at the
 // current positions. The indices change only when the triangles or the broken springs do
 // (SurfaceKey); the normals with every new snapshot.
 
-#include "core/snapshot.h"
+#include "core/model/snapshot.h"
 
 #include <cstdint>
 #include <memory>

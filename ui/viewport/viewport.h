@@ -18,8 +18,8 @@
 #include "steering_arrow.h"
 #include "surface_data.h"
 
-#include "core/scene.h"
-#include "core/snapshot.h"
+#include "core/model/scene.h"
+#include "core/model/snapshot.h"
 
 #include <QElapsedTimer>
 #include <QImage>

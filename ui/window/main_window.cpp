@@ -24,7 +24,7 @@
 #include "view_layer_actions.h"
 #include "ui/viewport/viewport.h"
 
-#include "core/accuracy_planner.h"
+#include "core/integrators/accuracy_planner.h"
 
 #include <QAction>
 #include <QApplication>

@@ -14,7 +14,7 @@
 #include "ui/panels/value_spin_box.h"
 #include "ui/simulation/simulation_controller.h"
 
-#include "core/validate.h"
+#include "core/model/validate.h"
 
 #include <QAction>
 #include <QCheckBox>
