@@ -65,12 +65,7 @@ core::SceneDesc throughputBox(int particles)
     }
 
     // the walls, normals pointing in: floor at y = 0, ceiling at y = side, four sides at ±side/2
-    scene.planes = {core::PlaneDesc{Eigen::Vector3d(0.0, 1.0, 0.0), 0.0},
-                    core::PlaneDesc{Eigen::Vector3d(0.0, -1.0, 0.0), -side},
-                    core::PlaneDesc{Eigen::Vector3d(1.0, 0.0, 0.0), -half},
-                    core::PlaneDesc{Eigen::Vector3d(-1.0, 0.0, 0.0), -half},
-                    core::PlaneDesc{Eigen::Vector3d(0.0, 0.0, 1.0), -half},
-                    core::PlaneDesc{Eigen::Vector3d(0.0, 0.0, -1.0), -half}};
+    scene.planes = core::boxPlanes(half, side);
     return scene;
 }
 

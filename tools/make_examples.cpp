@@ -1,12 +1,9 @@
 // Writes the example scenes of resources/scenes/ from the scene generators and the handout's
 // parameters. Run it after changing a generator: tools/make_examples resources/scenes
 #include "core/model/generators.h"
-#include "core/io/scene_file.h"
-#include "core/model/validate.h"
+#include "tools/scene_writer.h"
 
-#include <QDir>
 #include <cmath>
-#include <cstdio>
 
 namespace {
 
@@ -48,7 +45,7 @@ core::SceneDesc collisionsScene()
     scene.particles = {ParticleDesc{Vector3d(0.0, 1.0, 0.0), Vector3d::Zero(), 100.0, 0.3, true},
                        ParticleDesc{Vector3d(1.2, 0.2, 0.0), Vector3d::Zero(), 1.0, 0.2, false},
                        ParticleDesc{Vector3d(0.1, 3.0, 0.0), Vector3d::Zero(), 1.0, 0.2, false}};
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    scene.planes = {core::floorPlane()};
     return scene;
 }
 
@@ -89,7 +86,7 @@ core::SceneDesc heapScene()
         const Vector3d at(u * std::cos(turn) - w * std::sin(turn), 0.2 + 0.11 * (k / 16), u * std::sin(turn) + w * std::cos(turn));
         scene.particles.push_back(ParticleDesc{at, Vector3d::Zero(), 0.05, r, false});
     }
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    scene.planes = {core::floorPlane()};
     return scene;
 }
 
@@ -104,7 +101,7 @@ core::SceneDesc stackScene()
     scene.particles = core::ballColumn(12, 0.1, 1.0, Vector3d(-1.5, 0.0, 0.0));
     const std::vector<ParticleDesc> pyramid = core::ballPyramid(10, 0.1, 1.0, Vector3d(-0.3, 0.0, 0.0));
     scene.particles.insert(scene.particles.end(), pyramid.begin(), pyramid.end());
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    scene.planes = {core::floorPlane()};
     return scene;
 }
 
@@ -127,7 +124,7 @@ core::SceneDesc clothOnTableScene()
     table.centre = Vector3d(0.8, 0.8, 0.0);
     table.axis = Vector3d(1.0, 0.0, 0.0);
     table.friction = 0.2;
-    scene.planes = {table, PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    scene.planes = {table, core::floorPlane()};
     return scene;
 }
 
@@ -136,7 +133,7 @@ core::SceneDesc clothScene()
 {
     core::SceneDesc scene = core::makeCloth({});
     scene.settings.particleCollisions = false;  // no self contacts: the sheet never folds onto itself here
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), -0.3}};
+    scene.planes = {core::floorPlane(-0.3)};
     return scene;
 }
 
@@ -159,7 +156,7 @@ core::SceneDesc tearableClothScene()
     // the sheet is centred on the y axis: the ball falls onto its middle
     scene.particles.push_back(
         ParticleDesc{Vector3d(0.0, options.height + 0.6, 0.0), Vector3d::Zero(), kBallMass, 0.12, false});
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    scene.planes = {core::floorPlane()};
     scene.settings.restitution = 0.3;  // the ball lands where it falls through
     return scene;
 }
@@ -183,7 +180,7 @@ core::SceneDesc stiffClothScene()
     scene.name = "stiff-cloth";
     scene.settings.integrator = core::Integrator::Xpbd;
     scene.settings.particleCollisions = false;  // no self contacts: the sheet does not fold onto itself here
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), -0.3}};
+    scene.planes = {core::floorPlane(-0.3)};
     return scene;
 }
 
@@ -205,7 +202,7 @@ core::SceneDesc stiffChainScene()
     scene.settings.integrator = core::Integrator::Xpbd;
     scene.settings.substeps = 100;
     scene.settings.particleCollisions = false;
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    scene.planes = {core::floorPlane()};
     return scene;
 }
 
@@ -213,25 +210,7 @@ core::SceneDesc stiffChainScene()
 
 int main(int argc, char **argv)
 {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: %s DIRECTORY\n", argv[0]);
-        return 2;
-    }
-    const QDir dir(QString::fromLocal8Bit(argv[1]));
-    for (const core::SceneDesc &scene :
-         {particlesScene(), springsScene(), collisionsScene(), poolScene(), clothScene(), tearableClothScene(),
-          heapScene(), stackScene(), clothOnTableScene(), stiffClothScene(), stiffChainScene()}) {
-        if (auto problem = core::findProblem(scene)) {
-            std::fprintf(stderr, "%s: %s: %s\n", scene.name.c_str(), problem->path.c_str(), problem->message.c_str());
-            return 1;
-        }
-        const QString path = dir.filePath(QString::fromStdString(scene.name) + ".json");
-        const io::SaveResult saved = io::saveScene(path, scene);
-        if (!saved.ok()) {
-            std::fprintf(stderr, "%s\n", qPrintable(saved.error));
-            return 1;
-        }
-        std::printf("wrote %s\n", qPrintable(path));
-    }
-    return 0;
+    return tools::writeScenes(argc, argv,
+                              {particlesScene(), springsScene(), collisionsScene(), poolScene(), clothScene(), tearableClothScene(),
+                               heapScene(), stackScene(), clothOnTableScene(), stiffClothScene(), stiffChainScene()});
 }

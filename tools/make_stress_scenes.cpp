@@ -2,16 +2,13 @@
 // each with a pass criterion checked by tests/stress/test_stress.cpp. Run it after changing a
 // scene here: tools/make_stress_scenes resources/scenes/stress
 #include "core/model/generators.h"
-#include "core/io/scene_file.h"
+#include "tools/scene_writer.h"
 #include "core/model/model.h"
 #include "core/integrators/stability.h"
 #include "core/model/state.h"
-#include "core/model/validate.h"
 
-#include <QDir>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 
 namespace {
 
@@ -88,9 +85,8 @@ core::SceneDesc column()
     scene.name = "column-30";
     scene.settings.restitution = 0.0;
     scene.settings.substeps = 10;
-    for (int i = 0; i < 30; ++i)
-        scene.particles.push_back(ParticleDesc{Vector3d(0.0, 0.1 + 0.2 * i, 0.0), Vector3d::Zero(), 1.0, 0.1, false});
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}};
+    scene.particles = core::ballColumn(30, 0.1, 1.0, Vector3d::Zero());
+    scene.planes = {core::floorPlane()};
     return scene;
 }
 
@@ -106,12 +102,8 @@ core::SceneDesc pyramid()
     scene.name = "pyramid-20";
     scene.settings.restitution = 0.0;
     scene.settings.substeps = 10;
-    for (int row = 0; row < kBase; ++row)
-        for (int i = 0; i < kBase - row; ++i)
-            scene.particles.push_back(ParticleDesc{
-                Vector3d(-halfWidth + kRadius * (1 + row + 2 * i), kRadius * (1.0 + std::sqrt(3.0) * row), 0.0),
-                Vector3d::Zero(), 1.0, kRadius, false});
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0}, PlaneDesc{Vector3d(1.0, 0.0, 0.0), -halfWidth},
+    scene.particles = core::ballPyramid(kBase, kRadius, 1.0, Vector3d(-halfWidth + kRadius, 0.0, 0.0));
+    scene.planes = {core::floorPlane(), PlaneDesc{Vector3d(1.0, 0.0, 0.0), -halfWidth},
                     PlaneDesc{Vector3d(-1.0, 0.0, 0.0), -halfWidth}};
     return scene;
 }
@@ -147,9 +139,7 @@ core::SceneDesc elasticBox()
                 const Vector3d velocity(random.next(), random.next(), random.next());
                 scene.particles.push_back(ParticleDesc{position, 2.0 * velocity, 1.0, 0.05, false});
             }
-    scene.planes = {PlaneDesc{Vector3d(0.0, 1.0, 0.0), 0.0},   PlaneDesc{Vector3d(0.0, -1.0, 0.0), -2.0},
-                    PlaneDesc{Vector3d(1.0, 0.0, 0.0), -1.0},  PlaneDesc{Vector3d(-1.0, 0.0, 0.0), -1.0},
-                    PlaneDesc{Vector3d(0.0, 0.0, 1.0), -1.0},  PlaneDesc{Vector3d(0.0, 0.0, -1.0), -1.0}};
+    scene.planes = core::boxPlanes(1.0, 2.0);
     return scene;
 }
 
@@ -197,28 +187,6 @@ core::SceneDesc largeStep()
 
 int main(int argc, char **argv)
 {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: %s DIRECTORY\n", argv[0]);
-        return 2;
-    }
-    const QDir dir(QString::fromLocal8Bit(argv[1]));
-    if (!dir.mkpath(QStringLiteral("."))) {
-        std::fprintf(stderr, "cannot create %s\n", argv[1]);
-        return 1;
-    }
-    for (const core::SceneDesc &scene :
-         {stiffCloth(), heavyChain(), column(), pyramid(), crowd(), elasticBox(), projectiles(), largeStep()}) {
-        if (auto problem = core::findProblem(scene)) {
-            std::fprintf(stderr, "%s: %s: %s\n", scene.name.c_str(), problem->path.c_str(), problem->message.c_str());
-            return 1;
-        }
-        const QString path = dir.filePath(QString::fromStdString(scene.name) + ".json");
-        const io::SaveResult saved = io::saveScene(path, scene);
-        if (!saved.ok()) {
-            std::fprintf(stderr, "%s\n", qPrintable(saved.error));
-            return 1;
-        }
-        std::printf("wrote %s\n", qPrintable(path));
-    }
-    return 0;
+    return tools::writeScenes(argc, argv,
+                              {stiffCloth(), heavyChain(), column(), pyramid(), crowd(), elasticBox(), projectiles(), largeStep()});
 }

@@ -103,6 +103,21 @@ std::vector<ParticleDesc> ballPyramid(int base, double radius, double mass, cons
     return balls;
 }
 
+PlaneDesc floorPlane(double height)
+{
+    return PlaneDesc{Eigen::Vector3d(0.0, 1.0, 0.0), height};
+}
+
+std::vector<PlaneDesc> boxPlanes(double halfWidth, double height)
+{
+    return {floorPlane(0.0),
+            PlaneDesc{Eigen::Vector3d(0.0, -1.0, 0.0), -height},
+            PlaneDesc{Eigen::Vector3d(1.0, 0.0, 0.0), -halfWidth},
+            PlaneDesc{Eigen::Vector3d(-1.0, 0.0, 0.0), -halfWidth},
+            PlaneDesc{Eigen::Vector3d(0.0, 0.0, 1.0), -halfWidth},
+            PlaneDesc{Eigen::Vector3d(0.0, 0.0, -1.0), -halfWidth}};
+}
+
 SceneDesc makeChain(const ChainOptions &o)
 {
     SceneDesc scene;

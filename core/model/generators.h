@@ -141,6 +141,12 @@ std::optional<std::string> checkOptions(const SoftBallOptions &options);
 std::vector<ParticleDesc> ballColumn(int count, double radius, double mass, const Eigen::Vector3d &foot);
 std::vector<ParticleDesc> ballPyramid(int base, double radius, double mass, const Eigen::Vector3d &foot);
 
+// a floor: the plane y = height, its normal up
+PlaneDesc floorPlane(double height = 0.0);
+// the walls of a closed box, normals pointing in: the floor y = 0, the ceiling y = height and the
+// four sides at x, z = ±halfWidth, in that order
+std::vector<PlaneDesc> boxPlanes(double halfWidth, double height);
+
 // joins particles a and b with a spring whose rest length is their current distance
 void addSpring(SceneDesc &scene, int a, int b, double stiffness, double damping);
 
