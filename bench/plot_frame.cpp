@@ -106,7 +106,7 @@ void drawPowerOfTen(QPainter &painter, int exponent, QPointF anchor, bool rightA
 
 }  // namespace
 
-void drawLogGrid(QPainter &painter, const LogAxes &axes)
+void drawLogGridX(QPainter &painter, const LogAxes &axes)
 {
     const QRectF &plot = axes.plot;
     const QPen gridPen(QColor(0xDD, 0xDD, 0xDD), 1.0);
@@ -123,6 +123,13 @@ void drawLogGrid(QPainter &painter, const LogAxes &axes)
             painter.drawLine(QPointF(xm, plot.bottom()), QPointF(xm, plot.bottom() + 4.0));
         }
     }
+}
+
+void drawLogGridY(QPainter &painter, const LogAxes &axes)
+{
+    const QRectF &plot = axes.plot;
+    const QPen gridPen(QColor(0xDD, 0xDD, 0xDD), 1.0);
+    const QPen tickPen(QColor(0x55, 0x55, 0x55), 1.0);
     for (int k = axes.y.lo; k <= axes.y.hi; ++k) {
         const double y = axes.toY(std::pow(10.0, k));
         painter.setPen(gridPen);
@@ -135,6 +142,21 @@ void drawLogGrid(QPainter &painter, const LogAxes &axes)
             painter.drawLine(QPointF(plot.left() - 4.0, ym), QPointF(plot.left(), ym));
         }
     }
+}
+
+void drawLogGrid(QPainter &painter, const LogAxes &axes)
+{
+    drawLogGridX(painter, axes);
+    drawLogGridY(painter, axes);
+}
+
+void drawLegendLine(QPainter &painter, const QPen &pen, QPointF at, double length, double textGap,
+                    const QString &text)
+{
+    painter.setPen(pen);
+    painter.drawLine(QPointF(at.x(), at.y() + 9.0), QPointF(at.x() + length, at.y() + 9.0));
+    painter.setPen(Qt::black);
+    painter.drawText(QPointF(at.x() + length + textGap, at.y() + 13.0), text);
 }
 
 }  // namespace bench

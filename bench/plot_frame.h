@@ -10,6 +10,8 @@
 #include <QColor>
 #include <QFont>
 #include <QImage>
+#include <QPen>
+#include <QPointF>
 #include <QRectF>
 #include <QSize>
 #include <QString>
@@ -55,5 +57,13 @@ struct LogAxes {
 // the grid of log-log axes: a grey line at each decade with its label (10 with the exponent
 // raised), short ticks at 2..9 times it
 void drawLogGrid(QPainter &painter, const LogAxes &axes);
+// the same for one axis alone, for a plot whose other axis is linear (its y decades unused)
+void drawLogGridX(QPainter &painter, const LogAxes &axes);
+void drawLogGridY(QPainter &painter, const LogAxes &axes);
+
+// a legend entry at `at` (its top left): a line of `pen`, `length` long, then `text` in black,
+// `textGap` after the line's end
+void drawLegendLine(QPainter &painter, const QPen &pen, QPointF at, double length, double textGap,
+                    const QString &text);
 
 }  // namespace bench

@@ -76,7 +76,8 @@ QImage drawStabilityMap(const QString &title, const std::vector<StabilityPoint> 
     const double yHi = std::ceil(ratioHi * 10.0 + 0.5) / 10.0;
 
     const QRectF plot(QPointF(100.0, 70.0), QPointF(size.width() - 270.0, size.height() - 90.0));
-    const auto toX = [&](double step) { return plot.left() + (std::log10(step) - xLo) / (xHi - xLo) * plot.width(); };
+    const LogAxes xAxis{plot, Decades{xLo, xHi}, Decades{}};
+    const auto toX = [&](double step) { return xAxis.toX(step); };
     const auto toY = [&](double ratio) { return plot.bottom() - (ratio - yLo) / (yHi - yLo) * plot.height(); };
 
     drawPlotTitle(painter, size, font, title);
@@ -85,16 +86,7 @@ QImage drawStabilityMap(const QString &title, const std::vector<StabilityPoint> 
     const QPen gridPen(QColor(0xDD, 0xDD, 0xDD), 1.0);
     const QPen tickPen(QColor(0x55, 0x55, 0x55), 1.0);
     const QFontMetricsF metrics(font);
-    for (int k = xLo; k <= xHi; ++k) {
-        const double x = toX(std::pow(10.0, k));
-        painter.setPen(gridPen);
-        painter.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
-        painter.setPen(tickPen);
-        painter.drawLine(QPointF(x, plot.bottom()), QPointF(x, plot.bottom() + 6.0));
-        const QString label = QStringLiteral("1e%1").arg(k);
-        painter.drawText(QPointF(x - 0.5 * metrics.horizontalAdvance(label), plot.bottom() + 8.0 + metrics.ascent()),
-                         label);
-    }
+    drawLogGridX(painter, xAxis);
     // a line every 0.02 on a narrow range, every 0.1 or 0.2 on wider ones
     const double spacing = yHi - yLo <= 0.3 ? 0.02 : (yHi - yLo <= 1.2 ? 0.1 : 0.2);
     const int lines = static_cast<int>(std::lround((yHi - yLo) / spacing));
@@ -162,10 +154,7 @@ QImage drawStabilityMap(const QString &title, const std::vector<StabilityPoint> 
             y += 22.0;
         }
     }
-    painter.setPen(theoryPen);
-    painter.drawLine(QPointF(x, y + 9.0), QPointF(x + 18.0, y + 9.0));
-    painter.setPen(Qt::black);
-    painter.drawText(QPointF(x + 24.0, y + 13.0), QStringLiteral("measured = theory"));
+    drawLegendLine(painter, theoryPen, QPointF(x, y), 18.0, 6.0, QStringLiteral("measured = theory"));
     y += 34.0;
     painter.drawText(QRectF(x, y, size.width() - x - 12.0, size.height() - y - 20.0), Qt::TextWordWrap, note);
     return image;

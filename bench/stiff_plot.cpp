@@ -107,10 +107,7 @@ QImage drawStiff(const QString &title, const std::vector<StiffPoint> &points, co
     painter.setPen(Qt::black);
     painter.drawText(QPointF(x + 40.0, y + 13.0), QStringLiteral("estimate (capped run)"));
     y += 22.0;
-    painter.setPen(realTimePen);
-    painter.drawLine(QPointF(x, y + 9.0), QPointF(x + 30.0, y + 9.0));
-    painter.setPen(Qt::black);
-    painter.drawText(QPointF(x + 40.0, y + 13.0), QStringLiteral("real time"));
+    drawLegendLine(painter, realTimePen, QPointF(x, y), 30.0, 10.0, QStringLiteral("real time"));
     y += 32.0;
     painter.drawText(QRectF(x, y, size.width() - x - 12.0, size.height() - y - 20.0), Qt::TextWordWrap, note);
     return image;

@@ -106,35 +106,14 @@ QImage drawThroughput(const QString &title, const std::vector<ThroughputRow> &ro
     const int yHi = empty ? 3 : std::max(yLo + 1, static_cast<int>(std::ceil(std::log10(yMax))));
 
     const QRectF plot(QPointF(100.0, 70.0), QPointF(size.width() - 330.0, size.height() - 90.0));
-    const auto toX = [&](double x) { return plot.left() + (std::log10(x) - xLo) / (xHi - xLo) * plot.width(); };
-    const auto toY = [&](double y) { return plot.bottom() - (std::log10(y) - yLo) / (yHi - yLo) * plot.height(); };
+    const LogAxes axes{plot, Decades{xLo, xHi}, Decades{yLo, yHi}};
+    const auto toX = [&](double x) { return axes.toX(x); };
+    const auto toY = [&](double y) { return axes.toY(y); };
 
     drawPlotTitle(painter, size, font, title);
 
     // grid: decades both ways
-    const QPen gridPen(QColor(0xDD, 0xDD, 0xDD), 1.0);
-    const QPen tickPen(QColor(0x55, 0x55, 0x55), 1.0);
-    const QFontMetricsF metrics(font);
-    for (int k = xLo; k <= xHi; ++k) {
-        const double x = toX(std::pow(10.0, k));
-        painter.setPen(gridPen);
-        painter.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
-        painter.setPen(tickPen);
-        painter.drawLine(QPointF(x, plot.bottom()), QPointF(x, plot.bottom() + 6.0));
-        const QString label = QStringLiteral("1e%1").arg(k);
-        painter.drawText(QPointF(x - 0.5 * metrics.horizontalAdvance(label), plot.bottom() + 8.0 + metrics.ascent()),
-                         label);
-    }
-    for (int k = yLo; k <= yHi; ++k) {
-        const double y = toY(std::pow(10.0, k));
-        painter.setPen(gridPen);
-        painter.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
-        painter.setPen(tickPen);
-        painter.drawLine(QPointF(plot.left() - 6.0, y), QPointF(plot.left(), y));
-        const QString label = QStringLiteral("1e%1").arg(k);
-        painter.drawText(QPointF(plot.left() - 10.0 - metrics.horizontalAdvance(label), y + 0.35 * metrics.ascent()),
-                         label);
-    }
+    drawLogGrid(painter, axes);
 
     // the frame and the axis labels, with units
     drawPlotFrame(painter, plot, QStringLiteral("particles"),
