@@ -43,3 +43,13 @@ if(SPRINGLAB_FUZZ)
   add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
   add_link_options(-fsanitize=address,undefined)
 endif()
+
+# unity builds of the libraries and the larger programs: their sources compiled a few at a time as
+# one translation unit, so that Qt's and Eigen's headers are parsed once a batch rather than once a
+# file (the build's main cost). Off to find a file that does not compile on its own.
+option(SPRINGLAB_UNITY_BUILD "Compile the libraries' sources in batches (unity build)" ON)
+function(springlab_unity_build target)
+  if(SPRINGLAB_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
+  endif()
+endfunction()

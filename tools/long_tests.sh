@@ -32,7 +32,7 @@ SPRINGLAB_MONKEY_EVENTS=1000 ctest --preset tsan --timeout 7200 -L ui
 SPRINGLAB_STRESS_SECONDS=60 ctest --preset tsan -R '^test_live_edit_stress$'
 
 cmake --preset asan >/dev/null
-cmake --build --preset asan
+cmake --build build/asan  # every target: the asan build preset builds the unit tests alone
 SPRINGLAB_LIFECYCLE_CYCLES=1000 ctest --preset asan --timeout 7200 -R '^test_lifecycle$'
 ctest --preset asan --timeout 7200 -R '^test_monkey$'
 
