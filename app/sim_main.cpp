@@ -7,7 +7,9 @@
 //        springlab-sim --summary-csv-header
 //        springlab-sim --replay SESSION.json [--output FINAL.json] [--quiet]
 // Exit code 0 done, 2 bad file or argument (or --render with no display, or an --output that is not
-// a regular file), 3 the simulation blew up, 4 a replay did not end with the recorded state.
+// a regular file), memory that ran out, or an output that could not be written, 3 the simulation
+// blew up, 4 a replay did not end with the recorded state. The summary's status tells the
+// failures that share exit code 2 apart (app::RunStatus).
 
 #include "sim_options.h"
 #include "sim_render.h"
@@ -36,6 +38,7 @@
 #include <system_error>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <new>
 
@@ -70,14 +73,34 @@ int failWith(const QString &message)
     return kExitBadInput;
 }
 
+int exitCodeOf(app::RunStatus status)
+{
+    switch (status) {
+    case app::RunStatus::Ok: return kExitOk;
+    case app::RunStatus::BadInput:
+    case app::RunStatus::OutOfMemory:
+    case app::RunStatus::WriteFailed: return kExitBadInput;
+    case app::RunStatus::BlewUp: return kExitBlewUp;
+    case app::RunStatus::ReplayDiffers: return kExitReplayDiffers;
+    }
+    return kExitBadInput;
+}
+
+// why what was printed did not reach stdout (a full disk, a closed pipe); empty when it did
+QString stdoutFailure()
+{
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout))
+        return {};
+    const int savedErrno = errno;
+    return u"cannot write to the standard output: "_s + QString::fromStdString(std::generic_category().message(savedErrno));
+}
+
 // the exit code, once what was printed has reached stdout: a summary that could not be written
 // (a full disk, a closed pipe) is a failure, not a success
 int finish(int code)
 {
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        const int savedErrno = errno;
-        QTextStream(stderr) << "springlab-sim: cannot write to the standard output: "
-                            << QString::fromStdString(std::generic_category().message(savedErrno)) << '\n';
+    if (const QString failure = stdoutFailure(); !failure.isEmpty()) {
+        failWith(failure);
         return code == kExitOk ? kExitBadInput : code;
     }
     return code;
@@ -95,10 +118,11 @@ QString energyRow(const char *label, const core::Energies &e)
                              e.total());
 }
 
-// the run's summary written where --summary-json and --summary-csv say, whatever the exit code;
-// a summary that cannot be written turns success into failure
-int reportSummary(app::RunSummary &summary, const QString &jsonPath, const QString &csvPath, int code)
+// the run's summary written where --summary-json and --summary-csv say, whatever its status; the
+// exit code is the status's, and a summary that cannot be written turns success into failure
+int reportSummary(app::RunSummary &summary, const QString &jsonPath, const QString &csvPath)
 {
+    const int code = exitCodeOf(summary.status);
     summary.exitCode = code;
     if (const QString failure = app::saveSummary(summary, jsonPath, csvPath); !failure.isEmpty()) {
         failWith(failure);
@@ -116,20 +140,21 @@ QString refusedOutput(const app::SimOptions &options)
     return refused.isEmpty() ? refused : QDir::toNativeSeparators(options.outputPath) + u": cannot save: "_s + refused;
 }
 
-int runScene(const app::SimOptions &options, app::RunSummary &summary);
+void runScene(const app::SimOptions &options, app::RunSummary &summary);
 
 // a scene that needs more memory than the process may have (a file of millions of particles, a
-// crowd of overlapping ones, a cap set with ulimit -v) is a message and exit 2, never an abort.
-// What the run held is freed by the time the exception gets here, so the message can be made;
-// the steps catch their own, to say which step.
-int runSceneWithinMemory(const app::SimOptions &options, app::RunSummary &summary)
+// crowd of overlapping ones, a cap set with ulimit -v) is a message, exit 2 and the status
+// out-of-memory, never an abort. What the run held is freed by the time the exception gets here,
+// so the message can be made; the steps catch their own, to say which step.
+void runSceneWithinMemory(const app::SimOptions &options, app::RunSummary &summary)
 {
     try {
-        return runScene(options, summary);
+        runScene(options, summary);
     } catch (const std::bad_alloc &) {
+        summary.status = app::RunStatus::OutOfMemory;
         summary.error = options.scenePath + u": out of memory while loading and preparing the scene: it needs "
                                             "more memory than this process may use (see ulimit -v)"_s;
-        return failWith(summary.error);
+        failWith(summary.error);
     }
 }
 
@@ -190,8 +215,9 @@ int main(int argc, char *argv[])
     }
     if (!parsed.options) {
         app::RunSummary refused = parsed.refused;
-        const int code = failWith(parsed.error + u"\n  (springlab-sim --help lists the options)"_s);
-        return finish(reportSummary(refused, parsed.summaryJsonPath, parsed.summaryCsvPath, code));
+        refused.status = app::RunStatus::BadInput;
+        failWith(parsed.error + u"\n  (springlab-sim --help lists the options)"_s);
+        return finish(reportSummary(refused, parsed.summaryJsonPath, parsed.summaryCsvPath));
     }
     const app::SimOptions &options = *parsed.options;
     if (options.replay) {
@@ -209,60 +235,92 @@ int main(int argc, char *argv[])
     app::RunSummary summary;
     summary.scene = options.scenePath;
     summary.overrides = app::overridesApplied(options);
-    const int code = runSceneWithinMemory(options, summary);
-    return finish(reportSummary(summary, options.summaryJsonPath, options.summaryCsvPath, code));
+    runSceneWithinMemory(options, summary);
+
+    // what it printed reaches stdout before the summary is written, so that a run whose report
+    // was lost (a full disk, a closed pipe) is not filed as ok
+    if (const QString failure = stdoutFailure(); !failure.isEmpty()) {
+        failWith(failure);
+        if (summary.status == app::RunStatus::Ok) {
+            summary.status = app::RunStatus::WriteFailed;
+            summary.error = failure;
+        }
+    }
+    return reportSummary(summary, options.summaryJsonPath, options.summaryCsvPath);
 }
 
 namespace {
 
-int runScene(const app::SimOptions &options, app::RunSummary &summary)
+void runScene(const app::SimOptions &options, app::RunSummary &summary)
 {
-    // a failure before the end: said on stderr and kept for the summary
-    const auto failRun = [&summary](const QString &message) {
+    // a failure before the end: said on stderr and kept for the summary, with what kind it was
+    const auto failRun = [&summary](app::RunStatus status, const QString &message) {
+        summary.status = status;
         summary.error = message;
-        return failWith(message);
+        failWith(message);
     };
     if (const QString refused = refusedOutput(options); !refused.isEmpty())
-        return failRun(refused);
+        return failRun(app::RunStatus::BadInput, refused);
 
     // the scene, with the command line's settings over the file's
     const io::LoadResult loaded = io::loadScene(options.scenePath);
     if (!loaded.ok())
-        return failRun(loaded.error);
+        return failRun(loaded.outOfMemory ? app::RunStatus::OutOfMemory : app::RunStatus::BadInput, loaded.error);
     if (!options.quiet)
         for (const QString &warning : loaded.warnings)
             QTextStream(stderr) << "springlab-sim: warning: " << printable(warning) << '\n';
     core::SceneDesc scene = *loaded.scene;
     if (const QString problem = app::applyOverrides(options, scene); !problem.isEmpty())
-        return failRun(problem);
+        return failRun(app::RunStatus::BadInput, problem);
     QString error;
     const std::optional<std::uint64_t> steps = app::stepsToRun(options, scene.settings, error);
     if (!steps)
-        return failRun(error);
+        return failRun(app::RunStatus::BadInput, error);
 
     // model and initial state
     const auto model = core::compileModel(scene);
     core::State state = core::makeState(*model, scene);
     const core::Energies start = core::energies(*model, state);
 
-    // the trace starts with step 0
+    // what the run did, as far as it went, for --summary-json and --summary-csv
+    qint64 nanoseconds = 0;
+    const auto record = [&](const core::Energies &end) {
+        const auto name = [](std::string_view text) { return QString::fromUtf8(text.data(), qsizetype(text.size())); };
+        summary.ran = true;
+        summary.integrator = name(core::integratorName(scene.settings.integrator));
+        summary.contactSolver = name(core::contactSolverName(scene.settings.contactSolver));
+        summary.timeStep = scene.settings.timeStep;
+        summary.substeps = model->substeps;
+        summary.stepsRequested = *steps;
+        summary.steps = state.step;
+        summary.simulatedTime = state.time;
+        summary.wallTime = static_cast<double>(nanoseconds) * 1e-9;
+        summary.start = start;
+        summary.end = end;
+        summary.springBreaks = state.breaks.size();
+        summary.warnings = loaded.warnings;
+    };
+
+    // the trace starts with step 0; a trace or a frame that cannot be written before the first
+    // step is a write that failed all the same (the figures stay null: nothing ran)
     io::TraceWriter trace;
     const bool tracing = !options.tracePath.isEmpty();
     if (tracing) {
         if (const QString failure = trace.open(options.tracePath); !failure.isEmpty())
-            return failRun(failure);
+            return failRun(app::RunStatus::WriteFailed, failure);
         trace.writeRows(state);
     }
 
-    // the frames start with step 0 too
+    // the frames start with step 0 too; a render that cannot start (no OpenGL, a size past the
+    // driver's, a folder that cannot be made) is refused before the run
     app::FrameRenderer frames;
     const bool rendering = !options.renderDirectory.isEmpty();
     if (rendering) {
         if (const QString failure = frames.open(options.renderDirectory, options.frameSize, options.fps, scene, *steps);
             !failure.isEmpty())
-            return failRun(failure);
+            return failRun(app::RunStatus::BadInput, failure);
         if (const QString failure = frames.renderDue(*model, state); !failure.isEmpty())
-            return failRun(failure);
+            return failRun(app::RunStatus::WriteFailed, failure);
     }
 
     // the run, in chunks between trace rows (every K steps, not the last step unless K divides it)
@@ -270,7 +328,6 @@ int runScene(const app::SimOptions &options, app::RunSummary &summary)
     const core::State initial = state;  // to explain a blow-up, should one happen
     core::Workspace work;
     QElapsedTimer timer;
-    qint64 nanoseconds = 0;
     bool blewUp = false;
     while (state.step < *steps && !blewUp) {
         std::uint64_t until = *steps;
@@ -287,20 +344,30 @@ int runScene(const app::SimOptions &options, app::RunSummary &summary)
                 }
         } catch (const std::bad_alloc &) {
             work = core::Workspace{};  // the step's scratch let go before anything else is made
-            return failRun(options.scenePath + u": out of memory in step %1: the step needs more memory than this "
-                                                "process may use (see ulimit -v)"_s.arg(state.step + 1));
+            // the steps before it stand; the state is half-way through a step, so its energies
+            // are not known
+            nanoseconds += timer.nsecsElapsed();
+            const double unknown = std::numeric_limits<double>::quiet_NaN();
+            record(core::Energies{unknown, unknown, unknown});
+            return failRun(app::RunStatus::OutOfMemory,
+                           options.scenePath + u": out of memory in step %1: the step needs more memory than this "
+                                               "process may use (see ulimit -v)"_s.arg(state.step + 1));
         }
         nanoseconds += timer.nsecsElapsed();
         if (tracing && !blewUp && state.step % options.every == 0)
             trace.writeRows(state);
         if (rendering && !blewUp)
-            if (const QString failure = frames.renderDue(*model, state); !failure.isEmpty())
-                return failRun(failure);
+            if (const QString failure = frames.renderDue(*model, state); !failure.isEmpty()) {
+                record(core::energies(*model, state));
+                return failRun(app::RunStatus::WriteFailed, failure);
+            }
     }
-    if (tracing)
-        if (const QString failure = trace.close(); !failure.isEmpty())
-            return failRun(failure);
     const core::Energies end = core::energies(*model, state);
+    if (tracing)
+        if (const QString failure = trace.close(); !failure.isEmpty()) {
+            record(end);
+            return failRun(app::RunStatus::WriteFailed, failure);
+        }
 
     // without contacts nothing in a file adds energy (drag takes it): a total that rose by more
     // than half of all the energy in play (each kind's size, at the start or the end, whichever is
@@ -326,26 +393,16 @@ int runScene(const app::SimOptions &options, app::RunSummary &summary)
             QTextStream(stderr) << "springlab-sim: warning: " << warning << '\n';
 
     // what the run did, for --summary-json and --summary-csv
-    const auto name = [](std::string_view text) { return QString::fromUtf8(text.data(), qsizetype(text.size())); };
-    summary.ran = true;
-    summary.integrator = name(core::integratorName(scene.settings.integrator));
-    summary.contactSolver = name(core::contactSolverName(scene.settings.contactSolver));
-    summary.timeStep = scene.settings.timeStep;
-    summary.substeps = model->substeps;
-    summary.stepsRequested = *steps;
-    summary.steps = state.step;
-    summary.simulatedTime = state.time;
-    summary.wallTime = static_cast<double>(nanoseconds) * 1e-9;
-    summary.start = start;
-    summary.end = end;
-    summary.springBreaks = state.breaks.size();
-    summary.warnings = loaded.warnings + runWarnings;
+    record(end);
+    summary.warnings += runWarnings;
     const QString blowup = blewUp ? QString::fromStdString(core::explainBlowup(
                                         *model, *work.blowup, core::stabilityLimit(*model, initial)))
                                   : QString();
+    summary.status = blewUp ? app::RunStatus::BlewUp : app::RunStatus::Ok;
     summary.error = blowup;
 
-    // the final state as a scene to run on from; a blown-up state is not worth saving
+    // the final state as a scene to run on from; a blown-up state is not worth saving. A run that
+    // went to its end but could not save it is filed as such, its figures kept
     if (!options.outputPath.isEmpty() && !blewUp) {
         core::SceneDesc final = scene;
         core::storeState(state, final);
@@ -354,7 +411,7 @@ int runScene(const app::SimOptions &options, app::RunSummary &summary)
         if (scene.settings.autoSubsteps)
             final.settings.substeps = model->substeps;
         if (const io::SaveResult saved = io::saveScene(options.outputPath, final); !saved.ok())
-            return failRun(saved.error);
+            return failRun(app::RunStatus::WriteFailed, saved.error);
     }
 
     // the summary
@@ -406,7 +463,6 @@ int runScene(const app::SimOptions &options, app::RunSummary &summary)
     if (blewUp)
         QTextStream(stderr) << "springlab-sim: " << blowup
                             << (options.outputPath.isEmpty() ? "" : "\n  (no --output written)") << '\n';
-    return blewUp ? kExitBlewUp : kExitOk;
 }
 
 }  // namespace

@@ -1,5 +1,8 @@
 #include "sim_options.h"
 
+#include "ui/export/image_sequence.h"
+
+#include "core/io/file_identity.h"
 #include "core/io/scene_words.h"
 #include "core/model/parameters.h"
 #include "core/contacts/solver_names.h"
@@ -8,7 +11,6 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
-#include <QFileInfo>
 #include <QRegularExpression>
 
 #include <cmath>
@@ -18,15 +20,6 @@ namespace app {
 using namespace Qt::Literals::StringLiterals;
 
 namespace {
-
-// whether two paths name one file: through links where the file is there, else as written
-bool samePath(const QString &a, const QString &b)
-{
-    const QFileInfo first(a), second(b);
-    if (first.exists() && second.exists())
-        return first.canonicalFilePath() == second.canonicalFilePath();
-    return QDir::cleanPath(first.absoluteFilePath()) == QDir::cleanPath(second.absoluteFilePath());
-}
 
 // more steps than this cannot be counted exactly in a double, nor run in a lifetime
 constexpr double kMaxSteps = 9007199254740992.0;  // 2^53
@@ -271,27 +264,42 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
 
 QString clashingPaths(const SimOptions &options)
 {
-    // what the run reads, then what it writes, each named by its option
+    // what the run reads, then what it writes, each named by its option. Files are compared as
+    // files (io::sameFile), not as paths: a hard link to the scene passed as --trace, or the
+    // scene's folder reached through a bind mount, would otherwise be truncated and written over
     const std::pair<const char *, QString> inputs[] = {{options.replay ? "the recording's" : "the scene's", options.scenePath}};
     const std::pair<const char *, QString> outputs[] = {{"--output", options.outputPath},
                                                         {"--trace", options.tracePath},
                                                         {"--summary-json", options.summaryJsonPath},
-                                                        {"--summary-csv", options.summaryCsvPath}};
+                                                        {"--summary-csv", options.summaryCsvPath},
+                                                        {"--render", options.renderDirectory}};
     for (const auto &[name, written] : outputs) {
         if (written.isEmpty())
             continue;
         for (const auto &[inputName, read] : inputs)
-            if (samePath(written, read))
+            if (io::sameFile(written, read))
                 return u"%1 %2 names %3 file: the run would overwrite what it reads"_s
                     .arg(QString::fromLatin1(name), QDir::toNativeSeparators(written), QString::fromLatin1(inputName));
     }
     for (std::size_t i = 0; i < std::size(outputs); ++i)
         for (std::size_t j = i + 1; j < std::size(outputs); ++j)
-            if (!outputs[i].second.isEmpty() && !outputs[j].second.isEmpty() &&
-                samePath(outputs[i].second, outputs[j].second))
+            if (io::sameFile(outputs[i].second, outputs[j].second))
                 return u"%1 and %2 name one file, %3: one would overwrite the other"_s.arg(
                     QString::fromLatin1(outputs[i].first), QString::fromLatin1(outputs[j].first),
                     QDir::toNativeSeparators(outputs[i].second));
+
+    // --render removes the frame-NNNNN.png files in its folder, then writes its own there
+    const QString &frames = options.renderDirectory;
+    if (frames.isEmpty())
+        return QString();
+    for (const auto &[inputName, read] : inputs)
+        if (ui::isSequenceFrame(read, frames))
+            return u"--render %1 would replace %2 file, %3, with a frame: the run would overwrite what it reads"_s.arg(
+                QDir::toNativeSeparators(frames), QString::fromLatin1(inputName), QDir::toNativeSeparators(read));
+    for (const auto &[name, written] : outputs)
+        if (!written.isEmpty() && written != frames && ui::isSequenceFrame(written, frames))
+            return u"%1 %2 is one of the frames of --render %3: one would overwrite the other"_s.arg(
+                QString::fromLatin1(name), QDir::toNativeSeparators(written), QDir::toNativeSeparators(frames));
     return QString();
 }
 
@@ -307,6 +315,7 @@ void reportRefusal(const QCommandLineParser &parser, ParsedOptions &parsed)
     named.tracePath = parser.value(u"trace"_s);
     named.summaryJsonPath = parser.value(u"summary-json"_s);
     named.summaryCsvPath = parser.value(u"summary-csv"_s);
+    named.renderDirectory = parser.value(u"render"_s);
     if (parser.isSet(u"replay"_s) || !clashingPaths(named).isEmpty())
         return;
     parsed.summaryJsonPath = named.summaryJsonPath;

@@ -62,7 +62,10 @@ struct ParsedOptions {
 ParsedOptions parseSimOptions(const QStringList &arguments);
 
 // why the files options name cannot be used together (empty: they can): an output (--output,
-// --trace, --summary-json, --summary-csv) that names the file read, or two outputs that name one file
+// --trace, --summary-json, --summary-csv, the --render folder) that is the file read, two outputs
+// that are one file, or a file read or written that is one of --render's frames. Files are
+// compared by identity (device and inode, io::sameFile), so links, bind mounts and other
+// spellings of a path are caught
 QString clashingPaths(const SimOptions &options);
 
 // what the command line changes in the scene, by the keys --set names them with:

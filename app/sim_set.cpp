@@ -1,7 +1,9 @@
 // Design note. Each family of keys (settings, particles, springs, planes) has one table: the key as
 // the scene file spells it, the kind of value it takes, and how it is written into the element.
 // No range is written here: the changed scene is checked by core::findProblem against the
-// parameter table (core/model/parameters.h), as the file itself was when it was loaded.
+// parameter table (core/model/parameters.h), as the file itself was when it was loaded. An
+// override that reaches no element is written into a scene of stand-in elements instead, so that
+// its value meets the same check.
 
 #include "sim_set.h"
 
@@ -97,14 +99,32 @@ QString fieldNames(const Fields &fields)
 }
 
 // the value text as a file would hold it: JSON where it reads as one value, else a bare word
-// (so that integrator=rk4 needs no quotes on a command line)
-QJsonValue valueOf(const QString &text)
+// (so that integrator=rk4 needs no quotes on a command line); isJson says which
+QJsonValue valueOf(const QString &text, bool &isJson)
 {
     QJsonParseError error{};
     const QJsonDocument document = QJsonDocument::fromJson(u"["_s.append(text).append(u']').toUtf8(), &error);
-    if (error.error == QJsonParseError::NoError && document.array().size() == 1)
-        return document.array().first();
-    return QJsonValue(text);
+    isJson = error.error == QJsonParseError::NoError && document.array().size() == 1;
+    return isJson ? document.array().first() : QJsonValue(text);
+}
+
+// a number in the text that no double holds (1e400, 1e-400, nan, inf), which JSON does not read,
+// said as the scene file's loader says it (io::unholdableNumber) at the same path:
+// "settings.gravity[0]: the number 1e400 is too large for a double: ..."; empty when there is none
+QString unholdableIn(Kind kind, const QString &key, const QString &text)
+{
+    const QString trimmed = text.trimmed();
+    if (kind == Kind::Number || kind == Kind::Integer) {
+        const QString why = io::unholdableNumber(trimmed);
+        return why.isEmpty() ? why : key + u": "_s + why;
+    }
+    if (kind != Kind::Vector || !trimmed.startsWith(u'[') || !trimmed.endsWith(u']'))
+        return {};
+    const QStringList items = trimmed.mid(1, trimmed.size() - 2).split(u',');
+    for (qsizetype axis = 0; axis < items.size(); ++axis)
+        if (const QString why = io::unholdableNumber(items[axis].trimmed()); !why.isEmpty())
+            return key + u'[' + QString::number(axis) + u"]: "_s + why;
+    return {};
 }
 
 // the value converted to its key's kind; empty on success, else why not, in the reader's words
@@ -194,24 +214,76 @@ QString lookUp(const QString &family, const QString &name, bool indexed, SceneOv
     return find(kPlaneFields, "planes");
 }
 
-// one element (index) or every element of a list; false with error set when the index is past it
+// one element (index) or every element of a list; an index past the list changes nothing
+// (matchesNothing() has refused it before)
 template <typename Element>
-bool setElements(std::vector<Element> &elements, const char *plural, const Field<Element> &field,
-                 const SceneOverride &override, QString &error)
+void setElements(std::vector<Element> &elements, const Field<Element> &field, const SceneOverride &override)
 {
     if (override.index < 0) {
         for (Element &element : elements)
             field.set(element, override.converted);
-        return true;
+    } else if (static_cast<std::size_t>(override.index) < elements.size()) {
+        field.set(elements[static_cast<std::size_t>(override.index)], override.converted);
     }
-    if (static_cast<std::size_t>(override.index) >= elements.size()) {
-        error = u"%1[%2]: index %2 is out of range (the scene has %3 %1)"_s.arg(QString::fromLatin1(plural))
-                    .arg(override.index)
-                    .arg(elements.size());
-        return false;
+}
+
+// the override written into the scene's elements
+void writeOverride(const SceneOverride &override, core::SceneDesc &scene)
+{
+    const auto row = static_cast<std::size_t>(override.field);
+    switch (override.family) {
+    case SceneOverride::Family::Settings: kSettingsFields[row].set(scene.settings, override.converted); break;
+    case SceneOverride::Family::Particles: setElements(scene.particles, kParticleFields[row], override); break;
+    case SceneOverride::Family::Springs: setElements(scene.springs, kSpringFields[row], override); break;
+    case SceneOverride::Family::Planes: setElements(scene.planes, kPlaneFields[row], override); break;
     }
-    field.set(elements[static_cast<std::size_t>(override.index)], override.converted);
-    return true;
+}
+
+// why the override reaches no element of the scene, by the index as typed; empty when it reaches one
+QString matchesNothing(const SceneOverride &override, const core::SceneDesc &scene)
+{
+    if (override.family == SceneOverride::Family::Settings)
+        return {};
+    const std::size_t count = override.family == SceneOverride::Family::Particles ? scene.particles.size()
+                              : override.family == SceneOverride::Family::Springs ? scene.springs.size()
+                                                                                  : scene.planes.size();
+    const QString plural = override.key.section(u'.', 0, 0).section(u'[', 0, 0);  // "planes"
+    if (override.index < 0)
+        return count == 0 ? override.key + u": matches nothing: the scene has no "_s + plural : QString();
+    if (static_cast<std::size_t>(override.index) < count)
+        return {};
+    return u"%1[%2]: index %2 is out of range (the scene has %3 %1)"_s.arg(plural, override.indexText).arg(count);
+}
+
+// the value's problem, found by writing it into a scene of one stand-in element of each kind (two
+// particles, for a spring between them with a rest length, so that a breakStrain is judged) and
+// checking that scene as a loaded file is; the path is the key's, "planes.friction: must be at
+// most 10 (got 99)". Empty when the value is one the scene could hold.
+QString standInProblem(const SceneOverride &override)
+{
+    core::SceneDesc standIn;
+    standIn.particles.resize(2);
+    standIn.particles[1].position.x() = 1.0;
+    core::SpringDesc spring;
+    spring.a = 0;
+    spring.b = 1;
+    spring.restLength = 1.0;
+    standIn.springs.push_back(spring);
+    standIn.planes.resize(1);
+    SceneOverride first = override;
+    first.index = 0;
+    writeOverride(first, standIn);
+    const auto problem = core::findProblem(standIn);
+    if (!problem)
+        return {};
+
+    // "planes[0].friction" named as the key names it: "planes.friction", "planes[5].friction"
+    QString path = QString::fromStdString(problem->path);
+    const QString element = override.key.left(override.key.lastIndexOf(u'.'));
+    const QString standInElement = path.section(u'[', 0, 0) + u"[0]"_s;
+    if (path.startsWith(standInElement))
+        path = element + path.mid(standInElement.size());
+    return path + u": "_s + QString::fromStdString(problem->message);
 }
 
 }  // namespace
@@ -245,14 +317,20 @@ std::optional<SceneOverride> parseOverride(const QString &argument, QString &err
         !why.isEmpty())
         return fail(why);
     if (match.hasCaptured(2)) {
+        parsed.indexText = match.captured(2);
         bool ok = false;
-        parsed.index = match.captured(2).toLongLong(&ok);
+        parsed.index = parsed.indexText.toLongLong(&ok);
         if (!ok)  // more digits than a count has: past the end of any list
             parsed.index = std::numeric_limits<qsizetype>::max();
     }
 
-    // the value, of the kind the key takes
-    parsed.value = valueOf(text);
+    // the value, of the kind the key takes; a number JSON cannot read is named as the file's
+    // loader names it, not as "a string"
+    bool isJson = false;
+    parsed.value = valueOf(text, isJson);
+    if (!isJson)
+        if (const QString why = unholdableIn(kind, parsed.key, text); !why.isEmpty())
+            return fail(why);
     if (const QString why = convert(kind, parsed.value, text, parsed.converted); !why.isEmpty())
         return fail(parsed.key + u": "_s + why);
     return parsed;
@@ -260,25 +338,13 @@ std::optional<SceneOverride> parseOverride(const QString &argument, QString &err
 
 QString applyOverride(const SceneOverride &override, core::SceneDesc &scene)
 {
-    const auto row = static_cast<std::size_t>(override.field);
-    QString error;
-    bool ok = true;
-    switch (override.family) {
-    case SceneOverride::Family::Settings:
-        kSettingsFields[row].set(scene.settings, override.converted);
-        break;
-    case SceneOverride::Family::Particles:
-        ok = setElements(scene.particles, "particles", kParticleFields[row], override, error);
-        break;
-    case SceneOverride::Family::Springs:
-        ok = setElements(scene.springs, "springs", kSpringFields[row], override, error);
-        break;
-    case SceneOverride::Family::Planes:
-        ok = setElements(scene.planes, "planes", kPlaneFields[row], override, error);
-        break;
+    // one that reaches no element would change nothing: refused, its value judged all the same
+    if (const QString nothing = matchesNothing(override, scene); !nothing.isEmpty()) {
+        const QString value = standInProblem(override);
+        return u"--set "_s + override.argument + u": "_s + nothing +
+               (value.isEmpty() ? QString() : u"; and "_s + value);
     }
-    if (!ok)
-        return u"--set "_s + override.argument + u": "_s + error;
+    writeOverride(override, scene);
 
     // the scene was valid before, so the first problem is this value's
     if (const auto problem = core::findProblem(scene))

@@ -33,6 +33,7 @@ struct SceneOverride {
     Family family = Family::Settings;
     int field = 0;           // the row of the family's table of keys
     qsizetype index = -1;    // the one element it changes; -1: every element
+    QString indexText;       // the index as typed, for messages: "12"; past any count: as typed too
 };
 
 // "KEY=VALUE" read, its key looked up and its value's type checked; nullopt with error set to
@@ -40,7 +41,10 @@ struct SceneOverride {
 std::optional<SceneOverride> parseOverride(const QString &argument, QString &error);
 
 // the override written into the scene, then the scene checked as a loaded file is; empty on
-// success, else "--set KEY=VALUE: particles[3].mass: must be greater than 0 kg (got -1 kg)"
+// success, else "--set KEY=VALUE: particles[3].mass: must be greater than 0 kg (got -1 kg)".
+// One that reaches no element (an index past the list, or a list the scene does not have) is
+// refused too, "--set planes.friction=0.5: planes.friction: matches nothing: the scene has no
+// planes", with its value still checked, so that a value out of range is said either way.
 QString applyOverride(const SceneOverride &override, core::SceneDesc &scene);
 
 }  // namespace app

@@ -25,7 +25,7 @@ struct SummaryField {
 constexpr SummaryField kFields[] = {
     {"scene", false, [](const RunSummary &s) { return QJsonValue(s.scene); }},
     {"overrides", false, [](const RunSummary &s) { return QJsonValue(s.overrides); }},
-    {"status", false, [](const RunSummary &s) { return QJsonValue(statusWord(s.exitCode)); }},
+    {"status", false, [](const RunSummary &s) { return QJsonValue(statusWord(s.status)); }},
     {"exitCode", false, [](const RunSummary &s) { return QJsonValue(s.exitCode); }},
     {"integrator", true, [](const RunSummary &s) { return QJsonValue(s.integrator); }},
     {"contactSolver", true, [](const RunSummary &s) { return QJsonValue(s.contactSolver); }},
@@ -98,15 +98,17 @@ QString overridesText(const QJsonObject &overrides)
     return pairs.join(u' ');
 }
 
-QString statusWord(int exitCode)
+QString statusWord(RunStatus status)
 {
-    switch (exitCode) {
-    case 0: return u"ok"_s;
-    case 2: return u"bad-input"_s;
-    case 3: return u"blew-up"_s;
-    case 4: return u"replay-differs"_s;
-    default: return u"failed"_s;
+    switch (status) {
+    case RunStatus::Ok: return u"ok"_s;
+    case RunStatus::BadInput: return u"bad-input"_s;
+    case RunStatus::OutOfMemory: return u"out-of-memory"_s;
+    case RunStatus::WriteFailed: return u"write-failed"_s;
+    case RunStatus::BlewUp: return u"blew-up"_s;
+    case RunStatus::ReplayDiffers: return u"replay-differs"_s;
     }
+    return u"failed"_s;
 }
 
 QByteArray summaryJson(const RunSummary &summary)

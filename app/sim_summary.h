@@ -16,14 +16,29 @@
 
 namespace app {
 
+// how a run ended, each in a word of its own (statusWord), so that a sweep's table tells them
+// apart; several share an exit code (docs/batch.md, "What the exit codes say")
+enum class RunStatus {
+    Ok,             // the run went to its end and wrote all it was asked to
+    BadInput,       // the file, an option or a --set was refused before the run: nothing ran
+    OutOfMemory,    // loading the scene, or a step, needed more memory than the process may use
+    WriteFailed,    // --output, --trace, a --render frame or the printed report could not be
+                    // written; the figures say how far the run got (null: not to the first step)
+    BlewUp,         // a position or velocity stopped being finite or passed the state limit
+    ReplayDiffers,  // a --replay did not end with the recorded state
+};
+
 struct RunSummary {
     QString scene;           // the path as given
     QJsonObject overrides;   // "settings.restitution": 0.5, from --set and the settings' options
+    RunStatus status = RunStatus::Ok;
     int exitCode = 0;        // as springlab-sim exits: 0, 2, 3
     QString error;           // why it failed (a blow-up explained); empty when it did not
     QStringList warnings;    // the file's and the run's
 
-    // what the run did; null in the summary while ran is false (a bad file or --set)
+    // what the run did, as far as it went; null in the summary while ran is false (a bad file or
+    // --set, or memory that ran out while loading). An energy that is not known (the end of a step
+    // that ran out of memory half-way) is NaN, null in the summary
     bool ran = false;
     QString integrator;
     QString contactSolver;
@@ -38,8 +53,9 @@ struct RunSummary {
     std::size_t springBreaks = 0;
 };
 
-// the exit code in a word: "ok", "bad-input", "blew-up", "replay-differs"
-QString statusWord(int exitCode);
+// the status in a word: "ok", "bad-input", "out-of-memory", "write-failed", "blew-up",
+// "replay-differs"
+QString statusWord(RunStatus status);
 
 // the overrides as --set spells them, one after another: "settings.restitution=0.5 springs.damping=2"
 QString overridesText(const QJsonObject &overrides);

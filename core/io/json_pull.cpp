@@ -71,10 +71,120 @@ bool startsWithByteOrderMark(std::string_view text)
     return unit == 0xFEFF;
 }
 
+int hexDigit(char c)
+{
+    return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+}
+
+// the UTF-16 unit of the four hex digits of the \u escape at text[i], or -1
+int unitAt(std::string_view text, std::size_t i)
+{
+    if (i + 6 > text.size() || text[i] != '\\' || text[i + 1] != 'u')
+        return -1;
+    int unit = 0;
+    for (std::size_t k = i + 2; k < i + 6; ++k) {
+        const int digit = hexDigit(text[k]);
+        if (digit < 0)
+            return -1;
+        unit = unit * 16 + digit;
+    }
+    return unit;
+}
+
+bool isHighSurrogate(int unit)
+{
+    return unit >= 0xD800 && unit <= 0xDBFF;
+}
+
+bool isLowSurrogate(int unit)
+{
+    return unit >= 0xDC00 && unit <= 0xDFFF;
+}
+
+// a string's text as written between its quotes, checked as QJsonDocument (Qt 6.4) reads it:
+// UTF-8 throughout, a \u escape with four hex digits; any other escaped ASCII character stands
+// for itself, as Qt allows. lone: a \u escape is half of a UTF-16 pair
+bool checkWritten(std::string_view written, bool &lone)
+{
+    lone = false;
+    for (std::size_t i = 0; i < written.size(); ++i) {
+        if (written[i] != '\\')
+            continue;
+        if (i + 1 == written.size() || static_cast<unsigned char>(written[i + 1]) >= 0x80)
+            return false;
+        if (written[i + 1] != 'u') {
+            ++i;
+            continue;
+        }
+        const int unit = unitAt(written, i);
+        if (unit < 0)
+            return false;
+        if (isHighSurrogate(unit) && isLowSurrogate(unitAt(written, i + 6)))
+            i += 6;
+        else if (isHighSurrogate(unit) || isLowSurrogate(unit))
+            lone = true;
+        i += 5;
+    }
+    return QByteArrayView(written.data(), static_cast<qsizetype>(written.size())).isValidUtf8();
+}
+
+// the text of a string that checkWritten() passed, as UTF-8; half a UTF-16 pair becomes U+FFFD
+QByteArray decodeWritten(std::string_view written)
+{
+    QByteArray out;
+    out.reserve(static_cast<qsizetype>(written.size()));
+    const auto append = [&out](char32_t code) {
+        if (code < 0x80) {
+            out += char(code);
+        } else if (code < 0x800) {
+            out += char(0xC0 | (code >> 6));
+            out += char(0x80 | (code & 0x3F));
+        } else if (code < 0x10000) {
+            out += char(0xE0 | (code >> 12));
+            out += char(0x80 | ((code >> 6) & 0x3F));
+            out += char(0x80 | (code & 0x3F));
+        } else {
+            out += char(0xF0 | (code >> 18));
+            out += char(0x80 | ((code >> 12) & 0x3F));
+            out += char(0x80 | ((code >> 6) & 0x3F));
+            out += char(0x80 | (code & 0x3F));
+        }
+    };
+    for (std::size_t i = 0; i < written.size(); ++i) {
+        const char c = written[i];
+        if (c != '\\') {
+            out += c;
+            continue;
+        }
+        const char escaped = written[++i];
+        switch (escaped) {
+        case 'b': out += '\b'; break;
+        case 'f': out += '\f'; break;
+        case 'n': out += '\n'; break;
+        case 'r': out += '\r'; break;
+        case 't': out += '\t'; break;
+        case 'u': {
+            const int unit = unitAt(written, i - 1);
+            const int low = unitAt(written, i + 5);
+            if (isHighSurrogate(unit) && isLowSurrogate(low)) {
+                append(0x10000 + ((char32_t(unit) - 0xD800) << 10) + (char32_t(low) - 0xDC00));
+                i += 6;
+            } else {
+                append(isHighSurrogate(unit) || isLowSurrogate(unit) ? 0xFFFD : char32_t(unit));
+            }
+            i += 4;
+            break;
+        }
+        default: out += escaped;  // '"', '\\', '/', and what Qt lets stand for itself
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
-JsonPull::JsonPull(QByteArrayView json)
-    : m_begin(json.data()), m_pos(json.data()), m_end(json.data() + json.size())
+JsonPull::JsonPull(QByteArrayView json, JsonStrings strings)
+    : m_begin(json.data()), m_pos(json.data()), m_end(json.data() + json.size()), m_strings(strings)
 {
     if (json.startsWith("\xEF\xBB\xBF"))
         m_pos += 3;
@@ -108,18 +218,32 @@ QString JsonPull::pathHere() const
 
 QString JsonPull::text() const
 {
+    if (m_isWritten)
+        return QString::fromUtf8(utf8());
     return m_isPlain ? QString::fromLatin1(m_plain.data(), static_cast<qsizetype>(m_plain.size())) : m_decoded;
 }
 
 bool JsonPull::isText(QLatin1StringView expected) const
 {
+    if (m_isWritten)
+        return !m_lostMark && text() == expected;
     return m_isPlain ? m_plain == std::string_view(expected.data(), static_cast<std::size_t>(expected.size()))
                      : !m_lostMark && m_decoded == expected;
 }
 
+QByteArray JsonPull::utf8() const
+{
+    if (m_isPlain)
+        return QByteArray(m_plain.data(), static_cast<qsizetype>(m_plain.size()));
+    if (!m_isWritten)
+        return m_decoded.toUtf8();
+    return decodeWritten(m_written);
+}
+
 // a string at m_pos (its opening quote); plain text is kept as a view, anything else is decoded
-// by QJsonDocument so that the text is exactly what it would give
-bool JsonPull::readString()
+// by QJsonDocument so that the text is exactly what it would give, or (a value, with
+// JsonStrings::Check) checked as QJsonDocument would check it and kept as written
+bool JsonPull::readString(bool key)
 {
     const char *start = m_pos++;
     bool plain = true;
@@ -138,9 +262,22 @@ bool JsonPull::readString()
         return false;
     ++m_pos;
     m_isPlain = plain;
+    m_isWritten = false;
     m_lostMark = false;
     if (plain) {
         m_plain = std::string_view(start + 1, static_cast<std::size_t>(m_pos - start - 2));
+        return true;
+    }
+    if (!key && m_strings == JsonStrings::Check) {
+        const std::string_view written(start + 1, static_cast<std::size_t>(m_pos - start - 2));
+        bool lone = false;
+        if (!checkWritten(written, lone))
+            return false;
+        m_written = written;
+        m_isWritten = true;
+        m_lostMark = startsWithByteOrderMark(written);
+        if (lone && m_loneSurrogate.isNull())
+            m_loneSurrogate = pathHere();
         return true;
     }
     const std::string_view token(start, static_cast<std::size_t>(m_pos - start));
@@ -270,7 +407,7 @@ JsonToken JsonPull::value()
         return frame.object ? JsonToken::BeginObject : JsonToken::BeginArray;
     }
     if (c == '"')
-        return readString() ? afterValue(JsonToken::String) : fail();
+        return readString(false) ? afterValue(JsonToken::String) : fail();
     // true, false, null
     const std::string_view rest(m_pos, static_cast<std::size_t>(m_end - m_pos));
     for (const auto &[word, token] : {std::pair{std::string_view("true"), JsonToken::True},
@@ -321,7 +458,7 @@ JsonToken JsonPull::next()
 
     // a member's key and its colon
     if (frame.want == Frame::Want::Key) {
-        if (m_pos == m_end || *m_pos != '"' || !readString() || !addKey())
+        if (m_pos == m_end || *m_pos != '"' || !readString(true) || !addKey())
             return fail();
         skipSpace();
         if (m_pos == m_end || *m_pos != ':')

@@ -8,6 +8,7 @@
 // message. It also notes the two things QJsonDocument does not tell: the first key that comes
 // twice in one object and the first string with a lone UTF-16 surrogate, each as a JSON path.
 
+#include <QByteArray>
 #include <QByteArrayView>
 #include <QLatin1StringView>
 #include <QString>
@@ -22,10 +23,15 @@ namespace io {
 
 enum class JsonToken { BeginObject, EndObject, BeginArray, EndArray, Key, String, Number, True, False, Null, End, Error };
 
+// how a string value is taken: decoded at once as QJsonDocument decodes it (a scene's few short
+// strings), or only checked, and decoded when asked (a recording's scenes: each the text of a
+// whole scene file, which QJsonDocument would copy twice over)
+enum class JsonStrings { Decode, Check };
+
 class JsonPull {
 public:
     // json must outlive the reader; a UTF-8 byte order mark at the start is skipped
-    explicit JsonPull(QByteArrayView json);
+    explicit JsonPull(QByteArrayView json, JsonStrings strings = JsonStrings::Decode);
 
     // the next token; Error once the text breaks the grammar (and from then on)
     JsonToken next();
@@ -41,8 +47,13 @@ public:
     // the text began with a byte order mark, which Qt drops from text() but keeps in a key, so
     // that such a key is none of the known ones (nor warned about when it would be one)
     bool lostMark() const { return m_lostMark; }
+    // after a Key or a String: its text as UTF-8 (with JsonStrings::Check, decoded now; half of a
+    // UTF-16 pair becomes U+FFFD, and loneSurrogate() names it)
+    QByteArray utf8() const;
     // after a Number: its value, the sign of zero kept
     double number() const { return m_number; }
+    // the offset just past the last token read (after a BeginObject or BeginArray, past its bracket)
+    qsizetype offset() const { return m_pos - m_begin; }
 
     // where the grammar first broke, as a byte offset (-1: it has not)
     qsizetype errorOffset() const { return m_errorOffset; }
@@ -67,7 +78,7 @@ private:
     JsonToken fail();
     JsonToken value();
     JsonToken afterValue(JsonToken token);
-    bool readString();
+    bool readString(bool key);
     bool readNumber();
     bool addKey();
     QString pathHere() const;
@@ -83,10 +94,15 @@ private:
     bool m_done = false;          // the top-level value has been read
     qsizetype m_errorOffset = -1;
 
-    // the last string or key: a view of plain text, or the text QJsonDocument decoded
+    JsonStrings m_strings;
+
+    // the last string or key: a view of plain text, or the text QJsonDocument decoded, or (a
+    // string checked but not decoded) its text as written between the quotes
     std::string_view m_plain;
     bool m_isPlain = true;
     QString m_decoded;
+    std::string_view m_written;
+    bool m_isWritten = false;
     bool m_lostMark = false;
     double m_number = 0.0;
 

@@ -14,13 +14,20 @@ namespace io {
 QString refuseToReplace(const QString &path);
 
 // writes bytes to path atomically: into a temporary file beside it, flushed and synced to the disk,
-// then renamed over it. Empty on success; else why not, and the old file is as it was. Every step
-// is checked, because Qt 6.4 buffers a small write and QSaveFile::commit() does not report the
-// flush that fails on a full disk (QTBUG-75077): it renamed a truncated file over the old one.
+// then renamed over it. Empty on success; else why not, and the old file is as it was; a failure
+// to make the temporary file or to rename it names that step ("cannot create the temporary file
+// beside it in /proc (...): No such file or directory"). Every step is checked, because Qt 6.4
+// buffers a small write and QSaveFile::commit() does not report the flush that fails on a full
+// disk (QTBUG-75077): it renamed a truncated file over the old one.
 QString writeFileAtomically(const QString &path, const QByteArray &bytes);
 
-// why a file could not be read or written, in words; errno (savedErrno), when set, is the last
-// resort, then Qt's reason
+// why a file could not be read or written, in words: what the file, its folder or their file
+// system shows ("permission denied: the file is read-only", "read-only file system: FOLDER is on a
+// file system mounted read-only"), else systemReason()
 QString explainFailure(const QString &path, bool writing, int savedErrno, const QString &qtReason);
+
+// errno (savedErrno) in words, when set, else Qt's reason: the system's words ("No such file or
+// directory"), but for EROFS "read-only file system: nothing on it can be written"
+QString systemReason(int savedErrno, const QString &qtReason);
 
 }  // namespace io

@@ -15,6 +15,7 @@
 
 #include "json_pull.h"
 #include "json_scan.h"
+#include "load_checks.h"
 #include "safe_write.h"
 #include "scene_reader.h"
 #include "scene_words.h"
@@ -119,6 +120,16 @@ QString tooLarge(const QString &source, qint64 size, qint64 limit)
     return source + u": the file is too large: "_s + byteCount(size) + u", more than the limit of "_s + byteCount(limit);
 }
 
+// the text stops in the middle of a value: objects or arrays left open (scan, of all the text)
+// and nothing after faultEnd, the end of the token where the parser gave up
+bool endsTooEarly(const QByteArray &json, qsizetype faultEnd, const JsonScan &scan)
+{
+    qsizetype textEnd = json.size();
+    while (textEnd > 0 && std::isspace(static_cast<unsigned char>(json[textEnd - 1])))
+        --textEnd;
+    return faultEnd >= textEnd && scan.openAtStop > 0;
+}
+
 // the message for text QJsonDocument could not parse, with the JSON path it broke off in
 QString syntaxErrorOf(const QByteArray &json, const QJsonParseError &error, const QString &source)
 {
@@ -155,30 +166,15 @@ QString syntaxErrorOf(const QByteArray &json, const QJsonParseError &error, cons
     const bool numeric = !token.isEmpty() &&
                          (std::isdigit(static_cast<unsigned char>(token[0])) ||
                           (token.size() > 1 && token[0] == '-' && std::isdigit(static_cast<unsigned char>(token[1]))));
-    if (error.error == QJsonParseError::IllegalNumber && numeric) {
-        double value = 0.0;
-        const auto parsed = std::from_chars(token.constData(), token.constData() + token.size(), value);
-        const bool tiny = token.contains("e-") || token.contains("E-");
-        if (parsed.ec == std::errc::result_out_of_range)
-            reason = u"the number "_s + QString::fromLatin1(token) +
-                     (tiny ? u" is too close to zero for a double ("_s
-                           : u" is too large for a double: JSON has no infinity or NaN ("_s) +
-                     where + u")"_s;
-        else
+    // said in the words springlab-sim's --set uses for the same literal (scene_words.h)
+    if (error.error == QJsonParseError::IllegalNumber || error.error == QJsonParseError::IllegalValue) {
+        if (const QString unholdable = unholdableNumber(QString::fromLatin1(token)); !unholdable.isEmpty())
+            reason = unholdable + u" ("_s + where + u")"_s;
+        else if (error.error == QJsonParseError::IllegalNumber && numeric)
             reason = QString::fromLatin1(token) + u" is not a valid number ("_s + where + u")"_s;
-    } else if (error.error == QJsonParseError::IllegalNumber || error.error == QJsonParseError::IllegalValue) {
-        const QByteArray lower = token.toLower();
-        if (lower.contains("nan") || lower.contains("inf"))
-            reason =
-                QString::fromLatin1(token) + u" is not a JSON number: JSON has no NaN or infinity ("_s + where + u")"_s;
     }
 
-    // the text stops in the middle of a value: objects or arrays left open and nothing after the
-    // place the parser gave up
-    qsizetype textEnd = json.size();
-    while (textEnd > 0 && std::isspace(static_cast<unsigned char>(json[textEnd - 1])))
-        --textEnd;
-    if (std::max(offset, tokenEnd) >= textEnd && scanJson(json).openAtStop > 0)
+    if (endsTooEarly(json, std::max(offset, tokenEnd), scanJson(json)))
         reason = u"the file ends too early: is it truncated? ("_s + where + u")"_s;
 
     const QString path = scanJson(json, offset).pathAtStop;
@@ -273,13 +269,13 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
         result.error = tooLarge(sourceName, json.size(), limits.fileBytes);
         return result;
     }
-    if (const qsizetype offset = tooDeepAt(json, limits.nestingDepth); offset >= 0) {
-        const QString path = scanJson(json, offset).pathAtStop;
-        const QString reason = QStringLiteral("nested too deeply: more than the limit of %1 levels of arrays and "
-                                              "objects (%2)")
-                                   .arg(limits.nestingDepth)
-                                   .arg(location(json, offset));
-        result.error = path.isEmpty() ? sourceName + u": "_s + reason : sourceName + u": "_s + path + u": "_s + reason;
+    // bytes that are not UTF-8 text (UTF-16, a binary file) are named as such, not as bad JSON
+    if (const QString problem = encodingProblem(json); !problem.isEmpty()) {
+        result.error = sourceName + u": "_s + problem;
+        return result;
+    }
+    if (QString deep = nestingError(json, sourceName, limits.nestingDepth); !deep.isEmpty()) {
+        result.error = std::move(deep);
         return result;
     }
 
@@ -300,36 +296,55 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
     if (std::optional<LoadResult> read = readSceneText(json, sourceName, lengths))
         return std::move(*read);
 
-    // not one JSON object. A large text's message comes from the reader's own place of the fault:
-    // QJsonDocument would build a tree of all the text before it (216 MB for a 21 MB file cut at
-    // its end) only for the words of its message
-    if (json.size() > kLargestTextForQtMessage) {
-        JsonPull pull(json);
-        for (JsonToken token = pull.next(); token != JsonToken::End && token != JsonToken::Error; token = pull.next()) {
-        }
-        const qsizetype offset = pull.errorOffset() >= 0 ? pull.errorOffset() : json.size();
-        const QString path = scanJson(json, offset).pathAtStop;
-        const QString reason = u"not valid JSON (a fault in the text "_s + location(json, offset) + u")"_s;
-        result.error = path.isEmpty() ? sourceName + u": "_s + reason : sourceName + u": "_s + path + u": "_s + reason;
-        return result;
-    }
-
-    // not one JSON object: QJsonDocument says why (only a refused file gets this far)
-    QJsonParseError parseError{};
-    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error != QJsonParseError::NoError)
-        result.error = syntaxErrorOf(json, parseError, sourceName);
-    else if (!document.isObject())
-        result.error = sourceName + u": expected a JSON object at the top level, got "_s +
-                       describe(document.isArray() ? QJsonValue(document.array()) : QJsonValue());
-    else
-        result.error = sourceName + u": not valid JSON"_s;
+    // not one JSON object: why, from QJsonDocument or (a large text) the reader's own place of the fault
+    result.error = jsonSyntaxError(json, sourceName);
     return result;
 }
 
-QString jsonSyntaxError(const QByteArray &json, const QJsonParseError &error, const QString &sourceName)
+QString nestingError(const QByteArray &json, const QString &sourceName, int maxDepth)
 {
-    return syntaxErrorOf(json, error, sourceName);
+    const qsizetype offset = tooDeepAt(json, maxDepth);
+    if (offset < 0)
+        return {};
+    const QString path = scanJson(json, offset).pathAtStop;
+    const QString reason = QStringLiteral("nested too deeply: more than the limit of %1 levels of arrays and objects (%2)")
+                               .arg(maxDepth)
+                               .arg(location(json, offset));
+    return path.isEmpty() ? sourceName + u": "_s + reason : sourceName + u": "_s + path + u": "_s + reason;
+}
+
+QString jsonSyntaxError(const QByteArray &json, const QString &sourceName)
+{
+    // a large text's message comes from the reader's own place of the fault: QJsonDocument would
+    // build a tree of all the text before it (216 MB for a 21 MB file cut at its end) only for
+    // the words of its message
+    if (json.size() > kLargestTextForQtMessage) {
+        JsonPull pull(json, JsonStrings::Check);
+        for (JsonToken token = pull.next(); token != JsonToken::End && token != JsonToken::Error; token = pull.next()) {
+        }
+        const qsizetype offset = pull.errorOffset() >= 0 ? pull.errorOffset() : json.size();
+        // the token the reader stopped at, to its end: a number or a word cut off by the end
+        qsizetype faultEnd = offset;
+        while (faultEnd < json.size() && isWordChar(json[faultEnd]))
+            ++faultEnd;
+        // a cut file in the words a small one gets: the scan up to the fault says what is still open
+        const JsonScan scan = scanJson(json, offset);
+        const QString reason = endsTooEarly(json, faultEnd, scan)
+                                   ? u"the file ends too early: is it truncated? (it stops "_s + location(json, offset) + u")"_s
+                                   : u"not valid JSON (a fault in the text "_s + location(json, offset) + u")"_s;
+        const QString &path = scan.pathAtStop;
+        return path.isEmpty() ? sourceName + u": "_s + reason : sourceName + u": "_s + path + u": "_s + reason;
+    }
+
+    // QJsonDocument says why
+    QJsonParseError parseError{};
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError)
+        return syntaxErrorOf(json, parseError, sourceName);
+    if (!document.isObject())
+        return sourceName + u": expected a JSON object at the top level, got "_s +
+               describe(document.isArray() ? QJsonValue(document.array()) : QJsonValue());
+    return sourceName + u": not valid JSON"_s;
 }
 
 QString readFileWithin(const QString &path, qint64 limitBytes, QByteArray &bytes)
@@ -354,6 +369,10 @@ QString readFileWithin(const QString &path, qint64 limitBytes, QByteArray &bytes
             if (piece.isEmpty())
                 break;
             bytes += piece;
+            // a zero byte is no text's (/dev/zero, a binary or UTF-16 stream): what came is enough
+            // for the message, and reading on to the limit would only cost time and memory
+            if (piece.contains('\0'))
+                break;
         }
     } else {
         bytes = file.readAll();
@@ -381,8 +400,8 @@ LoadResult loadScene(const QString &path, const LoadLimits &limits)
         return parseScene(json, QDir::toNativeSeparators(path), limits);
     } catch (const std::bad_alloc &) {
         LoadResult result;
-        result.error = QDir::toNativeSeparators(path) + u": cannot load: out of memory (reading it needs more "
-                                                        "memory than is free)"_s;
+        result.error = cannotLoadForMemory(QDir::toNativeSeparators(path));
+        result.outOfMemory = true;
         return result;
     }
 }

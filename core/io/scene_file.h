@@ -11,7 +11,6 @@
 #include <QString>
 #include <QStringList>
 
-struct QJsonParseError;
 #include <optional>
 
 namespace io {
@@ -42,6 +41,7 @@ struct LoadResult {
     std::optional<core::SceneDesc> scene;  // set on success
     QString error;                         // set on failure: "FILE: particles[3].mass: must be ..."
     QStringList warnings;                  // non-fatal: "FILE: particles[0].colour: unknown key, ignored"
+    bool outOfMemory = false;              // the failure was memory that ran out, not the file
     bool ok() const { return scene.has_value(); }
 };
 
@@ -50,14 +50,22 @@ struct SaveResult {
     bool ok() const { return error.isEmpty(); }
 };
 
-// why json is not a JSON object, in the words of a scene file's messages ("the file is empty",
-// "expected a JSON object at the top level, got a number", "not valid JSON (... at byte N, line L,
-// column C)"), for other files of JSON (recordings)
-QString jsonSyntaxError(const QByteArray &json, const QJsonParseError &error, const QString &sourceName);
+// why json, which a pull reader (json_pull.h) refused, is not one JSON object, in the words of a
+// scene file's messages ("FILE: the file is empty", "FILE: expected a JSON object at the top
+// level, got a number", "FILE: PATH: the file ends too early: is it truncated? (...)", "FILE:
+// PATH: not valid JSON (... at byte N, line L, column C)"), for other files of JSON (recordings)
+// too. Over 16 MiB the place of the fault is the pull reader's, with no tree of the text made.
+QString jsonSyntaxError(const QByteArray &json, const QString &sourceName);
+
+// "FILE: PATH: nested too deeply: more than the limit of 32 levels of arrays and objects (at byte
+// N, line L, column C)" when json has more than maxDepth arrays and objects open at once, else
+// empty; one pass over the bytes that keeps nothing, before any reader keeps a frame per level
+QString nestingError(const QByteArray &json, const QString &sourceName, int maxDepth = kMaxNestingDepth);
 
 // reads a whole file of at most limitBytes into bytes; a device with no size (a pipe, /dev/zero)
-// is read in pieces and refused one byte past the limit. Empty on success, else the message:
-// "FILE: cannot open: ...", "FILE: the file is too large: ..."
+// is read in pieces and refused one byte past the limit, or read only up to a piece that holds a
+// zero byte, which no text has (the parser then says why: load_checks.h). Empty on success, else
+// the message: "FILE: cannot open: ...", "FILE: the file is too large: ..."
 QString readFileWithin(const QString &path, qint64 limitBytes, QByteArray &bytes);
 
 // reads and validates a scene file

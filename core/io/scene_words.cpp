@@ -4,7 +4,9 @@
 
 #include <QStringList>
 
+#include <charconv>
 #include <string_view>
+#include <system_error>
 
 namespace io {
 
@@ -31,6 +33,27 @@ QString describe(const QJsonValue &value)
     case QJsonValue::Undefined: break;
     }
     return u"nothing"_s;
+}
+
+QString unholdableNumber(QStringView token)
+{
+    // a number past a double's range, one way or the other
+    const auto digit = [](QChar c) { return c >= u'0' && c <= u'9'; };
+    const QString text = token.toString();
+    if (!token.isEmpty() && (digit(token[0]) || (token.size() > 1 && token[0] == u'-' && digit(token[1])))) {
+        const QByteArray bytes = text.toLatin1();
+        double value = 0.0;
+        const auto parsed = std::from_chars(bytes.constData(), bytes.constData() + bytes.size(), value);
+        if (parsed.ec != std::errc::result_out_of_range)
+            return {};
+        const bool tiny = text.contains(u"e-"_s, Qt::CaseInsensitive);
+        return u"the number "_s + text +
+               (tiny ? u" is too close to zero for a double"_s : u" is too large for a double: JSON has no infinity or NaN"_s);
+    }
+    // a NaN or an infinity as other languages spell them
+    if (text.contains(u"nan"_s, Qt::CaseInsensitive) || text.contains(u"inf"_s, Qt::CaseInsensitive))
+        return text + u" is not a JSON number: JSON has no NaN or infinity"_s;
+    return {};
 }
 
 QString knownIntegrators()

@@ -7,6 +7,7 @@
 
 #include <QJsonValue>
 #include <QString>
+#include <QStringView>
 
 #include <optional>
 
@@ -14,6 +15,11 @@ namespace io {
 
 // what a JSON value is, for "expected a number, got a string": "a number", "a boolean", "null", ...
 QString describe(const QJsonValue &value);
+
+// why a number as the text spells it is no double a scene can hold: "the number 1e400 is too large
+// for a double: JSON has no infinity or NaN", "nan is not a JSON number: JSON has no NaN or
+// infinity"; empty when the token is none of those
+QString unholdableNumber(QStringView token);
 
 // "symplectic-euler, explicit-euler, ...", in the order menus list them
 QString knownIntegrators();

@@ -4,7 +4,7 @@
 #include "core/model/generators.h"
 #include "core/integrators/reference.h"
 #include "core/io/scene_file.h"
-#include "program_run.h"
+#include "sim_run.h"
 #include "session/session_file.h"
 #include "session/simulation_runner.h"
 
@@ -27,18 +27,10 @@ using namespace Qt::Literals::StringLiterals;
 
 namespace {
 
+using test::sim;
+using test::readAll;
+
 using Run = test::ProgramRun;
-
-Run sim(const QStringList &arguments)
-{
-    return test::runProgram(QStringLiteral(SPRINGLAB_SIM), arguments, 120000);
-}
-
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
 
 // a scene that runs every pass: gravity, drag, springs, both kinds of collision, a pinned end
 core::SceneDesc testScene()

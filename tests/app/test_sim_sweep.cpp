@@ -6,7 +6,7 @@
 #include "core/io/scene_file.h"
 #include "core/model/model.h"
 #include "core/model/state.h"
-#include "program_run.h"
+#include "sim_run.h"
 
 #include <QDir>
 #include <QFile>
@@ -23,21 +23,9 @@ using namespace Qt::Literals::StringLiterals;
 
 namespace {
 
-test::ProgramRun sim(const QStringList &arguments)
-{
-    return test::runProgram(QStringLiteral(SPRINGLAB_SIM), arguments, 120000);
-}
-
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-QJsonObject readJson(const QString &path)
-{
-    return QJsonDocument::fromJson(readAll(path)).object();
-}
+using test::sim;
+using test::readAll;
+using test::readJson;
 
 // a rope of three springs from a pinned particle, and a ball dropped on the floor beside it:
 // springs, masses, radii and contacts all change the run
@@ -232,7 +220,8 @@ void TestSimSweep::setRefusals_data()
         << set(u"springs[12].stiffness=5"_s)
         << u"--set springs[12].stiffness=5: springs[12]: index 12 is out of range (the scene has 3 springs)"_s;
     QTest::newRow("huge index") << set(u"planes[99999999999999999999].offset=1"_s)
-                                << u"is out of range (the scene has 1 planes)"_s;
+                                << u"planes[99999999999999999999]: index 99999999999999999999 is out of range "
+                                   "(the scene has 1 planes)"_s;
     QTest::newRow("out of range") << set(u"settings.timeStep=5"_s)
                                   << u"--set settings.timeStep=5: settings.timeStep: must be at most 1 s (got 5 s)"_s;
     QTest::newRow("xpbd iterations out of range")

@@ -4,7 +4,8 @@
 // core puts it at those steps; with no ffmpeg the dialog and the end of the export say "ffmpeg not
 // found" (and where ffmpeg is installed, the MP4 is made); Cancel stops a sequence; the trace has
 // the header of springlab-sim --trace and a row per particle and exported step, with the core's
-// values; F1 lists the exports. Waits are on signals and frames, never fixed sleeps.
+// values; no export writes over the open scene's file, whatever name reaches it; F1 lists the
+// exports. Waits are on signals and frames, never fixed sleeps.
 
 #include "ui/export/export_dialog.h"
 #include "ui/dialogs/help_dialog.h"
@@ -45,6 +46,8 @@
 #include "tests/io/trace_read.h"
 
 #include <cmath>
+
+#include <unistd.h>
 
 using namespace Qt::Literals::StringLiterals;
 
@@ -126,6 +129,7 @@ private slots:
     void sequenceMakesAnMp4WhereFfmpegIsInstalled();
     void cancelStopsTheSequence();
     void traceHasARowPerParticleAndExportedStep();
+    void exportsNeverWriteOverTheScene();
     void f1ListsTheExports();
 
 private:
@@ -499,6 +503,68 @@ void TestExport::traceHasARowPerParticleAndExportedStep()
         }
     }
     QVERIFY2(m_exportMessage.contains(u"6 row"_s), qPrintable(m_exportMessage));
+}
+
+void TestExport::exportsNeverWriteOverTheScene()
+{
+    // the document's file, and other names of it: a hard link and a symbolic link
+    const QByteArray bytes("the scene's own bytes\n");
+    const auto write = [](const QString &path, const QByteArray &content) {
+        QFile file(path);
+        return file.open(QIODevice::WriteOnly) && file.write(content) == content.size();
+    };
+    const auto read = [](const QString &path) {
+        QFile file(path);
+        return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+    };
+    const QString scene = m_files.filePath(u"moving.json"_s);
+    QVERIFY(write(scene, bytes));
+    m_window->document()->replace(movingScene(), scene);
+    const QString hardLink = m_files.filePath(u"alias.png"_s);
+    QVERIFY(::link(QFile::encodeName(scene).constData(), QFile::encodeName(hardLink).constData()) == 0);
+    const QString symbolicLink = m_files.filePath(u"link.csv"_s);
+    QVERIFY(QFile::link(scene, symbolicLink));
+
+    // Shift+F2 onto the hard link: the dialog's export is refused with a message, nothing written
+    ui::ExportDialog *dialog = openDialog("actionExportImage");
+    QVERIFY(dialog);
+    typeInto(dialog->findChild<QSpinBox *>(u"exportWidth"_s), u"64"_s);
+    typeInto(dialog->findChild<QSpinBox *>(u"exportHeight"_s), u"48"_s);
+    browseAndExport(dialog, hardLink);
+    QTRY_COMPARE(m_messages.size(), 1);
+    QVERIFY2(m_messages.front().contains(u"is the open scene's file"_s), qPrintable(m_messages.front()));
+    QCOMPARE(read(scene), bytes);
+
+    // an image at the scene's own path, and a trace through the symbolic link
+    QString error;
+    QVERIFY(!m_window->exporter()->exportImage({scene, QSize(64, 48)}, &error));
+    QVERIFY2(error.contains(u"is the open scene's file"_s), qPrintable(error));
+    error.clear();
+    QVERIFY(!m_window->exporter()->startTraceExport({symbolicLink, 0.08, 1}, &error));
+    QVERIFY2(error.contains(u"is the open scene's file"_s), qPrintable(error));
+    QVERIFY(!m_window->exporter()->isExporting());
+    QCOMPARE(read(scene), bytes);
+
+    // a sequence whose MP4 would be the scene (named after its folder), asked for whether or not
+    // ffmpeg is installed
+    QVERIFY(QDir(m_files.path()).mkdir(u"clip"_s));
+    QVERIFY(::link(QFile::encodeName(scene).constData(), QFile::encodeName(m_files.filePath(u"clip/clip.mp4"_s)).constData()) == 0);
+    error.clear();
+    QVERIFY(!m_window->exporter()->startSequenceExport({m_files.filePath(u"clip"_s), 30.0, 0.1, QSize(64, 48), true}, &error));
+    QVERIFY2(error.contains(u"open scene's file"_s), qPrintable(error));
+    QVERIFY(ui::sequenceFramesIn(m_files.filePath(u"clip"_s)).isEmpty());
+    QCOMPARE(read(scene), bytes);
+
+    // and one whose folder holds the scene as one of the frames it would replace
+    QVERIFY(QDir(m_files.path()).mkdir(u"frames"_s));
+    const QString sceneAsFrame = m_files.filePath(u"frames/frame-00001.png"_s);
+    QVERIFY(write(sceneAsFrame, bytes));
+    m_window->document()->replace(movingScene(), sceneAsFrame);
+    error.clear();
+    QVERIFY(!m_window->exporter()->startSequenceExport({m_files.filePath(u"frames"_s), 30.0, 0.1, QSize(64, 48), false}, &error));
+    QVERIFY2(error.contains(u"is among the frames"_s), qPrintable(error));
+    QCOMPARE(read(sceneAsFrame), bytes);
+    QVERIFY(!m_window->exporter()->isExporting());
 }
 
 void TestExport::f1ListsTheExports()

@@ -4,7 +4,7 @@
 // file leaves the document as it was; the unsaved-changes question guards New, Open, close and
 // drops; autosave writes a recovery file and a later start recovers it; a dropped file and the
 // command line's file open; "Use current state as initial" makes F5 return to the captured state
-// and undoes back. Questions are answered by a function, never a modal dialog; waits are on
+// and undoes back; no save writes over the scene's file or a recovery file under another name. Questions are answered by a function, never a modal dialog; waits are on
 // frames or files, never fixed sleeps.
 
 #include "ui/document/autosave.h"
@@ -14,6 +14,7 @@
 #include "ui/document/recent_files.h"
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
+#include "ui/panels/plots_widget.h"
 #include "session/session_file.h"
 #include "ui/simulation/simulation_controller.h"
 #include "ui/viewport/viewport.h"
@@ -147,6 +148,9 @@ private slots:
     void undoHistoryAndRedoKeys();
     void helpListsTheFileKeys();
     void recordedSessionReplaysToTheSameBits();
+    void saveNeverWritesOverARecoveryFile();
+    void autosaveNeverWritesOverTheScenesFile();
+    void plotsAndRecordingsNeverWriteOverTheScene();
 
 private:
     ui::SceneDocument &document() { return *m_window->document(); }
@@ -864,6 +868,96 @@ void TestFiles::recordedSessionReplaysToTheSameBits()
     const ui::ReplayResult replayed = ui::replay(*loaded.recording);
     QVERIFY2(replayed.error.empty(), replayed.error.c_str());
     QCOMPARE(replayed.hash, loaded.recording->finalHash);
+}
+
+void TestFiles::saveNeverWritesOverARecoveryFile()
+{
+    // a change autosaved to this session's recovery file
+    ui::Autosave *autosave = m_window->files()->autosave();
+    edit();
+    QString error;
+    QVERIFY2(autosave->saveNow(&error), qPrintable(error));
+    const QString recovery = autosave->recoveryPath();
+    const QByteArray autosaved = readAll(recovery);
+    QVERIFY(!autosaved.isEmpty());
+
+    // Save As onto it, by its path or a link to it: autosave would remove the saved scene with its
+    // file, so the save is refused with a warning, and the changes stay unsaved
+    const QString link = m_files.filePath(QStringLiteral("recovery-link.json"));
+    QVERIFY(QFile::link(recovery, link));
+    for (const QString &chosen : {recovery, link}) {
+        m_questions.clear();
+        m_chosenPath = chosen;
+        action("actionSaveAs")->trigger();
+        QCOMPARE(m_questions.size(), 1);
+        QCOMPARE(m_questions.front().icon, QMessageBox::Warning);
+        const QString &message = m_questions.front().text;
+        QVERIFY2(message.contains(QDir::toNativeSeparators(chosen)) && message.contains(QStringLiteral("autosave recovery file")),
+                 qPrintable(message));
+        QVERIFY(document().isModified());
+        QVERIFY(document().filePath().isEmpty());
+        QCOMPARE(readAll(recovery), autosaved);
+    }
+
+    // another session's recovery file, known by its name in the folder, is refused too
+    const QString another = QDir(m_recoveryDirectory).filePath(QStringLiteral("another.recovery.json"));
+    QVERIFY(!m_window->files()->saveTo(another, &error));
+    QVERIFY2(error.contains(QStringLiteral("autosave recovery file")), qPrintable(error));
+    QVERIFY(!QFileInfo::exists(another));
+
+    // and a file of the user's still saves
+    const QString mine = m_files.filePath(QStringLiteral("mine.json"));
+    QVERIFY2(m_window->files()->saveTo(mine, &error), qPrintable(error));
+    QVERIFY(!document().isModified());
+}
+
+void TestFiles::autosaveNeverWritesOverTheScenesFile()
+{
+    // the recovery file's path made a link to the user's file: autosaving would change that file
+    // without a Save
+    QString error;
+    const QString mine = m_files.filePath(QStringLiteral("mine.json"));
+    QVERIFY2(m_window->files()->saveTo(mine, &error), qPrintable(error));
+    const QByteArray saved = readAll(mine);
+    ui::Autosave *autosave = m_window->files()->autosave();
+    QVERIFY(QDir().mkpath(m_recoveryDirectory));
+    QVERIFY(QFile::link(mine, autosave->recoveryPath()));
+    edit();
+    QVERIFY(!autosave->saveNow(&error));
+    QVERIFY2(error.contains(QStringLiteral("never writes over")), qPrintable(error));
+    QCOMPARE(readAll(mine), saved);
+    QVERIFY(document().isModified());
+}
+
+void TestFiles::plotsAndRecordingsNeverWriteOverTheScene()
+{
+    // the scene saved, and reached by other names: a hard link, a symbolic link, "./"; what a
+    // session recording or a plot asks before it saves calls each of them the scene's file
+    QString error;
+    const QString scene = m_files.filePath(QStringLiteral("guarded.json"));
+    QVERIFY2(m_window->files()->saveTo(scene, &error), qPrintable(error));
+    const QByteArray saved = readAll(scene);
+    const QString hardLink = m_files.filePath(QStringLiteral("guarded-alias.replay.json"));
+    QVERIFY(::link(QFile::encodeName(scene).constData(), QFile::encodeName(hardLink).constData()) == 0);
+    const QString symbolicLink = m_files.filePath(QStringLiteral("guarded-link.csv"));
+    QVERIFY(QFile::link(scene, symbolicLink));
+    for (const QString &name : {scene, hardLink, symbolicLink, m_files.path() + QStringLiteral("/./guarded.json")}) {
+        const QString refused = m_window->files()->protectedFileAt(name);
+        QVERIFY2(refused.contains(QStringLiteral("open scene's file")), qPrintable(name + QStringLiteral(": ") + refused));
+    }
+    QVERIFY(m_window->files()->protectedFileAt(m_files.filePath(QStringLiteral("guarded.replay.json"))).isEmpty());
+
+    // a plot's data exported through the link: refused with a warning, the scene as it was
+    auto *plots = m_window->findChild<ui::PlotsWidget *>();
+    QVERIFY(plots);
+    m_questions.clear();
+    m_chosenPath = symbolicLink;
+    emit plots->exportRequested(ui::PlotExport::Csv);
+    QCOMPARE(m_questions.size(), 1);
+    QCOMPARE(m_questions.front().icon, QMessageBox::Warning);
+    QVERIFY2(m_questions.front().text.contains(QStringLiteral("open scene's file")), qPrintable(m_questions.front().text));
+    QCOMPARE(readAll(scene), saved);
+    QVERIFY(QFileInfo(symbolicLink).isSymLink());
 }
 
 QTEST_MAIN(TestFiles)

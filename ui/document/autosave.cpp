@@ -2,6 +2,7 @@
 
 #include "scene_document.h"
 
+#include "core/io/file_identity.h"
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
 
@@ -100,6 +101,23 @@ QString Autosave::recoveryPath() const
     return filePath(kSceneSuffix);
 }
 
+bool Autosave::isRecoveryFile(const QString &path) const
+{
+    // this session's files, also through a link to one
+    for (const char *suffix : {kSceneSuffix, kSourceSuffix, kLockSuffix})
+        if (io::sameFile(path, filePath(suffix)))
+            return true;
+    // any session's, by its name in the folder: where the path is, and where a link there leads
+    const auto named = [this](const QFileInfo &file) {
+        for (const char *suffix : {kSceneSuffix, kSourceSuffix, kLockSuffix})
+            if (file.fileName().endsWith(QLatin1String(suffix)) && io::sameFile(file.path(), m_directory))
+                return true;
+        return false;
+    };
+    const QFileInfo given(path);
+    return named(given) || (given.exists() && named(QFileInfo(given.canonicalFilePath())));
+}
+
 bool Autosave::saveNow(QString *error)
 {
     auto fail = [error](const QString &reason) {
@@ -109,6 +127,10 @@ bool Autosave::saveNow(QString *error)
     };
     if (!m_document.isModified())
         return true;
+    // the user's file is written by Save alone, even when it is reached as the recovery file
+    if (io::sameFile(recoveryPath(), m_document.filePath()))
+        return fail(tr("Autosave: %1 is the scene's own file, %2; autosave never writes over it")
+                        .arg(QDir::toNativeSeparators(recoveryPath()), QDir::toNativeSeparators(m_document.filePath())));
     if (!QDir().mkpath(m_directory))
         return fail(tr("Autosave: cannot create the folder %1").arg(QDir::toNativeSeparators(m_directory)));
 

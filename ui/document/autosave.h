@@ -55,6 +55,10 @@ public:
 
     // this session's recovery file; it exists only while the document has autosaved changes
     QString recoveryPath() const;
+    // whether path is one of the recovery folder's files (this session's or another's), which
+    // autosave writes over and removes: nothing else may be saved there. Compared as files
+    // (io::sameFile), so a link to one or another spelling of the folder counts too
+    bool isRecoveryFile(const QString &path) const;
 
     // writes the document now if it has changes not yet autosaved; false and why on failure
     bool saveNow(QString *error = nullptr);

@@ -6,6 +6,7 @@
 
 #include "ui/dialogs/prompts.h"
 
+#include "core/io/file_identity.h"
 #include "core/io/scene_file.h"
 
 #include <QAction>
@@ -252,6 +253,14 @@ bool DocumentFiles::saveAs()
 
 bool DocumentFiles::saveTo(const QString &path, QString *error)
 {
+    // autosave writes over its recovery files and removes them: a scene saved as one would be lost
+    if (m_autosave->isRecoveryFile(path)) {
+        if (error)
+            *error = tr("%1: cannot save: it is an autosave recovery file, which Springlab writes over and removes; "
+                        "choose another name")
+                         .arg(nativePath(path));
+        return false;
+    }
     // atomic: io::saveScene writes through QSaveFile, so a failure leaves the old file whole
     const io::SaveResult saved = io::saveScene(path, m_document.scene());
     if (!saved.ok()) {
@@ -276,6 +285,15 @@ bool DocumentFiles::maybeSave()
     if (answer == QMessageBox::Save)
         return save();
     return answer == QMessageBox::Discard;
+}
+
+QString DocumentFiles::protectedFileAt(const QString &path) const
+{
+    if (io::sameFile(path, m_document.filePath()))
+        return tr("it is the open scene's file, %1").arg(nativePath(m_document.filePath()));
+    if (m_autosave->isRecoveryFile(path))
+        return tr("it is an autosave recovery file, which Springlab writes over and removes");
+    return QString();
 }
 
 void DocumentFiles::openRecent(const QString &path)

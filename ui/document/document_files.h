@@ -71,6 +71,11 @@ public:
     // the save failed
     bool maybeSave();
 
+    // why nothing but a save of the scene may write path: it is the open scene's file, or one of
+    // autosave's recovery files (compared as files, io::sameFile, so a link or another spelling
+    // counts too); empty when it may be written. Recordings and plots ask before they save.
+    QString protectedFileAt(const QString &path) const;
+
     // the scene file a drop carries: exactly one local .json file, else an empty string
     static QString droppedScenePath(const QMimeData *mime);
 

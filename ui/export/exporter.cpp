@@ -10,6 +10,7 @@
 #include "ui/simulation/simulation_controller.h"
 #include "ui/viewport/viewport.h"
 
+#include "core/io/file_identity.h"
 #include "core/io/trace_writer.h"
 #include "core/model/snapshot.h"
 
@@ -47,6 +48,13 @@ QString videoPath(const QString &folder)
 {
     const QString name = QFileInfo(QDir::cleanPath(folder)).fileName();
     return QDir(folder).filePath((name.isEmpty() ? QStringLiteral("sequence") : name) + QStringLiteral(".mp4"));
+}
+
+// an export written over the open scene's file would destroy it; an image or a trace truncates
+// its file in place, so a hard link to the scene is as much the scene as its own path
+bool isSceneFile(const QString &path, const SceneDocument &document)
+{
+    return io::sameFile(path, document.filePath());
 }
 
 }  // namespace
@@ -140,6 +148,9 @@ void Exporter::showDialog(ExportKind kind)
 
 bool Exporter::exportImage(const ImageExport &settings, QString *error)
 {
+    if (isSceneFile(settings.path, m_document))
+        return failWith(error, tr("Export image: %1 is the open scene's file, %2; export to another file")
+                                   .arg(nativePath(settings.path), nativePath(m_document.filePath())));
     QString why;
     const QImage image = m_viewport.renderImage(settings.size, &why);
     if (image.isNull())
@@ -161,6 +172,16 @@ bool Exporter::startSequenceExport(const SequenceExport &settings, QString *erro
     const double timeStep = m_document.scene().settings.timeStep;
     if (!(settings.fps > 0.0) || !(settings.duration >= 0.0) || !std::isfinite(settings.fps * settings.duration))
         return failWith(error, tr("Export image sequence: the frame rate must be above 0 and the duration at least 0"));
+    // the frames already in the folder are removed and new ones written, then the MP4 beside them
+    const QString scene = m_document.filePath();
+    if (!scene.isEmpty() && isSequenceFrame(scene, settings.folder))
+        return failWith(error, tr("Export image sequence: the open scene's file, %1, is among the frames in %2, "
+                                  "which the sequence would replace; choose another folder")
+                                   .arg(nativePath(scene), nativePath(settings.folder)));
+    if (settings.video && isSceneFile(videoPath(settings.folder), m_document))
+        return failWith(error, tr("Export image sequence: the MP4, %1, would be written over the open scene's file; "
+                                  "choose another folder")
+                                   .arg(nativePath(videoPath(settings.folder))));
     // one frame drawn now proves that the size can be drawn at all
     if (QString why; m_viewport.renderImage(settings.size, &why).isNull())
         return failWith(error, tr("Export image sequence: %1").arg(why));
@@ -214,6 +235,10 @@ bool Exporter::startTraceExport(const TraceExport &settings, QString *error)
         return failWith(error, tr("Export trace: %1 s at a time step of %2 s is not a duration that can be run")
                         .arg(settings.duration)
                         .arg(timeStep));
+
+    if (isSceneFile(settings.path, m_document))
+        return failWith(error, tr("Export trace: %1 is the open scene's file, %2; export to another file")
+                                   .arg(nativePath(settings.path), nativePath(m_document.filePath())));
 
     // rows at steps 0, K, 2K, ... up to the duration's steps
     auto trace = std::make_shared<io::TraceWriter>();

@@ -3,6 +3,7 @@
 // sequence of the run with an MP4 of it where ffmpeg is installed, and the run's trace as CSV.
 // The sequence and the trace step the worker's run from where it is (ExportRun), with a progress
 // dialog over the window that can cancel them; the run is left paused at the last step exported.
+// None of them writes over the open scene's file, by its path or any other name of it.
 
 #include "export_settings.h"
 

@@ -1,7 +1,10 @@
 #include "image_sequence.h"
 
+#include "core/io/file_identity.h"
+
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QObject>
 #include <QRegularExpression>
 
@@ -22,6 +25,9 @@ double ceilOfNearlyWhole(double x)
     const double nearest = std::round(x);
     return std::abs(x - nearest) <= kWholeTolerance * std::max(1.0, std::abs(x)) ? nearest : std::ceil(x);
 }
+
+// a frame's name: frame-00042.png
+constexpr const char *kFrameName = "^frame-\\d{5,}\\.png$";
 
 }  // namespace
 
@@ -46,7 +52,7 @@ QString sequenceFramePath(const QString &folder, int index)
 
 QStringList sequenceFramesIn(const QString &folder)
 {
-    static const QRegularExpression name(QStringLiteral("^frame-\\d{5,}\\.png$"));
+    static const QRegularExpression name{QLatin1StringView(kFrameName)};
     QStringList frames;
     const QDir directory(folder);
     for (const QString &file : directory.entryList({QStringLiteral("frame-*.png")}, QDir::Files, QDir::Name))
@@ -61,6 +67,18 @@ QString removeSequenceFrames(const QString &folder)
         if (!QFile::remove(frame))
             return QObject::tr("cannot remove %1, left from an earlier sequence").arg(QDir::toNativeSeparators(frame));
     return {};
+}
+
+bool isSequenceFrame(const QString &path, const QString &folder)
+{
+    // the path as given (a link there would be removed) and the file a link leads to (which
+    // would be written through)
+    static const QRegularExpression name(QLatin1StringView(kFrameName), QRegularExpression::CaseInsensitiveOption);
+    const auto inFolder = [&](const QFileInfo &file) {
+        return name.match(file.fileName()).hasMatch() && io::sameFile(file.path(), folder);
+    };
+    const QFileInfo given(path);
+    return inFolder(given) || (given.exists() && inFolder(QFileInfo(given.canonicalFilePath())));
 }
 
 }  // namespace ui

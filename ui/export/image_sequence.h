@@ -30,4 +30,10 @@ QStringList sequenceFramesIn(const QString &folder);
 // removes them; empty on success, else the message
 QString removeSequenceFrames(const QString &folder);
 
+// whether path is a file that a new sequence in folder would remove or write over: a
+// frame-NNNNN.png in it. The folder is compared as a folder (io::sameFile: another spelling, a
+// link or a bind mount of it counts), a link at path counts both where it is and where it leads,
+// and the name is matched in any case, for a file system that ignores it
+bool isSequenceFrame(const QString &path, const QString &folder);
+
 }  // namespace ui

@@ -753,6 +753,12 @@ void MainWindow::saveSessionRecording(const SessionRecording &recording)
     const QString path = m_prompts.chooseFile(FileDialogMode::Save, tr("Save session recording"), suggested);
     if (path.isEmpty())
         return;
+    // never over the scene or a recovery file, by any name
+    if (const QString refused = m_files->protectedFileAt(path); !refused.isEmpty()) {
+        m_prompts.ask(QMessageBox::Warning, tr("Save session recording"),
+                      tr("%1: cannot save: %2").arg(QDir::toNativeSeparators(path), refused));
+        return;
+    }
     if (const QString error = saveRecording(path, recording); !error.isEmpty()) {
         m_prompts.ask(QMessageBox::Warning, tr("Save session recording"), error);
         return;

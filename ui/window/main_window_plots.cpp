@@ -4,6 +4,7 @@
 
 #include "main_window.h"
 
+#include "ui/document/document_files.h"
 #include "ui/viewport/edit_tools.h"
 #include "ui/panels/plots_widget.h"
 #include "ui/document/scene_document.h"
@@ -51,6 +52,11 @@ void MainWindow::exportPlot(PlotExport format)
                                     png ? tr("PNG images (*.png)") : tr("CSV files (*.csv)"));
     if (path.isEmpty())
         return;
+    // never over the scene or a recovery file, by any name
+    if (const QString refused = m_files->protectedFileAt(path); !refused.isEmpty()) {
+        m_prompts.ask(QMessageBox::Warning, title, tr("%1: cannot save: %2").arg(QDir::toNativeSeparators(path), refused));
+        return;
+    }
     QString error;
     if (!(png ? m_plots->savePng(path, &error) : m_plots->saveCsv(path, &error))) {
         m_prompts.ask(QMessageBox::Warning, title, error);
