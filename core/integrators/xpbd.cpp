@@ -269,13 +269,31 @@ void settle(const Model &model, State &state, const Eigen::Matrix3Xd &start, dou
     });
 }
 
+// The layout to project: the model's while no spring can break, else the model's without the
+// broken springs. A run resumed from a file written after a break (storeState leaves the broken
+// springs out) compiles exactly that layout, so both runs project in one order, to the bit. Laid
+// out again only when the broken set or the model changes, into the workspace's memory: the first
+// time, before any spring has broken, makes room for every later time, so a break allocates nothing
+const XpbdLayout &layoutFor(const Model &model, const State &state, Workspace &work)
+{
+    const std::vector<std::uint8_t> &broken = state.springBroken;
+    if (!model.plan.springBreaks || broken.size() != std::size_t(model.springCount()))
+        return model.xpbdLayout;
+    if (work.xpbdTornFrom != model.xpbdLayout.id || work.xpbdTornFlags != broken) {
+        layOutXpbd(model, &broken, work.xpbdTornLayout, work.xpbdTornScratch);
+        work.xpbdTornFrom = model.xpbdLayout.id;
+        work.xpbdTornFlags = broken;
+    }
+    return work.xpbdTornLayout;
+}
+
 }  // namespace
 
 void xpbd(const Model &model, State &state, Workspace &work, double h)
 {
     Eigen::Matrix3Xd &start = scratch(state, work, 0);
     work.profile.forceEvaluations += 1;  // the external forces, summed in the kick
-    const XpbdLayout &layout = model.xpbdLayout;
+    const XpbdLayout &layout = layoutFor(model, state, work);
     const int n = model.particleCount();
     const int iterations = model.plan.springs ? model.xpbdIterations : 0;
     double *lambda = nullptr;

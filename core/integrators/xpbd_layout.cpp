@@ -9,11 +9,14 @@
 
 namespace core {
 
-std::vector<int> greedyColours(const Model &model, const std::vector<int> &springs)
+namespace {
+
+// greedyColours into `colour`, with `ends` and `used` as scratch
+void colourGreedily(const Model &model, const std::vector<int> &springs, std::vector<int> &colour,
+                    std::vector<int> &ends, std::vector<std::uint64_t> &used)
 {
     // the free ends the springs touch, numbered locally, and how many of the springs each has
-    std::vector<int> ends;
-    ends.reserve(2 * springs.size());
+    ends.clear();
     for (int k : springs)
         for (int end : {model.springA[std::size_t(k)], model.springB[std::size_t(k)]})
             if (!model.isPinned(end))
@@ -34,8 +37,8 @@ std::vector<int> greedyColours(const Model &model, const std::vector<int> &sprin
     // each free end's colours as bits, 64 to a word; a spring's colour is at most the number of
     // springs at its two ends, so 2 × the largest degree + 1 colours are enough
     const std::size_t words = std::size_t(2 * degree) / 64 + 1;
-    std::vector<std::uint64_t> used(ends.size() * words, 0);
-    std::vector<int> colour(springs.size(), 0);
+    used.assign(ends.size() * words, 0);
+    colour.assign(springs.size(), 0);
     for (std::size_t s = 0; s < springs.size(); ++s) {
         const int k = springs[s];
         std::size_t at[2];
@@ -57,6 +60,15 @@ std::vector<int> greedyColours(const Model &model, const std::vector<int> &sprin
         for (int e = 0; e < moving; ++e)
             used[at[e] + std::size_t(c / 64)] |= std::uint64_t(1) << (c % 64);
     }
+}
+
+}  // namespace
+
+std::vector<int> greedyColours(const Model &model, const std::vector<int> &springs)
+{
+    std::vector<int> colour, ends;
+    std::vector<std::uint64_t> used;
+    colourGreedily(model, springs, colour, ends, used);
     return colour;
 }
 
@@ -81,13 +93,15 @@ void addSlot(const Model &model, XpbdLayout &layout, int k)
 
 // a task from springs (in spring order): its colours, each a batch of the springs with both ends
 // free and one of those with one
-void addTask(const Model &model, XpbdLayout &layout, const std::vector<int> &springs)
+void addTask(const Model &model, XpbdLayout &layout, const std::vector<int> &springs, XpbdLayoutScratch &scratch)
 {
     if (springs.empty())
         return;
-    const std::vector<int> colour = greedyColours(model, springs);
+    colourGreedily(model, springs, scratch.colour, scratch.ends, scratch.used);
+    const std::vector<int> &colour = scratch.colour;
     // batch 2 c: colour c's springs with both ends free; 2 c + 1: those with one; each in spring order
-    std::vector<int> batch(springs.size());
+    std::vector<int> &batch = scratch.batch;
+    batch.assign(springs.size(), 0);
     int batches = 0;
     for (std::size_t s = 0; s < springs.size(); ++s) {
         const int k = springs[s];
@@ -95,13 +109,16 @@ void addTask(const Model &model, XpbdLayout &layout, const std::vector<int> &spr
         batch[s] = 2 * colour[s] + (pinnedEnd ? 1 : 0);
         batches = std::max(batches, batch[s] + 1);
     }
-    std::vector<int> start(std::size_t(batches) + 1, 0);
+    std::vector<int> &start = scratch.start;
+    start.assign(std::size_t(batches) + 1, 0);
     for (int i : batch)
         start[std::size_t(i) + 1] += 1;
     for (int i = 0; i < batches; ++i)
         start[std::size_t(i) + 1] += start[std::size_t(i)];
-    std::vector<int> sorted(springs.size());
-    std::vector<int> fill(start.begin(), start.end() - 1);
+    std::vector<int> &sorted = scratch.sorted;
+    sorted.assign(springs.size(), 0);
+    std::vector<int> &fill = scratch.fill;
+    fill.assign(start.begin(), start.end() - 1);
     for (std::size_t s = 0; s < springs.size(); ++s)
         sorted[std::size_t(fill[std::size_t(batch[s])]++)] = springs[s];
     for (int i = 0; i < batches; ++i) {
@@ -117,19 +134,29 @@ void addTask(const Model &model, XpbdLayout &layout, const std::vector<int> &spr
 
 }  // namespace
 
-XpbdLayout xpbdLayout(const Model &model)
+void layOutXpbd(const Model &model, const std::vector<std::uint8_t> *broken, XpbdLayout &layout,
+                XpbdLayoutScratch &scratch)
 {
     static std::atomic<std::uint64_t> made{0};
-    XpbdLayout layout;
     layout.id = made.fetch_add(1, std::memory_order_relaxed) + 1;
-    layout.batchStart = {0};
-    layout.taskStart = {0};
-    layout.phaseStart = {0};
+    for (std::vector<int> *list : {&layout.spring, &layout.a, &layout.b, &layout.batchStart, &layout.taskStart,
+                                   &layout.phaseStart})
+        list->clear();
+    for (std::vector<double> *list : {&layout.wa, &layout.wb, &layout.restLength, &layout.stiffness, &layout.damping})
+        list->clear();
+    layout.batchMovesB.clear();
+    layout.batchStart.push_back(0);
+    layout.taskStart.push_back(0);
+    layout.phaseStart.push_back(0);
     // each spring to its block, seam or the far list
     const int blocks = (model.particleCount() + kXpbdBlock - 1) / kXpbdBlock;
-    std::vector<std::vector<int>> own(static_cast<std::size_t>(blocks));
-    std::vector<std::vector<int>> seam(static_cast<std::size_t>(blocks));
-    std::vector<int> far;
+    scratch.own.resize(static_cast<std::size_t>(blocks));
+    scratch.seam.resize(static_cast<std::size_t>(blocks));
+    for (std::vector<int> &list : scratch.own)
+        list.clear();
+    for (std::vector<int> &list : scratch.seam)
+        list.clear();
+    scratch.far.clear();
     for (int k = 0; k < model.springCount(); ++k) {
         const int a = model.springA[std::size_t(k)];
         const int b = model.springB[std::size_t(k)];
@@ -137,29 +164,38 @@ XpbdLayout xpbdLayout(const Model &model)
         const bool moveB = !model.isPinned(b);
         if ((!moveA && !moveB) || !(model.stiffness[k] > 0.0))
             continue;  // nothing to move, or no constraint
+        if (broken && (*broken)[std::size_t(k)] != 0)
+            continue;  // gone for good
         const int qa = (moveA ? a : b) / kXpbdBlock;
         const int qb = (moveB ? b : a) / kXpbdBlock;
         if (qa == qb)
-            own[std::size_t(qa)].push_back(k);
+            scratch.own[std::size_t(qa)].push_back(k);
         else if (std::abs(qa - qb) == 1)
-            seam[std::size_t(std::min(qa, qb))].push_back(k);
+            scratch.seam[std::size_t(std::min(qa, qb))].push_back(k);
         else
-            far.push_back(k);
+            scratch.far.push_back(k);
     }
     const auto endPhase = [&] {
         if (layout.taskCount() > layout.phaseStart.back())
             layout.phaseStart.push_back(layout.taskCount());
     };
-    for (const auto &springs : own)
-        addTask(model, layout, springs);
+    for (const auto &springs : scratch.own)
+        addTask(model, layout, springs, scratch);
     endPhase();
     for (int parity : {0, 1}) {
         for (int q = parity; q < blocks; q += 2)
-            addTask(model, layout, seam[std::size_t(q)]);
+            addTask(model, layout, scratch.seam[std::size_t(q)], scratch);
         endPhase();
     }
-    addTask(model, layout, far);
+    addTask(model, layout, scratch.far, scratch);
     endPhase();
+}
+
+XpbdLayout xpbdLayout(const Model &model)
+{
+    XpbdLayout layout;
+    XpbdLayoutScratch scratch;
+    layOutXpbd(model, nullptr, layout, scratch);
     return layout;
 }
 

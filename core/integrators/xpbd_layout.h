@@ -69,6 +69,21 @@ struct XpbdConstants {
 // the model's springs laid out for xpbd (empty lists when it has nothing to project)
 XpbdLayout xpbdLayout(const Model &model);
 
+// what laying out takes besides the layout: kept in a workspace, so that laying out again (after
+// a spring broke) allocates nothing once it has been done
+struct XpbdLayoutScratch {
+    std::vector<std::vector<int>> own, seam;  // per block: its springs, and the seam after it
+    std::vector<int> far;
+    std::vector<int> ends, colour, batch, start, sorted, fill;
+    std::vector<std::uint64_t> used;
+};
+
+// lays the model's springs out into `layout`, without those `broken` flags (one flag per spring,
+// or null): exactly as the same model with those springs left out of its list would be laid out.
+// Reuses the memory of `layout` and `scratch`
+void layOutXpbd(const Model &model, const std::vector<std::uint8_t> *broken, XpbdLayout &layout,
+                XpbdLayoutScratch &scratch);
+
 // The springs of `springs` (indices into the model, in this order) coloured greedily: each takes the
 // lowest colour no spring before it already has at one of its free ends. Returns each one's colour.
 // A pinned end takes no colour, since no spring moves it.

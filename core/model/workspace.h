@@ -32,6 +32,12 @@ struct Workspace {
     // xpbd's λ per spring (in XpbdLayout's order), kept across a sub-step's passes when it has several
     std::vector<double> xpbdLambda;
     XpbdConstants xpbdConstants;  // the sub-step's constants per spring, for the last layout and h
+    // xpbd's layout without the springs that broke (xpbd.cpp), and the model layout and broken
+    // flags it was made for: made again only when a spring breaks or the model changes
+    XpbdLayout xpbdTornLayout;
+    XpbdLayoutScratch xpbdTornScratch;
+    std::uint64_t xpbdTornFrom = 0;
+    std::vector<std::uint8_t> xpbdTornFlags;
     ContactGrid contacts;  // the particle-pair pass's grid and pairs (broad_phase.cpp)
     ContactScratch contactSolver;  // the iterative contact solver's (contacts.cpp)
 
