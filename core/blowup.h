@@ -14,6 +14,9 @@ struct Blowup {
     double value = 0.0;       // the offending component; for StepSize, the last trial step, s
     std::uint64_t step = 0;   // the step it happened in (1 = the first step)
     double time = 0.0;        // s, the time at the start of that step
+    // the particle's position (m) and speed (m/s) when it was found: where it left the world
+    double where[3] = {0.0, 0.0, 0.0};
+    double speed = 0.0;
 };
 
 }  // namespace core

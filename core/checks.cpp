@@ -64,6 +64,11 @@ bool checkFinite(const Model &model, State &state, Workspace &work, bool freeChe
             if (bad(state.position(axis, i)))
                 blowup = {i, Blowup::Quantity::Position, state.position(axis, i), 0, 0.0};
     }
+    if (blowup.particle >= 0) {
+        for (int axis = 0; axis < 3; ++axis)
+            blowup.where[axis] = state.position(axis, blowup.particle);
+        blowup.speed = state.velocity.col(blowup.particle).norm();
+    }
     work.blowup = blowup;
     return false;
 }

@@ -325,10 +325,27 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
               << "tolerance.";
         return out.str();
     }
-    out << "Particle " << blowup.particle << "'s "
-        << (blowup.quantity == Blowup::Quantity::Velocity ? "velocity" : "position") << " became "
-        << (std::isfinite(blowup.value) ? "too large (" + format(blowup.value) + ")" : std::string("infinite"))
-        << " at t = " << format(blowup.time) << " s (step " << blowup.step << ").";
+    // a particle that went past the world's edge at a finite speed has left it: said so, with where
+    // and how fast, and blamed on nothing the scene does not have
+    const bool holds = model.plan.springs || model.plan.planeCollisions || model.plan.particleCollisions;
+    if (blowup.quantity == Blowup::Quantity::Position && std::isfinite(blowup.value) &&
+        std::isfinite(blowup.speed) && blowup.speed <= kStateLimit) {
+        out << "Particle " << blowup.particle << " left the world at t = " << format(blowup.time) << " s (step "
+            << blowup.step << "): it was at (" << format(blowup.where[0]) << ", " << format(blowup.where[1]) << ", "
+            << format(blowup.where[2]) << ") m, moving at " << format(blowup.speed) << " m/s. The world ends "
+            << format(kStateLimit) << " m from the origin along each axis, the most a scene file holds.";
+        if (!holds) {
+            out << " Nothing in the scene holds it back (no springs, no contacts): it "
+                << (model.plan.gravity ? "fell" : "coasted") << " out by its own motion. Start it slower, or add "
+                << "planes to keep it in.";
+            return out.str();
+        }
+    } else {
+        out << "Particle " << blowup.particle << "'s "
+            << (blowup.quantity == Blowup::Quantity::Velocity ? "velocity" : "position") << " became "
+            << (std::isfinite(blowup.value) ? "too large (" + format(blowup.value) + ")" : std::string("infinite"))
+            << " at t = " << format(blowup.time) << " s (step " << blowup.step << ").";
+    }
 
     // the reason, when the step is past an explicit limit: the drag's, then the springs'
     const double h = model.subStep();
@@ -377,9 +394,14 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
                 << format(stiffest) << " N/m): use symplectic-euler, implicit-euler or xpbd.";
         }
     } else {
-        out << " The time step " << format(h) << " s is within the springs' stability limit; a contact or an "
-            << "applied force may have been too violent: try more substeps, a smaller time step, or "
-            << "the implicit-euler integrator.";
+        // what the scene has that could have thrown it: its contacts, else a force applied from outside
+        const bool contacts = model.plan.planeCollisions || model.plan.particleCollisions;
+        out << " The time step " << format(h) << " s is within "
+            << (model.plan.springs ? "the springs' stability limit" : "every stability limit") << "; "
+            << (contacts ? "a contact or a force applied from outside (a drag, the steering keys)"
+                         : "a force applied from outside (a drag, the steering keys)")
+            << " may have been too violent: try more substeps, a smaller time step"
+            << (model.plan.springs ? ", or the implicit-euler integrator." : ".");
     }
     return out.str();
 }

@@ -47,6 +47,18 @@ Eigen::Vector3d unitNormal(const Eigen::Vector3d &normal)
     return scaled / scaled.norm();
 }
 
+std::optional<SceneProblem> findParticleProblem(const SceneDesc &scene, std::size_t i)
+{
+    std::optional<SceneProblem> problem;
+    const ParticleDesc &p = scene.particles[i];
+    if (!checkVector(Parameter::Coordinate, p.position, indexed("particles", i, "position"), problem) ||
+        !checkVector(Parameter::Speed, p.velocity, indexed("particles", i, "velocity"), problem) ||
+        !check(Parameter::Mass, p.mass, indexed("particles", i, "mass"), problem) ||
+        !check(Parameter::Radius, p.radius, indexed("particles", i, "radius"), problem))
+        return problem;
+    return std::nullopt;
+}
+
 std::optional<SceneProblem> findProblem(const SceneDesc &scene)
 {
     std::optional<SceneProblem> problem;
@@ -66,14 +78,9 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
         return problem;
 
     // particles
-    for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-        const ParticleDesc &p = scene.particles[i];
-        if (!checkVector(Parameter::Coordinate, p.position, indexed("particles", i, "position"), problem) ||
-            !checkVector(Parameter::Speed, p.velocity, indexed("particles", i, "velocity"), problem) ||
-            !check(Parameter::Mass, p.mass, indexed("particles", i, "mass"), problem) ||
-            !check(Parameter::Radius, p.radius, indexed("particles", i, "radius"), problem))
-            return problem;
-    }
+    for (std::size_t i = 0; i < scene.particles.size(); ++i)
+        if (auto found = findParticleProblem(scene, i))
+            return found;
 
     // springs
     const auto count = static_cast<long long>(scene.particles.size());

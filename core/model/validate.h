@@ -18,6 +18,10 @@ struct SceneProblem {
 // the first problem in the scene, in file order; nullopt when it can be simulated
 std::optional<SceneProblem> findProblem(const SceneDesc &scene);
 
+// the first problem with one particle of the scene (its path "particles[i]..."): what an edit of a
+// few particles checks, where checking the whole scene would cost a pass over every particle
+std::optional<SceneProblem> findParticleProblem(const SceneDesc &scene, std::size_t index);
+
 // the first problem with a run's contact impulses (SceneDesc::contactImpulses, a session's state)
 // in a scene of that many particles and planes; paths as "contactImpulses[k].plane"
 std::optional<SceneProblem> findContactImpulseProblem(const std::vector<ContactImpulse> &impulses, std::size_t particles,

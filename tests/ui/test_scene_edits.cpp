@@ -5,6 +5,7 @@
 
 #include "core/contacts/contact_impulses.h"
 #include "core/model/generators.h"
+#include "core/model/parameters.h"
 #include "core/model/validate.h"
 
 #include <QTest>
@@ -415,6 +416,40 @@ private slots:
         QVERIFY((ui::snapToGrid({0.26, -0.04, 1.0}, 0.1) - Eigen::Vector3d(0.3, 0.0, 1.0)).norm() < 1e-12);
         QVERIFY((ui::snapToGrid({0.26, -0.04, 1.0}, 0.25) - Eigen::Vector3d(0.25, 0.0, 1.0)).norm() < 1e-12);
         QCOMPARE(ui::snapToGrid({0.26, -0.04, 1.0}, 0.0), Eigen::Vector3d(0.26, -0.04, 1.0));
+    }
+
+    void anEditCannotTakeAParticleOutOfTheWorld()
+    {
+        // the world ends at kStateLimit along each axis, for the loader, the saver, the run and
+        // the editor alike: a particle added or moved past it is a problem, named by its path;
+        // particles the edit leaves alone are not looked at
+        core::SceneDesc before;
+        before.particles = {core::ParticleDesc{Eigen::Vector3d(0.0, 1.0, 0.0), Eigen::Vector3d::Zero(), 1.0, 0.1, false},
+                            core::ParticleDesc{Eigen::Vector3d(1.0, 1.0, 0.0), Eigen::Vector3d::Zero(), 1.0, 0.1, false}};
+        core::SceneDesc after = before;
+        QVERIFY(!ui::changedParticleProblem(before, after));
+        after.particles[1].position.x() = 3.6e9;
+        std::optional<core::SceneProblem> problem = ui::changedParticleProblem(before, after);
+        QVERIFY(problem);
+        QCOMPARE(QString::fromStdString(problem->path), QStringLiteral("particles[1].position[0]"));
+        QVERIFY(core::findProblem(after));  // the same verdict as the whole scene's check
+
+        // an added particle past the edge, and one at it (still inside: the bound is inclusive)
+        after = before;
+        after.particles.push_back(before.particles[0]);
+        after.particles.back().position.z() = -core::kStateLimit;
+        QVERIFY(!ui::changedParticleProblem(before, after));
+        after.particles.back().position.z() = -1.01 * core::kStateLimit;
+        problem = ui::changedParticleProblem(before, after);
+        QVERIFY(problem);
+        QCOMPARE(QString::fromStdString(problem->path), QStringLiteral("particles[2].position[2]"));
+
+        // a particle already past the edge in `before` is not the edit's doing
+        core::SceneDesc outside = before;
+        outside.particles[0].position.y() = 2e9;
+        core::SceneDesc moved = outside;
+        moved.particles[1].position.y() = 2.0;
+        QVERIFY(!ui::changedParticleProblem(outside, moved));
     }
 };
 

@@ -55,6 +55,15 @@ void Selection::clamp(const core::SceneDesc &scene)
     drop(springs, scene.springs.size());
 }
 
+std::optional<core::SceneProblem> changedParticleProblem(const core::SceneDesc &before, const core::SceneDesc &after)
+{
+    for (std::size_t i = 0; i < after.particles.size(); ++i)
+        if (i >= before.particles.size() || !(after.particles[i] == before.particles[i]))
+            if (std::optional<core::SceneProblem> problem = core::findParticleProblem(after, i))
+                return problem;
+    return std::nullopt;
+}
+
 std::optional<std::size_t> particlesPastLimit(const core::SceneDesc &scene, std::size_t added)
 {
     const std::size_t total = scene.particles.size() + added;

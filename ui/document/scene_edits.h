@@ -6,6 +6,7 @@
 
 #include "core/model/generators.h"
 #include "core/model/scene.h"
+#include "core/model/validate.h"
 
 #include <Eigen/Core>
 #include <cstddef>
@@ -43,6 +44,12 @@ struct Fragment {
     std::vector<core::SpringDesc> springs;  // indices into particles
     bool empty() const { return particles.empty(); }
 };
+
+// the first problem with a particle that `after` adds to `before` or changes (added, moved, its
+// motion or mass edited): what an edit must not bring into the document, since a scene the file
+// format refuses could not be saved or opened again (a particle past the world's edge). Only the
+// changed particles are checked, so a drag on a large scene costs what it moves
+std::optional<core::SceneProblem> changedParticleProblem(const core::SceneDesc &before, const core::SceneDesc &after);
 
 // the most particles a scene may grow to in the editor, by Generate, Duplicate, Paste or Add
 // Particle: the generators' limit, so that one number holds everywhere. A scene file with more

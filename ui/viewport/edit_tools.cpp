@@ -186,6 +186,12 @@ void EditTools::apply(const QString &text, const std::function<void(core::SceneD
 {
     auto edited = std::make_shared<core::SceneDesc>(m_document->scene());
     edit(*edited);
+    // the document holds only scenes the file format takes: a particle added or moved past the
+    // world's edge (a click far out in a zoomed-out view) is refused, and nothing changes
+    if (const std::optional<core::SceneProblem> problem = changedParticleProblem(m_document->scene(), *edited)) {
+        emit refused(tr("Not done: %1 %2").arg(QString::fromStdString(problem->path), QString::fromStdString(problem->message)));
+        return;
+    }
     m_document->undoStack()->push(new SceneCommand(*m_document, text, std::move(edited), mergeKey));
 }
 
