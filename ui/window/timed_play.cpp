@@ -58,6 +58,10 @@ void TimedPlay::frameChanged()
         m_startStep = frame->shownStep;
     }
     m_lastStep = frame->shownStep;
+    if (m_stopWhenStepped && m_lastStep > m_startStep) {
+        stop();
+        return;
+    }
     if (!m_stopping || frame->appliedMessage < m_pauseMessage)
         return;
 
@@ -81,6 +85,13 @@ void TimedPlay::frameChanged()
 
 void TimedPlay::stop()
 {
+    // a playing run that has not shown a step yet (the worker has had no core to itself) plays on
+    // until it has: the figures are of a run that ran
+    if (m_play && !(m_startKnown && m_lastStep > m_startStep)) {
+        m_stopWhenStepped = true;
+        return;
+    }
+    m_stopWhenStepped = false;
     // time is up: the clock stops here, and the frame that answers the pause gives the steps
     m_figures.seconds = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
     m_stopping = true;

@@ -6,7 +6,9 @@
 // (later only where a snapshot is slow to make: SimulationWorker), and ends the application. The
 // clock runs from the start (the Play) to the Pause, so the figures are the editor's as a user
 // sees it, drawing included: the side-by-side benchmark (bench/editor_throughput.cpp) sets them
-// beside springlab-sim's on the same scene.
+// beside springlab-sim's on the same scene. A playing run is paused only once it has shown a step:
+// on a machine so busy that the worker took no step in SECONDS, the clock runs on until it has,
+// so the line always measures a run that ran, and says how long that took.
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -55,6 +57,7 @@ private:
     Figures m_figures;
     bool m_stopping = false;
     bool m_pauseAnswered = false;
+    bool m_stopWhenStepped = false;  // the time is up, but the playing run has shown no step yet
 };
 
 }  // namespace ui
