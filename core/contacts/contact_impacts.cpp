@@ -1,12 +1,18 @@
-// Impacts located in time: a particle that was clear of a collider or of another particle at the
-// start of the sub-step and meets it during the sub-step is stopped at the moment they touch, found
-// along both paths (particle_path.h) by conservative advancement. The impulse with restitution and
-// friction is applied there, and the particle goes on for the rest of the sub-step with its new
-// velocity. A bounce then loses or gains nothing the integrator would not, and a pair 4 m apart
-// closing at 400 m/s still meets: nothing passes through anything in one sub-step.
+// Impacts located in time: a particle that meets a collider or another particle during the sub-step
+// is stopped at the moment they touch, found along both paths (particle_path.h) by conservative
+// advancement. The impulse with restitution and friction is applied there, and the particle goes on
+// for the rest of the sub-step with its new velocity, on a new path. Every path an impact changed
+// is searched again from that moment, against the colliders and its neighbours, so one sub-step
+// resolves every impact in the order they happen: a ball struck into a row of touching balls hands
+// the impulse on through the row at that instant, each pair an elastic (or, with e < 1, inelastic)
+// two-body impact, as the closed form of a Newton's cradle has it; a ball that bounces back meets
+// what it bounces into; and a pair 4 m apart closing at 400 m/s still meets. Each impact is a two-body
+// impulse, so none adds energy. A sub-step that meets more than kMaxImpactEvents (a jammed crowd of
+// elastic balls) leaves the rest to the resting contacts, which brake them, and counts them.
 
 #include "core/contacts/broad_phase.h"
 #include "core/contacts/particle_path.h"
+#include "core/geometry.h"
 #include "core/passes.h"
 
 #include <algorithm>
@@ -18,23 +24,44 @@ namespace core {
 
 namespace {
 
-// the path of particle i through the sub-step (a pinned particle rests where it is)
-ParticlePath pathOf(const Model &model, const State &state, const ContactScratch &scratch, int i, double h)
+constexpr double kFast = 4.0;  // radii moved in a sub-step past which a particle is fast (out of the grid)
+constexpr int kBroadPhaseRounds = 3;  // broad phases a sub-step, for paths that impacts sent astray
+constexpr std::uint64_t kEventsPerParticle = 64;  // impacts a sub-step, per particle, at the most
+constexpr int kCheckAllBelow = 256;  // particles up to which a stray path is checked against all at once
+
+// a particle's path from the start of its current segment: the integrator's whole path, or the rest
+// of it after its last impact
+struct TimedPath {
+    ParticlePath path;
+    double start = 0.0;  // s: the time path's t = 0 stands for
+
+    // (a path that begins at the sub-step's end has no length: it stays where it begins)
+    Eigen::Vector3d position(double t) const { return path.h > 0.0 ? path.position(t - start) : path.x0; }
+    Eigen::Vector3d velocity(double t) const { return path.h > 0.0 ? path.velocity(t - start) : path.v0; }
+    double speedBound() const { return path.h > 0.0 ? path.speedBound() : 0.0; }
+};
+
+TimedPath pathOf(const Model &model, const State &state, const ContactScratch &scratch, int i, double h)
 {
-    return ParticlePath{pathShape(model.integrator), scratch.startPosition.col(i), scratch.startVelocity.col(i),
-                        state.position.col(i), state.velocity.col(i), h};
+    const PathShape shape = pathShape(model.integrator);
+    const int segment = scratch.segmentOf[std::size_t(i)];
+    if (segment < 0)
+        return {ParticlePath{shape, scratch.startPosition.col(i), scratch.startVelocity.col(i), state.position.col(i),
+                             state.velocity.col(i), h},
+                0.0};
+    const PathSegment &s = scratch.segments[std::size_t(segment)];
+    return {ParticlePath{shape, s.position, s.velocity, state.position.col(i), state.velocity.col(i), h - s.time}, s.time};
 }
 
-// how far a particle's path strays from the straight line between its ends: none for the Euler
-// schemes; for a Hermite curve h · 4/27 · (|v0 - v̄| + |v1 - v̄|), v̄ the mean velocity, since the
-// curve less its chord is h (s(1 - s)² (v0 - v̄) - s²(1 - s) (v1 - v̄)) at s = t / h
-double bulge(const Model &model, const State &state, const ContactScratch &scratch, int i, double h)
+// how far a path strays from the straight line between its ends: none for the Euler schemes; for a
+// Hermite curve h · 4/27 · (|v0 - v̄| + |v1 - v̄|), v̄ the mean velocity, since the curve less its
+// chord is h (s(1 - s)² (v0 - v̄) - s²(1 - s) (v1 - v̄)) at s = t / h
+double bulge(const ParticlePath &path)
 {
-    if (pathShape(model.integrator) != PathShape::Hermite)
+    if (path.shape != PathShape::Hermite || !(path.h > 0.0))
         return 0.0;
-    const Eigen::Vector3d mean = (state.position.col(i) - scratch.startPosition.col(i)) / h;
-    return h * (4.0 / 27.0) *
-           ((scratch.startVelocity.col(i) - mean).norm() + (Eigen::Vector3d(state.velocity.col(i)) - mean).norm());
+    const Eigen::Vector3d mean = (path.x1 - path.x0) / path.h;
+    return path.h * (4.0 / 27.0) * ((path.v0 - mean).norm() + (path.v1 - mean).norm());
 }
 
 // the first time in [0, h] at which gap(t) ≤ 0, or none: the gap (the distance less the contact
@@ -48,104 +75,170 @@ std::optional<double> firstTouch(const Gap &gap, double speed, double h, double 
     for (int iteration = 0; iteration < 64; ++iteration) {
         if (g <= close)
             return t;
-        if (!(speed > 0.0))
+        if (!(speed > 0.0) || !(t < h))
             return std::nullopt;
-        t += g / speed;
-        if (!(t <= h))
-            return std::nullopt;
+        // (never past h: a touch at the sub-step's very end, a step of g / speed that rounds a
+        // hair over h, is still a touch)
+        t = std::min(t + g / speed, h);
         g = gap(t);
     }
     // a grazing path closes ever more slowly: near enough counts as touching
     return g <= 1e-6 * contactDistance ? std::optional<double>(t) : std::nullopt;
 }
 
-// the impacts of the free particles with the colliders
-void collidersAlongPaths(const Model &model, const State &state, ContactScratch &scratch, double h)
+// how fast two things already touching must close for an impact rather than a resting contact:
+// twice what gravity adds to a speed in a sub-step, whatever the direction. A pile's neighbours
+// touch and close at the speeds the resting solve leaves them, some of which gravity's pull along
+// the pair (zero for a pair side by side) would not cover; those are the resting solve's, not a
+// cascade of impacts. A ball struck into a row closes far faster
+double touchingThreshold(const Model &model)
 {
-    for (int i : model.freeParticles) {
-        const double r = model.radius[i];
-        const auto x0 = scratch.startPosition.col(i);
-        const auto x1 = state.position.col(i);
-        for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k) {
-            const Collider &c = model.colliders[std::size_t(k)];
-            const double side = sideOf(c, x0);
-            if (!(separation(c, x0, side).distance > r))
-                continue;  // touching from the start: a resting contact, or not finite
-            const bool crossed = c.twoSided && sideOf(c, x1) != side;
-            if (!(separation(c, x1, side).distance <= r || crossed))
-                continue;  // clear at both ends, and on the same side
-            const ParticlePath path = pathOf(model, state, scratch, i, h);
-            const auto gap = [&](double t) { return separation(c, path.position(t), side).distance - r; };
-            const std::optional<double> t = firstTouch(gap, path.speedBound(), h, r);
-            if (!t)
-                continue;  // passed the rectangle's edge
-            const Separation s = separation(c, path.position(*t), side);
-            if (-s.normal.dot(path.velocity(*t)) > restingThreshold(model, s.normal))
-                scratch.impacts.push_back({*t, i, -1 - k});
-        }
-    }
+    return 2.0 * model.gravity.norm() * model.subStep();
 }
 
-// one candidate pair: an impact if the two were apart at the start, their chords come within reach
-// of each other, and conservative advancement along their paths finds them touching faster than a
-// resting contact
-void pairAlongPaths(const Model &model, const State &state, ContactScratch &scratch, int i, int j, double h)
+void push(ContactScratch &scratch, double time, int i, int j)
+{
+    const std::uint32_t vj = j >= 0 ? scratch.version[std::size_t(j)] : 0;
+    scratch.impacts.push_back({time, i, j, scratch.version[std::size_t(i)], vj});
+    // a min-heap: std::push_heap keeps the largest on top, so the order is reversed
+    std::push_heap(scratch.impacts.begin(), scratch.impacts.end(),
+                   [](const Impact &a, const Impact &b) { return b < a; });
+}
+
+// particle i's impact with collider k from time `from` on, if any: at `from` already when it touches
+// the collider there and approaches it faster than a resting contact, else where its path meets it
+void colliderImpact(const Model &model, const State &state, ContactScratch &scratch, int i, int k, double from,
+                    double h)
+{
+    const double r = model.radius[i];
+    const Collider &c = model.colliders[std::size_t(k)];
+    const TimedPath a = pathOf(model, state, scratch, i, h);
+    const double t0 = std::max(from, a.start);
+    // the side it started the sub-step on: the side it keeps (a two-sided plane is never crossed)
+    const double side = sideOf(c, scratch.startPosition.col(i));
+    const Eigen::Vector3d x0 = a.position(t0);
+    const Separation s0 = separation(c, x0, side);
+    if (!(s0.distance > r)) {
+        // touching (or not finite): an impact now if it comes in fast, else a resting contact
+        if (-s0.normal.dot(a.velocity(t0)) > touchingThreshold(model))
+            push(scratch, t0, i, -1 - k);
+        return;
+    }
+    const Eigen::Vector3d x1 = state.position.col(i);
+    const bool crossed = c.twoSided && sideOf(c, x1) != side;
+    if (!(separation(c, x1, side).distance <= r + bulge(a.path) || crossed))
+        return;  // clear at both ends, and on the same side
+    const auto gap = [&](double t) { return separation(c, a.position(t0 + t), side).distance - r; };
+    const std::optional<double> t = firstTouch(gap, a.speedBound(), h - t0, r);
+    if (!t)
+        return;  // passed the rectangle's edge
+    const Separation s = separation(c, a.position(t0 + *t), side);
+    if (-s.normal.dot(a.velocity(t0 + *t)) > restingThreshold(model, s.normal))
+        push(scratch, t0 + *t, i, -1 - k);
+}
+
+// one pair from time `from` on: an impact at `from` if they touch then and close faster than a
+// resting contact, else where conservative advancement along their paths finds them touching
+void pairImpact(const Model &model, const State &state, ContactScratch &scratch, int i, int j, double from, double h)
 {
     if (model.invMass[i] == 0.0 && model.invMass[j] == 0.0)
         return;
+    if (model.invMass[i] == 0.0)
+        std::swap(i, j);  // i the free one, as the impulse reads it
+    const TimedPath a = pathOf(model, state, scratch, i, h);
+    const TimedPath b = pathOf(model, state, scratch, j, h);
+    const double t0 = std::max({from, a.start, b.start});
     const double contact = model.radius[i] + model.radius[j];
-    const Eigen::Vector3d d0 = scratch.startPosition.col(i) - scratch.startPosition.col(j);
-    if (!(d0.squaredNorm() > contact * contact))
-        return;  // touching from the start: a resting contact (or not finite)
-    // the chords of the two paths: clear of each other all along them by more than the paths can
-    // bulge, they cannot meet
+    const auto closing = [&](double t, bool touching) {
+        const Eigen::Vector3d d = a.position(t) - b.position(t);
+        const double distance = d.norm();
+        const Eigen::Vector3d normal = apart(distance) ? Eigen::Vector3d(d / distance) : coincidentAxis(i, j);
+        return -normal.dot(a.velocity(t) - b.velocity(t)) >
+               (touching ? touchingThreshold(model) : restingThreshold(model, normal));
+    };
+    const Eigen::Vector3d d0 = a.position(t0) - b.position(t0);
+    if (!(d0.squaredNorm() > contact * contact)) {
+        if (closing(t0, true))  // touching and closing: the impulse passes on now
+            push(scratch, t0, i, j);
+        return;
+    }
+    // the chords of the two paths from t0: clear of each other all along them by more than the paths
+    // can bulge, they cannot meet
     const Eigen::Vector3d d1 = state.position.col(i) - state.position.col(j);
     const Eigen::Vector3d chord = d1 - d0;
     const double along = chord.squaredNorm() > 0.0 ? std::clamp(-d0.dot(chord) / chord.squaredNorm(), 0.0, 1.0) : 0.0;
-    if (!((d0 + along * chord).norm() <= contact + bulge(model, state, scratch, i, h) + bulge(model, state, scratch, j, h)))
+    if (!((d0 + along * chord).norm() <= contact + bulge(a.path) + bulge(b.path)))
         return;
-    const ParticlePath a = pathOf(model, state, scratch, i, h);
-    const ParticlePath b = pathOf(model, state, scratch, j, h);
-    // i relative to j: a path of the same shape, since a path is linear in its ends' positions and
-    // velocities. Its speed bound is the bound on how fast the gap can close, which for neighbours
-    // moving together is far less than the sum of their speeds, so conservative advancement takes
-    // few steps where the sum would take dozens
-    const ParticlePath relative{a.shape, a.x0 - b.x0, a.v0 - b.v0, a.x1 - b.x1, a.v1 - b.v1, h};
-    const auto gap = [&](double t) { return relative.position(t).norm() - contact; };
-    const std::optional<double> t = firstTouch(gap, relative.speedBound(), h, contact);
-    if (!t)
-        return;
-    const Eigen::Vector3d normal = (a.position(*t) - b.position(*t)).normalized();
-    if (-normal.dot(a.velocity(*t) - b.velocity(*t)) > restingThreshold(model, normal))
-        scratch.impacts.push_back({*t, i, j});
+    std::optional<double> t;
+    if (a.start == b.start) {
+        // i relative to j: a path of the same shape, since a path is linear in its ends' positions
+        // and velocities. Its speed bound is the bound on how fast the gap can close, which for
+        // neighbours moving together is far less than the sum of their speeds
+        const ParticlePath relative{a.path.shape, a.path.x0 - b.path.x0, a.path.v0 - b.path.v0,
+                                    a.path.x1 - b.path.x1, a.path.v1 - b.path.v1, a.path.h};
+        const auto gap = [&](double s) { return relative.position(t0 - a.start + s).norm() - contact; };
+        t = firstTouch(gap, relative.speedBound(), h - t0, contact);
+    } else {
+        const auto gap = [&](double s) { return (a.position(t0 + s) - b.position(t0 + s)).norm() - contact; };
+        t = firstTouch(gap, a.speedBound() + b.speedBound(), h - t0, contact);
+    }
+    if (t && closing(t0 + *t, false))
+        push(scratch, t0 + *t, i, j);
 }
 
-// the impacts of pairs. A particle that moves less than a few radii in the sub-step goes into the
-// broad phase as a sphere about its path's midpoint holding the whole path; a faster one stays out
-// of it (its sphere would make every particle its neighbour, and the grid quadratic) and has its
-// chord checked against every particle instead, which stores nothing
-void pairsAlongPaths(const Model &model, const State &state, Workspace &work, double h)
+// each particle's sphere holding its path through the rest of the sub-step, for the broad phase; a
+// particle that moves more than a few radii stays out of the grid (its sphere would make every
+// particle its neighbour, and the grid quadratic) and is checked against every particle instead
+void sweep(const Model &model, const State &state, ContactScratch &scratch, double h)
 {
-    constexpr double kFast = 4.0;  // radii moved in a sub-step past which a particle is fast
-    ContactScratch &scratch = work.contactSolver;
     const int n = model.particleCount();
     scratch.sweptCentre.resize(3, n);
     scratch.sweptRadius.resize(n);
     scratch.fast.clear();
     scratch.isFast.assign(std::size_t(n), 0);
     for (int i = 0; i < n; ++i) {
-        const auto x0 = scratch.startPosition.col(i);
-        const auto x1 = state.position.col(i);
-        const double sweep = 0.5 * (x1 - x0).norm() + bulge(model, state, scratch, i, h);
-        if (sweep > kFast * model.radius[i]) {
+        const TimedPath a = pathOf(model, state, scratch, i, h);
+        const double reach = 0.5 * (a.path.x1 - a.path.x0).norm() + bulge(a.path);
+        if (reach > kFast * model.radius[i]) {
             scratch.fast.push_back(i);
             scratch.isFast[std::size_t(i)] = 1;
             scratch.sweptCentre.col(i).setConstant(std::numeric_limits<double>::quiet_NaN());  // out of the grid
         } else {
-            scratch.sweptCentre.col(i) = 0.5 * (x0 + x1);
+            scratch.sweptCentre.col(i) = 0.5 * (a.path.x0 + a.path.x1);
         }
-        scratch.sweptRadius[i] = model.radius[i] + sweep;
+        // a hair larger than the path, so that a pair touching exactly (a row of balls placed
+        // side by side, a ball that ends its move touching the next) is a candidate: the
+        // broad phase counts only overlaps
+        scratch.sweptRadius[i] = (model.radius[i] + reach) * (1.0 + 1e-9);
     }
+}
+
+// the broad phase's pairs as adjacency lists (both ways)
+void listCandidates(int n, const std::vector<ContactPair> &pairs, ContactScratch &scratch)
+{
+    scratch.candidateStart.assign(std::size_t(n) + 1, 0);
+    for (const ContactPair &p : pairs) {
+        scratch.candidateStart[std::size_t(p.i) + 1] += 1;
+        scratch.candidateStart[std::size_t(p.j) + 1] += 1;
+    }
+    for (int p = 0; p < n; ++p)
+        scratch.candidateStart[std::size_t(p) + 1] += scratch.candidateStart[std::size_t(p)];
+    scratch.candidates.resize(std::size_t(scratch.candidateStart[std::size_t(n)]));
+    std::vector<int> &fill = scratch.queue;  // borrowed as the fill cursor
+    fill.assign(scratch.candidateStart.begin(), scratch.candidateStart.end() - 1);
+    for (const ContactPair &p : pairs) {
+        scratch.candidates[std::size_t(fill[std::size_t(p.i)]++)] = p.j;
+        scratch.candidates[std::size_t(fill[std::size_t(p.j)]++)] = p.i;
+    }
+}
+
+// the broad phase over the paths as they now are, and the impacts of its pairs from `from` on: of
+// every pair the first time (strays empty), else of the pairs with a stray in them
+void impactsOfPairs(const Model &model, const State &state, Workspace &work, double from, double h)
+{
+    ContactScratch &scratch = work.contactSolver;
+    const int n = model.particleCount();
+    sweep(model, state, scratch, h);
     ContactGrid &grid = work.contacts;
     if (grid.bruteForce)
         findContactsBruteForce(model, scratch.sweptCentre, scratch.sweptRadius, grid.pairs);
@@ -153,12 +246,16 @@ void pairsAlongPaths(const Model &model, const State &state, Workspace &work, do
         findContacts(model, scratch.sweptCentre, scratch.sweptRadius, grid);
     if (stopsHere(work))
         return;
+    listCandidates(n, grid.pairs, scratch);
+    const bool all = scratch.strays.empty();
+    const auto wanted = [&](int i, int j) { return all || scratch.isStray[std::size_t(i)] || scratch.isStray[std::size_t(j)]; };
     for (const ContactPair &pair : grid.pairs)
-        pairAlongPaths(model, state, scratch, pair.i, pair.j, h);
+        if (wanted(pair.i, pair.j))
+            pairImpact(model, state, scratch, pair.i, pair.j, from, h);
     for (int i : scratch.fast)
         for (int j = 0; j < n; ++j)
-            if (j != i && !(scratch.isFast[std::size_t(j)] && j < i))
-                pairAlongPaths(model, state, scratch, std::min(i, j), std::max(i, j), h);
+            if (j != i && !(scratch.isFast[std::size_t(j)] && j < i) && wanted(i, j))
+                pairImpact(model, state, scratch, std::min(i, j), std::max(i, j), from, h);
 }
 
 // the impulse of one impact at its time: restitution along the normal, Coulomb friction across it
@@ -202,19 +299,37 @@ double eulerRebound(const Model &model, const Eigen::Vector3d &normal, double ap
     return std::max(-c + std::sqrt(std::max(c * c + e2 * (approach * approach - 2.0 * c * approach), 0.0)), 0.0);
 }
 
+// particle p's path changed at time t to velocity v: on to the sub-step's end along the same kind
+// of motion, a new segment from t, and every impact found on its old path stale
+void redirect(ContactScratch &scratch, State &state, int p, const TimedPath &path, double t, const Eigen::Vector3d &v)
+{
+    Eigen::Vector3d x = path.position(t), vEnd = v;
+    const Eigen::Vector3d at = x;
+    // an impact at the sub-step's very end leaves a path of no length: it ends where it is, with
+    // the new velocity (a Hermite curve a few ulps long would read its velocity from rounding)
+    const double end = path.start + path.path.h;
+    if (end - t > 1e-9 * path.path.h)
+        path.path.goOn(t - path.start, v, x, vEnd);
+    else
+        t = end;
+    state.position.col(p) = x;
+    state.velocity.col(p) = vEnd;
+    int &segment = scratch.segmentOf[std::size_t(p)];
+    if (segment < 0) {
+        segment = int(scratch.segments.size());
+        scratch.segments.push_back(PathSegment{t, at, v});
+    } else {
+        scratch.segments[std::size_t(segment)] = PathSegment{t, at, v};
+    }
+    scratch.version[std::size_t(p)] += 1;
+}
+
 // one impact: both particles taken to its time along their paths, the impulse, then on to the
 // sub-step's end with the new velocities and the acceleration they had there
 void resolve(const Model &model, State &state, ContactScratch &scratch, const Impact &impact, double h)
 {
-    const auto goOn = [&](int p, const ParticlePath &path, const Eigen::Vector3d &v) {
-        Eigen::Vector3d x, vEnd;
-        path.goOn(impact.time, v, x, vEnd);
-        state.position.col(p) = x;
-        state.velocity.col(p) = vEnd;
-        scratch.impacted[std::size_t(p)] = 1;
-    };
     const int i = impact.i;
-    const ParticlePath a = pathOf(model, state, scratch, i, h);
+    const TimedPath a = pathOf(model, state, scratch, i, h);
     Eigen::Vector3d vi = a.velocity(impact.time);
     if (impact.j < 0) {
         const Collider &c = model.colliders[std::size_t(-1 - impact.j)];
@@ -223,19 +338,72 @@ void resolve(const Model &model, State &state, ContactScratch &scratch, const Im
         const double approach = -s.normal.dot(vi);
         Eigen::Vector3d still = Eigen::Vector3d::Zero();
         impulseAt(model, s.normal, c.friction, c.staticFriction, model.invMass[i], 0.0, vi, still);
-        if (a.shape != PathShape::Hermite)
+        if (a.path.shape != PathShape::Hermite)
             vi += (eulerRebound(model, s.normal, approach, impact.time, h) - s.normal.dot(vi)) * s.normal;
-        goOn(i, a, vi);
+        redirect(scratch, state, i, a, impact.time, vi);
         return;
     }
     const int j = impact.j;
-    const ParticlePath b = pathOf(model, state, scratch, j, h);
+    const TimedPath b = pathOf(model, state, scratch, j, h);
     Eigen::Vector3d vj = b.velocity(impact.time);
-    const Eigen::Vector3d normal = (a.position(impact.time) - b.position(impact.time)).normalized();
+    const Eigen::Vector3d d = a.position(impact.time) - b.position(impact.time);
+    const double distance = d.norm();
+    const Eigen::Vector3d normal = apart(distance) ? Eigen::Vector3d(d / distance) : coincidentAxis(i, j);
     impulseAt(model, normal, model.friction, model.staticFriction, model.invMass[i], model.invMass[j], vi, vj);
-    goOn(i, a, vi);
+    redirect(scratch, state, i, a, impact.time, vi);
     if (model.invMass[j] != 0.0)
-        goOn(j, b, vj);
+        redirect(scratch, state, j, b, impact.time, vj);
+}
+
+// whether particle p's new path still lies in the sphere the broad phase held its old one in, so
+// that its candidates are all it can meet
+bool withinItsSphere(const Model &model, const State &state, const ContactScratch &scratch, int p, double h)
+{
+    if (scratch.isFast[std::size_t(p)])
+        return true;  // checked against every particle
+    const TimedPath a = pathOf(model, state, scratch, p, h);
+    const double room = scratch.sweptRadius[p] - model.radius[p] - bulge(a.path);
+    const auto centre = scratch.sweptCentre.col(p);
+    return (a.path.x0 - centre).norm() <= room && (a.path.x1 - centre).norm() <= room;
+}
+
+// the impacts of particle p's new path from time t: with the colliders, and with its candidates
+void impactsOf(const Model &model, const State &state, ContactScratch &scratch, int p, double t, double h)
+{
+    if (model.invMass[p] == 0.0)
+        return;
+    if (model.plan.planeCollisions)
+        for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k)
+            colliderImpact(model, state, scratch, p, k, t, h);
+    if (!model.plan.particleCollisions)
+        return;
+    // a fast path, or one an impact sent out of its sphere in a scene small enough, is checked
+    // against every particle at once; in a large scene a stray waits for the next broad phase
+    const bool stray = !scratch.isFast[std::size_t(p)] && !withinItsSphere(model, state, scratch, p, h);
+    if (scratch.isFast[std::size_t(p)] || (stray && model.particleCount() <= kCheckAllBelow)) {
+        // (a sphere about p's new path first: most particles are nowhere near it)
+        const TimedPath a = pathOf(model, state, scratch, p, h);
+        const Eigen::Vector3d centre = 0.5 * (a.path.x0 + a.path.x1);
+        const double reach = model.radius[p] + 0.5 * (a.path.x1 - a.path.x0).norm() + bulge(a.path);
+        for (int q = 0; q < model.particleCount(); ++q) {
+            if (q == p)
+                continue;
+            // (a particle still on the path the broad phase swept is within its sphere)
+            if (!scratch.isFast[std::size_t(q)] && scratch.segmentOf[std::size_t(q)] < 0 &&
+                (scratch.sweptCentre.col(q) - centre).norm() > reach + scratch.sweptRadius[q])
+                continue;
+            pairImpact(model, state, scratch, std::min(p, q), std::max(p, q), t, h);
+        }
+    } else {
+        for (int e = scratch.candidateStart[std::size_t(p)]; e < scratch.candidateStart[std::size_t(p) + 1]; ++e) {
+            const int q = scratch.candidates[std::size_t(e)];
+            pairImpact(model, state, scratch, std::min(p, q), std::max(p, q), t, h);
+        }
+        if (stray && !scratch.isStray[std::size_t(p)]) {
+            scratch.isStray[std::size_t(p)] = 1;
+            scratch.strays.push_back(p);
+        }
+    }
 }
 
 }  // namespace
@@ -243,23 +411,57 @@ void resolve(const Model &model, State &state, ContactScratch &scratch, const Im
 void resolveImpacts(const Model &model, State &state, Workspace &work, double h)
 {
     ContactScratch &scratch = work.contactSolver;
+    const int n = model.particleCount();
     scratch.impacts.clear();
-    scratch.impacted.assign(std::size_t(model.particleCount()), 0);
+    scratch.segments.clear();
+    scratch.segmentOf.assign(std::size_t(n), -1);
+    scratch.version.assign(std::size_t(n), 0);
+    scratch.strays.clear();
+    scratch.isStray.assign(std::size_t(n), 0);
+    scratch.candidateStart.assign(std::size_t(n) + 1, 0);
+    scratch.candidates.clear();
+    scratch.isFast.assign(std::size_t(n), 0);
     if (model.plan.planeCollisions)
-        collidersAlongPaths(model, state, scratch, h);
+        for (int i : model.freeParticles)
+            for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k)
+                colliderImpact(model, state, scratch, i, k, 0.0, h);
     if (model.plan.particleCollisions && !stopsHere(work))
-        pairsAlongPaths(model, state, work, h);
+        impactsOfPairs(model, state, work, 0.0, h);
     if (stopsHere(work))
         return;
 
-    // in the order they happen; a particle takes part in one impact per sub-step, and any later
-    // meeting of its new path is left to the resting contacts
-    std::sort(scratch.impacts.begin(), scratch.impacts.end());
-    for (const Impact &impact : scratch.impacts) {
-        if (scratch.impacted[std::size_t(impact.i)] || (impact.j >= 0 && scratch.impacted[std::size_t(impact.j)]))
-            continue;
-        resolve(model, state, scratch, impact, h);
-        scratch.impactsResolved += 1;
+    // in the order they happen; each resolved impact searches the paths it changed again from its
+    // time, so the impulse passes on through whatever the particles touch
+    const auto later = [](const Impact &a, const Impact &b) { return b < a; };
+    const std::uint64_t most = kEventsPerParticle * std::uint64_t(std::max(n, 1));
+    std::uint64_t events = 0;
+    for (int round = 0;; ++round) {
+        while (!scratch.impacts.empty()) {
+            std::pop_heap(scratch.impacts.begin(), scratch.impacts.end(), later);
+            const Impact impact = scratch.impacts.back();
+            scratch.impacts.pop_back();
+            if (impact.versionI != scratch.version[std::size_t(impact.i)] ||
+                (impact.j >= 0 && impact.versionJ != scratch.version[std::size_t(impact.j)]))
+                continue;  // found on a path an earlier impact has changed
+            if (events == most) {
+                scratch.impactsLeft += 1;
+                continue;
+            }
+            resolve(model, state, scratch, impact, h);
+            scratch.impactsResolved += 1;
+            events += 1;
+            impactsOf(model, state, scratch, impact.i, impact.time, h);
+            if (impact.j >= 0)
+                impactsOf(model, state, scratch, impact.j, impact.time, h);
+        }
+        // paths sent out of their spheres: a broad phase over the paths as they now are, for the
+        // pairs they are in
+        if (scratch.strays.empty() || round + 1 == kBroadPhaseRounds || events == most || stopsHere(work))
+            break;
+        impactsOfPairs(model, state, work, 0.0, h);
+        for (int p : scratch.strays)
+            scratch.isStray[std::size_t(p)] = 0;
+        scratch.strays.clear();
     }
 }
 

@@ -48,6 +48,10 @@ struct Impact {
     double time = 0.0;  // s since the sub-step began
     int i = 0;
     int j = 0;  // as Contact::j
+    // the particles' path versions it was found on (ContactScratch::version): an impact found on a
+    // path that a later impact has changed is stale
+    std::uint32_t versionI = 0;
+    std::uint32_t versionJ = 0;
 
     bool operator<(const Impact &other) const
     {
@@ -59,6 +63,13 @@ struct Impact {
     }
 };
 
+// where a particle's path through the rest of the sub-step begins, once an impact has changed it
+struct PathSegment {
+    double time = 0.0;                                  // s since the sub-step began
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, at that time
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s, just after the impact
+};
+
 struct ContactScratch {
     Eigen::Matrix3Xd startPosition;  // m, at the sub-step's start
     Eigen::Matrix3Xd startVelocity;  // m/s
@@ -67,8 +78,21 @@ struct ContactScratch {
     std::vector<int> fast;               // the particles that move too far for the grid this sub-step
     std::vector<std::uint8_t> isFast;    // per particle
 
+    // the impacts to resolve, a heap ordered by time (earliest on top)
     std::vector<Impact> impacts;
-    std::vector<std::uint8_t> impacted;  // per particle: it took part in an impact this sub-step
+    // per particle: the segment its path now starts with (-1: the integrator's whole path), and how
+    // often an impact has changed its path in this sub-step
+    std::vector<int> segmentOf;
+    std::vector<PathSegment> segments;
+    std::vector<std::uint32_t> version;
+    // the candidate pairs of the last broad phase as adjacency lists: p's are
+    // candidates[candidateStart[p] .. candidateStart[p + 1])
+    std::vector<int> candidateStart;
+    std::vector<int> candidates;
+    // particles whose path an impact took out of the sphere the broad phase held it in: their
+    // candidates are found again once the impacts in hand are resolved
+    std::vector<int> strays;
+    std::vector<std::uint8_t> isStray;
 
     double drift = 0.0;  // s: β h, how far the velocity solve's changes move the sub-step's end, per m/s
 
@@ -83,6 +107,9 @@ struct ContactScratch {
     std::vector<int> levelStart;  // counting sort of the contacts by level
 
     std::uint64_t impactsResolved = 0;  // impacts resolved so far, for the tests
+    // impacts left to the resting contacts because a sub-step met more than kMaxImpactEvents (a
+    // jammed elastic crowd): counted so that a run can say so
+    std::uint64_t impactsLeft = 0;
 };
 
 }  // namespace core

@@ -41,7 +41,9 @@ void reserve(const Model &model, ContactScratch &scratch)
     scratch.neighbourStart.reserve(n + 1);
     scratch.level.reserve(n);
     scratch.queue.reserve(n);
-    scratch.impacted.reserve(n);
+    scratch.segmentOf.reserve(n);
+    scratch.version.reserve(n);
+    scratch.isStray.reserve(n);
     scratch.isFast.reserve(n);
     scratch.fast.reserve(n);
 }
