@@ -48,7 +48,7 @@ QString encodingProblem(QByteArrayView bytes)
 
     // JSON text never holds a zero byte (one in a string is written \u0000): a binary file, or a
     // device such as /dev/zero
-    if (const void *zero = std::memchr(bytes.data(), 0, std::size_t(bytes.size())))
+    if (const void *zero = bytes.isEmpty() ? nullptr : std::memchr(bytes.data(), 0, std::size_t(bytes.size())))
         return u"not a text file (byte %1 is a zero byte): a Springlab file is JSON text in UTF-8"_s.arg(
             static_cast<const char *>(zero) - bytes.data());
     return {};

@@ -227,6 +227,11 @@ void TestSimSameFile::renderFramesNeverReplaceTheScene()
     // --render DIR removes DIR/frame-*.png and writes new ones: a scene or an output among them
     // would be lost. The refusal comes before any drawing, but --render needs an X display to
     // start at all (xvfb-run -a); without one the case is skipped
+#if defined(__SANITIZE_ADDRESS__)
+    // (under LeakSanitizer the X client library's connection, which Qt never frees, is reported
+    // when the refused program exits, and turns its exit code 2 into 1)
+    QSKIP("--render opens an X connection that LeakSanitizer reports at exit");
+#endif
     QVERIFY(QDir(m_dir->path()).mkdir(u"frames"_s));
     const QString frames = path(u"frames"_s);
     const QString sceneAsFrame = path(u"frames/frame-00000.png"_s);
