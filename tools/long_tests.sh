@@ -12,9 +12,10 @@
 #    the editor's included, so that the clone a CPU without AVX-512 runs gives the same bits (a
 #    machine with AVX-512 picks that clone; tools/dev.sh test runs only the core's tests there).
 # 4. The scene loader fuzzed for an hour.
-# 5. The contact invariants on 10⁵ random scenes without gravity, and on 10⁴ with gravity, resting
-#    contacts and the handout's passes (known to fail: issue of the resting solve, see
-#    tests/core/test_contact_invariants.cpp); the second is reported, not required.
+# 5. The contact invariants on 10⁵ random scenes without gravity and 10⁴ with it (energy, momentum,
+#    colliders), and on 10⁴ with every invariant and the handout's passes (known to fail: a few
+#    overlaps where a cluster meets the impact cap, and the handout's pass gains energy by design;
+#    see tests/core/test_contact_invariants.cpp); the last is reported, not required.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -46,5 +47,6 @@ ctest --test-dir build/avx2 --output-on-failure -j 2 -L unit
 bash tools/fuzz.sh 3600
 
 SPRINGLAB_INVARIANT_SCENES=100000 build/ci/tests/core/test_contact_invariants impactsKeepTheInvariants
+SPRINGLAB_INVARIANT_SCENES=10000 build/ci/tests/core/test_contact_invariants underGravityKeepTheEnergy
 SPRINGLAB_INVARIANT_GRAVITY=1 SPRINGLAB_INVARIANT_SCENES=10000 \
   build/ci/tests/core/test_contact_invariants underGravityKeepTheInvariants || true

@@ -240,9 +240,11 @@ std::shared_ptr<const ui::SessionRecording> recordAfterABreak(ui::SimulationRunn
     runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Replace});
     runner.apply(ui::Play{});
     const double h = scene->settings.timeStep;
-    for (int tick = 0; tick < 2000 && runner.state().breaks.empty(); ++tick)
+    // after the first break, and at a step where a contact carries an impulse to the next (the
+    // ball on the floor: at a step where it bounces there is none to carry)
+    for (int tick = 0; tick < 2000 && (runner.state().breaks.empty() || runner.state().contactImpulses.empty()); ++tick)
         runner.advance(h, kNoBudgetLimit);
-    if (runner.state().breaks.empty())
+    if (runner.state().breaks.empty() || runner.state().contactImpulses.empty())
         return nullptr;
     runner.apply(ui::StartRecording{});
     const std::uint64_t from = runner.stepsTaken();
