@@ -234,10 +234,14 @@ void TestPlotsWidget::everyStepIsPlottedHoweverFewTheFrames()
     QVERIFY(loaded);
     worker.setFrameInterval(3600.0);
     worker.play();
+    const int framesBefore = frames;
     std::shared_ptr<const ui::SimulationFrame> frame = settledFrame(worker);
+    int syncs = 1;
     while (frame && frame->snapshot->step < 100) {
-        QTest::qWait(100);  // room for the worker's ticks: it steps, and shows nothing
+        // the worker's ticks meanwhile: it steps, and shows no frame it was not asked for
+        QVERIFY(!QTest::qWaitFor([&] { return frames - framesBefore > syncs; }, 100));
         frame = settledFrame(worker);
+        ++syncs;
     }
     QVERIFY(frame);
     frame = test::frameAfter(worker, worker.pause());
