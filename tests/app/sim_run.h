@@ -3,6 +3,7 @@
 // the test's CMake target) and reading back the files it wrote.
 
 #include "program_run.h"
+#include "../test_files.h"
 
 #include <QByteArray>
 #include <QFile>
@@ -17,13 +18,6 @@ namespace test {
 inline ProgramRun sim(const QStringList &arguments)
 {
     return runProgram(QStringLiteral(SPRINGLAB_SIM), arguments, 120000);
-}
-
-// a file's bytes, or none when it cannot be read
-inline QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
 // a JSON file's top-level object (empty when it is not one)

@@ -3,6 +3,7 @@
 // shipped in resources/scenes/reference/. The figures of a quick run are not checked: it is a
 // smoke test, and its timings are single runs.
 
+#include "tests/test_files.h"
 #include "bench/work_precision_plot.h"
 #include "core/io/scene_file.h"
 
@@ -22,6 +23,8 @@ using namespace Qt::Literals::StringLiterals;
 
 namespace {
 
+using test::readAll;
+
 const QStringList kProblems{u"oscillator"_s, u"bounce"_s, u"head-on"_s, u"chain"_s, u"cloth"_s};
 const QStringList kIntegrators{u"symplectic-euler"_s, u"explicit-euler"_s, u"velocity-verlet"_s,
                                u"rk4"_s,              u"implicit-euler"_s, u"adaptive-rk45"_s, u"xpbd"_s};
@@ -29,12 +32,6 @@ const QStringList kIntegrators{u"symplectic-euler"_s, u"explicit-euler"_s, u"vel
 using Run = test::ProgramRun;
 
 using test::runBench;
-
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
 
 // a positive, finite number
 bool positive(const QByteArray &text)

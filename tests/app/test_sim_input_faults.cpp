@@ -9,6 +9,8 @@
 #include "sim_run.h"
 #include "session/session_file.h"
 #include "session/session_recording.h"
+#include "tests/spring_pair.h"
+#include "tests/test_files.h"
 
 #include <QDir>
 #include <QFile>
@@ -22,7 +24,9 @@ using namespace Qt::Literals::StringLiterals;
 
 namespace {
 
+using test::encoded;
 using test::sim;
+using test::writeAll;
 
 using Run = test::ProgramRun;
 
@@ -39,47 +43,6 @@ Run simWithin(int kib, const QStringList &arguments)
 QString said(const Run &run)
 {
     return u"exit %1: %2"_s.arg(run.exitCode).arg(QString::fromUtf8(run.err));
-}
-
-bool writeAll(const QString &path, const QByteArray &bytes)
-{
-    QFile file(path);
-    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size() && file.flush();
-}
-
-// two particles on a spring over a floor
-core::SceneDesc pairScene()
-{
-    core::SceneDesc scene;
-    scene.name = "pair";
-    core::ParticleDesc particle;
-    particle.position = {0.0, 1.0, 0.0};
-    scene.particles.push_back(particle);
-    particle.position = {0.5, 1.2, 0.0};
-    scene.particles.push_back(particle);
-    scene.springs.push_back({0, 1, 100.0, 0.5, 0.5});
-    scene.planes.push_back({{0.0, 1.0, 0.0}, 0.0});
-    return scene;
-}
-
-// the scene played for 20 steps from its initial state, with the hash its replay ends with
-ui::SessionRecording pairRecording()
-{
-    ui::SessionRecording recording;
-    const core::SceneDesc scene = pairScene();
-    recording.scene = std::make_shared<const core::SceneDesc>(scene);
-    recording.start = core::makeState(*core::compileModel(scene), scene);
-    recording.entries.push_back({0, ui::Play{}});
-    recording.steps = 20;
-    recording.finalHash = ui::replay(recording).hash;
-    return recording;
-}
-
-// the text in another encoding
-QByteArray encoded(const QByteArray &utf8, QStringConverter::Encoding encoding, bool mark)
-{
-    QStringEncoder encoder(encoding, mark ? QStringConverter::Flag::WriteBom : QStringConverter::Flag::Default);
-    return encoder.encode(QString::fromUtf8(utf8));
 }
 
 // a particle as a scene file holds it, one to a line
@@ -154,8 +117,8 @@ void TestSimInputFaults::initTestCase()
 {
     QVERIFY(QFileInfo(QStringLiteral(SPRINGLAB_SIM)).isExecutable());
     QVERIFY(m_dir.isValid());
-    QVERIFY(io::saveScene(path(u"pair.json"_s), pairScene()).ok());
-    QCOMPARE(ui::saveRecording(path(u"pair.replay.json"_s), pairRecording()), QString());
+    QVERIFY(io::saveScene(path(u"pair.json"_s), test::springPairScene()).ok());
+    QCOMPARE(ui::saveRecording(path(u"pair.replay.json"_s), test::playedRecording(test::springPairScene(), 20)), QString());
 }
 
 void TestSimInputFaults::endlessDeviceIsRefused_data()

@@ -12,6 +12,8 @@
 #include "core/model/state.h"
 #include "session/session_file.h"
 #include "tests/address_space_cap.h"
+#include "tests/spring_pair.h"
+#include "tests/test_files.h"
 
 #include <QDir>
 #include <QFile>
@@ -33,31 +35,9 @@ using namespace Qt::Literals::StringLiterals;
 
 namespace {
 
-// two particles on a spring, over a floor
-core::SceneDesc smallScene()
-{
-    core::SceneDesc scene;
-    scene.name = "pair";
-    core::ParticleDesc particle;
-    particle.position = {0.0, 1.0, 0.0};
-    scene.particles.push_back(particle);
-    particle.position = {0.5, 1.0, -0.0};
-    scene.particles.push_back(particle);
-    scene.springs.push_back({0, 1, 100.0, 0.5, 0.5});
-    scene.planes.push_back({{0.0, 1.0, 0.0}, 0.0});
-    return scene;
-}
-
-// a recording of the scene from its initial state: played for 10 steps
-ui::SessionRecording recordingOf(const core::SceneDesc &scene)
-{
-    ui::SessionRecording recording;
-    recording.scene = std::make_shared<const core::SceneDesc>(scene);
-    recording.start = core::makeState(*core::compileModel(scene), scene);
-    recording.entries.push_back({0, ui::Play{}});
-    recording.steps = 10;
-    return recording;
-}
+using test::encoded;
+using test::readAll;
+using test::writeAll;
 
 // a scene of many particles, its text over the 16 MiB past which a syntax error's place is the
 // reader's own rather than QJsonDocument's
@@ -70,25 +50,6 @@ QByteArray largeSceneText(int particles)
     json += R"({"position": [0, 0, 0], "mass": 1, "radius": 0.1}], "springs": [], "planes": []})"
             "\n";
     return json;
-}
-
-bool writeAll(const QString &path, const QByteArray &bytes)
-{
-    QFile file(path);
-    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size() && file.flush();
-}
-
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-// the text in another encoding, with or without its byte order mark
-QByteArray encoded(const QByteArray &utf8, QStringConverter::Encoding encoding, bool mark)
-{
-    QStringEncoder encoder(encoding, mark ? QStringConverter::Flag::WriteBom : QStringConverter::Flag::Default);
-    return encoder.encode(QString::fromUtf8(utf8));
 }
 
 // whether the process has no limit a shell's ulimit could set on its memory
@@ -172,9 +133,9 @@ void TestLoadMessages::otherEncodingsAreNamed()
     QFETCH(bool, mark);
     QFETCH(QString, reason);
     const auto as = static_cast<QStringConverter::Encoding>(encoding);
-    const core::SceneDesc scene = smallScene();
+    const core::SceneDesc scene = test::springPairScene();
     const QByteArray sceneText = encoded(io::sceneToJson(scene), as, mark);
-    const QByteArray recordingText = encoded(ui::recordingToJson(recordingOf(scene)), as, mark);
+    const QByteArray recordingText = encoded(ui::recordingToJson(test::playedRecording(scene, 10)), as, mark);
 
     // from memory: Qt's "illegal value at byte 1" was all it said
     QCOMPARE(io::parseScene(sceneText, u"s.json"_s).error, u"s.json: "_s + reason);
@@ -194,13 +155,13 @@ void TestLoadMessages::otherEncodingsAreNamed()
 void TestLoadMessages::utf8ByteOrderMarkIsRead()
 {
     // UTF-8 with a byte order mark is UTF-8: both kinds of file read as without it
-    const core::SceneDesc scene = smallScene();
+    const core::SceneDesc scene = test::springPairScene();
     const QByteArray mark = "\xEF\xBB\xBF";
     const io::LoadResult loaded = io::parseScene(mark + io::sceneToJson(scene), u"s.json"_s);
     QVERIFY2(loaded.ok(), qPrintable(loaded.error));
     QVERIFY(*loaded.scene == scene);
 
-    const ui::SessionRecording recording = recordingOf(scene);
+    const ui::SessionRecording recording = test::playedRecording(scene, 10);
     const ui::RecordingLoad read = ui::parseRecording(mark + ui::recordingToJson(recording), u"r.json"_s);
     QVERIFY2(read.recording, qPrintable(read.error));
     QVERIFY(*read.recording->scene == scene);
@@ -218,9 +179,9 @@ void TestLoadMessages::zeroByteIsNotText_data()
 void TestLoadMessages::zeroByteIsNotText()
 {
     QFETCH(int, at);
-    const core::SceneDesc scene = smallScene();
+    const core::SceneDesc scene = test::springPairScene();
     QByteArray sceneText = io::sceneToJson(scene);
-    QByteArray recordingText = ui::recordingToJson(recordingOf(scene));
+    QByteArray recordingText = ui::recordingToJson(test::playedRecording(scene, 10));
     const qsizetype sceneOffset = at >= 0 ? at : sceneText.size() + at;
     const qsizetype recordingOffset = at >= 0 ? at : recordingText.size() + at;
     sceneText[sceneOffset] = '\0';
@@ -279,7 +240,7 @@ void TestLoadMessages::largeCutRecordingEndsTooEarly()
     scene.particles.resize(200000);
     for (std::size_t i = 0; i < scene.particles.size(); ++i)
         scene.particles[i].position = {0.001 * double(i), 1.0 + 1e-7 * double(i), -0.5};
-    const QByteArray whole = ui::recordingToJson(recordingOf(scene));
+    const QByteArray whole = ui::recordingToJson(test::playedRecording(scene, 10));
     QVERIFY(whole.size() > (qsizetype(16) << 20));
     const QString error = ui::parseRecording(whole.left(whole.indexOf("\"start\"") / 2), u"r.json"_s).error;
     QVERIFY2(error.startsWith(u"r.json: scene: "_s + kTooEarly), qPrintable(error));
@@ -301,7 +262,7 @@ void TestLoadMessages::recordingKeysAndEscapesAreCheckedAsAScenes()
 {
     // which of two values was meant cannot be known, and half a UTF-16 pair is no character: a
     // recording is refused for either, in a scene file's words
-    const QByteArray good = ui::recordingToJson(recordingOf(smallScene()));
+    const QByteArray good = ui::recordingToJson(test::playedRecording(test::springPairScene(), 10));
     QVERIFY(ui::parseRecording(good, u"r.json"_s).recording);
     const QString twice = ui::parseRecording(QByteArray(good).replace("\"steps\": 10", "\"steps\": 10, \"steps\": 11"),
                                              u"r.json"_s)
@@ -368,7 +329,7 @@ void TestLoadMessages::outOfMemoryNamesTheProcessLimit()
     {
         const io::LoadResult loaded = io::parseScene(sceneText, u"big.json"_s);
         QVERIFY2(loaded.ok(), qPrintable(loaded.error));
-        QVERIFY(writeAll(recordingPath, ui::recordingToJson(recordingOf(*loaded.scene))));
+        QVERIFY(writeAll(recordingPath, ui::recordingToJson(test::playedRecording(*loaded.scene, 10))));
     }
     const QByteArray recordingText = readAll(recordingPath);
     QVERIFY(!recordingText.isEmpty());

@@ -6,6 +6,7 @@
 // atomic; files past a size, count or nesting limit are refused with the limit named, files at
 // the limits load.
 
+#include "tests/test_files.h"
 #include "core/contacts/colliders.h"
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
@@ -28,6 +29,9 @@
 using namespace Qt::Literals::StringLiterals;
 
 namespace {
+
+using test::readAll;
+using test::writeAll;
 
 // a small valid scene that the bad-file cases each break in one place
 const QByteArray kBase = R"({
@@ -241,12 +245,6 @@ QStringList exampleFiles()
     return files;
 }
 
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
 // kBase with an unknown key whose value brings the document to `depth` arrays and objects open at
 // once (the top-level object is the first)
 QByteArray nestedTo(int depth)
@@ -263,12 +261,6 @@ io::LoadLimits limitsWith(qint64 fileBytes, qsizetype particles, qsizetype sprin
     limits.springs = springs;
     limits.planes = planes;
     return limits;
-}
-
-bool writeAll(const QString &path, const QByteArray &data)
-{
-    QFile file(path);
-    return file.open(QIODevice::WriteOnly) && file.write(data) == data.size();
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // Each load runs in a process of its own (load_peak), whose peak resident memory (VmHWM) is the
 // load's.
 
+#include "tests/test_files.h"
 #include "core/io/scene_file.h"
 
 #include <QFile>
@@ -15,6 +16,8 @@
 using namespace Qt::Literals::StringLiterals;
 
 namespace {
+
+using test::writeAll;
 
 struct Peak {
     double rssKib = 0.0;   // before loading
@@ -45,12 +48,6 @@ constexpr bool kSanitized = true;
 #else
 constexpr bool kSanitized = false;
 #endif
-
-bool writeAll(const QString &path, const QByteArray &bytes)
-{
-    QFile file(path);
-    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size() && file.flush();
-}
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 // and undoes back; no save writes over the scene's file or a recovery file under another name. Questions are answered by a function, never a modal dialog; waits are on
 // frames or files, never fixed sleeps.
 
+#include "tests/test_files.h"
 #include "ui/document/autosave.h"
 #include "ui/dialogs/help_dialog.h"
 #include "ui/document/document_files.h"
@@ -41,6 +42,8 @@
 #include <unistd.h>
 
 namespace {
+
+using test::readAll;
 
 using test::settledFrame;
 
@@ -113,12 +116,6 @@ private:
     bool m_set = false;
     void (*m_oldHandler)(int) = SIG_DFL;
 };
-
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
 
 }  // namespace
 
