@@ -374,11 +374,10 @@ void resolve(const Model &model, State &state, ContactScratch &scratch, const Im
 
 // whether particle p's new path still lies in the sphere the broad phase held its old one in, so
 // that its candidates are all it can meet
-bool withinItsSphere(const Model &model, const State &state, const ContactScratch &scratch, int p, double h)
+bool withinItsSphere(const Model &model, const ContactScratch &scratch, int p, const TimedPath &a)
 {
     if (scratch.isFast[std::size_t(p)])
         return true;  // checked against every particle
-    const TimedPath a = pathOf(model, state, scratch, p, h);
     const double room = scratch.sweptRadius[p] - model.radius[p] - bulge(a.path);
     const auto centre = scratch.sweptCentre.col(p);
     return (a.path.x0 - centre).norm() <= room && (a.path.x1 - centre).norm() <= room;
@@ -396,10 +395,10 @@ void impactsOf(const Model &model, const State &state, ContactScratch &scratch, 
         return;
     // a fast path, or one an impact sent out of its sphere in a scene small enough, is checked
     // against every particle at once; in a large scene a stray waits for the next broad phase
-    const bool stray = !scratch.isFast[std::size_t(p)] && !withinItsSphere(model, state, scratch, p, h);
+    const TimedPath a = pathOf(model, state, scratch, p, h);
+    const bool stray = !scratch.isFast[std::size_t(p)] && !withinItsSphere(model, scratch, p, a);
     if (scratch.isFast[std::size_t(p)] || (stray && model.particleCount() <= kCheckAllBelow)) {
         // (a sphere about p's new path first: most particles are nowhere near it)
-        const TimedPath a = pathOf(model, state, scratch, p, h);
         const Eigen::Vector3d centre = 0.5 * (a.path.x0 + a.path.x1);
         const double reach = model.radius[p] + 0.5 * (a.path.x1 - a.path.x0).norm() + bulge(a.path);
         for (int q = 0; q < model.particleCount(); ++q) {

@@ -38,7 +38,6 @@ struct Contact {
     Weights shockWeights;  // in their last: the side nearer the ground stands still
     bool deferred = false;  // a near miss closing faster than a resting contact
     bool bounce = false;    // overlapping and closing faster than a resting contact: an impact
-    double restitution = 0.0;  // a bounce's e: after the compression it gets e times its impulse again
     bool stuck = false;  // the position solve held it in place along its surface
 
     bool withCollider() const { return j < 0; }

@@ -88,7 +88,6 @@ void gather(const Model &model, State &state, Workspace &work, double h)
         // A bounce is solved in two phases (solveVelocities): its compression, to no closing speed,
         // with every other contact, and then e times the compression's impulse again (Poisson's rule)
         c.bounce = gap <= 0.0 && fast;
-        c.restitution = c.bounce ? model.restitution : 0.0;
         c.drift = c.bounce ? 0.0 : scratch.drift;
         c.targetSpeed = c.bounce ? 0.0 : restingTarget(approach, gap, c.drift, h);
         scratch.contacts.push_back(c);
@@ -328,12 +327,14 @@ void keepImpulses(State &state, const ContactScratch &scratch)
 // Newton's rule inside the iterations (a target of −e times the approach) gained energy wherever
 // a ball had two bounces at once: a row pushed through itself by a striker took a random scene
 // without gravity from 983 J to 6000 J in five steps
-void rebound(State &state, ContactScratch &scratch)
+void rebound(State &state, ContactScratch &scratch, double restitution)
 {
+    if (!(restitution > 0.0))
+        return;
     for (Contact &c : scratch.contacts) {
-        if (!c.bounce || !(c.restitution > 0.0) || !(c.normalImpulse > 0.0))
+        if (!c.bounce || !(c.normalImpulse > 0.0))
             continue;
-        const double extra = c.restitution * c.normalImpulse;
+        const double extra = restitution * c.normalImpulse;
         applyImpulse(state, c, weights(c, false), extra * c.normal);
         c.normalImpulse += extra;
     }
@@ -341,7 +342,7 @@ void rebound(State &state, ContactScratch &scratch)
 
 // sequential impulses: the normal impulse towards the target speed, then friction within the cone;
 // then the bounces' restitution
-void solveVelocities(State &state, ContactScratch &scratch)
+void solveVelocities(State &state, ContactScratch &scratch, double restitution)
 {
     warmStart(state, scratch);
     for (int iteration = 0; iteration < kVelocityIterations; ++iteration) {
@@ -366,7 +367,7 @@ void solveVelocities(State &state, ContactScratch &scratch)
             c.frictionImpulse = accumulated;
         }
     }
-    rebound(state, scratch);
+    rebound(state, scratch, restitution);
 }
 
 // how far i lies into the surface of the contact's other side, along the current normal
@@ -482,7 +483,7 @@ void solveRestingContacts(const Model &model, State &state, Workspace &work, dou
     setWeights(model, scratch);
     if (stopsHere(work))
         return;
-    solveVelocities(state, scratch);
+    solveVelocities(state, scratch, model.restitution);
     keepImpulses(state, scratch);
     if (stopsHere(work))
         return;
