@@ -397,7 +397,12 @@ void impactsOf(const Model &model, const State &state, ContactScratch &scratch, 
     // against every particle at once; in a large scene a stray waits for the next broad phase
     const TimedPath a = pathOf(model, state, scratch, p, h);
     const bool stray = !scratch.isFast[std::size_t(p)] && !withinItsSphere(model, scratch, p, a);
-    if (scratch.isFast[std::size_t(p)] || (stray && model.particleCount() <= kCheckAllBelow)) {
+    const bool small = model.particleCount() <= kCheckAllBelow;
+    if (scratch.isFast[std::size_t(p)] || (stray && small)) {
+        // a stray is no longer in the candidates of those it may now meet: marked, so that their
+        // later new paths are checked against it too
+        if (stray)
+            scratch.isStray[std::size_t(p)] = 1;
         // (a sphere about p's new path first: most particles are nowhere near it)
         const Eigen::Vector3d centre = 0.5 * (a.path.x0 + a.path.x1);
         const double reach = model.radius[p] + 0.5 * (a.path.x1 - a.path.x0).norm() + bulge(a.path);
@@ -415,6 +420,19 @@ void impactsOf(const Model &model, const State &state, ContactScratch &scratch, 
             const int q = scratch.candidates[std::size_t(e)];
             pairImpact(model, state, scratch, std::min(p, q), std::max(p, q), t, h);
         }
+        // a fast particle is out of the grid, so in no one's candidates: its impact with p, found
+        // on p's old path, is stale now and must be looked for again on the new one (a ball at
+        // 95 m/s passed through the one ahead of it once that one's path changed)
+        for (int q : scratch.fast)
+            if (q != p)
+                pairImpact(model, state, scratch, std::min(p, q), std::max(p, q), t, h);
+        // and likewise the strays of a small scene (in a large one the next broad phase finds
+        // them): a ball squeezed out of its sphere by one neighbour met another whose new path
+        // stayed in its own, and they passed through each other
+        if (small)
+            for (int q = 0; q < model.particleCount(); ++q)
+                if (q != p && scratch.isStray[std::size_t(q)])
+                    pairImpact(model, state, scratch, std::min(p, q), std::max(p, q), t, h);
         if (stray && !scratch.isStray[std::size_t(p)]) {
             scratch.isStray[std::size_t(p)] = 1;
             scratch.strays.push_back(p);
