@@ -14,7 +14,7 @@
 # 4. The scene loader fuzzed for an hour.
 # 5. The contact invariants on 10⁵ random scenes without gravity and 10⁴ with it (energy, momentum,
 #    colliders), and on 10⁴ with every invariant and the handout's passes (known to fail: a few
-#    overlaps where a cluster meets the impact cap, and the handout's pass gains energy by design;
+#    swap in an elastic row struck at 155 m/s, and the handout's pass gains energy;
 #    see tests/core/test_contact_invariants.cpp); the last is reported, not required.
 set -euo pipefail
 cd "$(dirname "$0")/.."

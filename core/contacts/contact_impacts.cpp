@@ -26,7 +26,9 @@ namespace {
 
 constexpr double kFast = 4.0;  // radii moved in a sub-step past which a particle is fast (out of the grid)
 constexpr int kBroadPhaseRounds = 3;  // broad phases a sub-step, for paths that impacts sent astray
-constexpr std::uint64_t kEventsPerParticle = 64;  // impacts a sub-step, per particle, at the most
+// impacts a sub-step a particle has before its next is a jam (resolveJam); and, times the particle
+// count, the most a sub-step resolves
+constexpr std::uint64_t kEventsPerParticle = 64;
 constexpr int kCheckAllBelow = 256;  // particles up to which a stray path is checked against all at once
 
 // a particle's path from the start of its current segment: the integrator's whole path, or the rest
@@ -440,6 +442,106 @@ void impactsOf(const Model &model, const State &state, ContactScratch &scratch, 
     }
 }
 
+// the particles p can meet from time t: its candidates and the fast ones, or every particle in a
+// small scene or when p is fast or a stray
+template <typename Visit>
+void forEachNear(const Model &model, const ContactScratch &scratch, int p, const Visit &visit)
+{
+    if (scratch.isFast[std::size_t(p)] || scratch.isStray[std::size_t(p)] || model.particleCount() <= kCheckAllBelow) {
+        for (int q = 0; q < model.particleCount(); ++q)
+            if (q != p)
+                visit(q);
+        return;
+    }
+    for (int e = scratch.candidateStart[std::size_t(p)]; e < scratch.candidateStart[std::size_t(p) + 1]; ++e)
+        visit(scratch.candidates[std::size_t(e)]);
+    for (int q : scratch.fast)
+        if (q != p)
+            visit(q);
+}
+
+// a jam: an impact of a particle that has had kEventsPerParticle already this sub-step (a row
+// crushed between a heavy ball and a wall, where each two-body impact leaves the next pair closing
+// and the impacts would go on without end). Rigid impact zones (Bridson, Fedkiw and Anderson 2002)
+// end it: the impact's particles and every particle touching one of them and closing on it at that
+// moment go on as one from it, at their mass-weighted mean velocity (momentum kept, kinetic
+// energy never gained; still if a member is pinned); where a member touches a collider the zone
+// rebounds from it as one body, at e times its approach (so its kinetic energy at most e² times
+// what it had); the zone grows until nothing touching closes on it. Nothing in it can then pass
+// through anything else in it; what it meets later is found as any other impact
+void resolveJam(const Model &model, State &state, ContactScratch &scratch, const Impact &impact, double h)
+{
+    const double t = impact.time;
+    std::vector<int> &members = scratch.zoneMembers;
+    std::vector<std::uint8_t> &inZone = scratch.inZone;
+    members.assign({impact.i});
+    inZone.assign(std::size_t(model.particleCount()), 0);
+    inZone[std::size_t(impact.i)] = 1;
+    if (impact.j >= 0 && model.invMass[impact.j] != 0.0) {
+        members.push_back(impact.j);
+        inZone[std::size_t(impact.j)] = 1;
+    }
+    bool pinned = impact.j >= 0 && model.invMass[impact.j] == 0.0;
+    const auto touches = [&](const Eigen::Vector3d &d, double contact) { return d.norm() <= contact * (1.0 + 1e-6); };
+    Eigen::Vector3d v = Eigen::Vector3d::Zero();
+    for (std::size_t grown = 0; grown <= std::size_t(model.particleCount()); ++grown) {
+        // the zone's velocity: its momentum over its mass, less its approach to the colliders
+        double mass = 0.0;
+        Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+        for (int p : members) {
+            const double m = 1.0 / model.invMass[p];
+            momentum += m * pathOf(model, state, scratch, p, h).velocity(t);
+            mass += m;
+        }
+        v = pinned ? Eigen::Vector3d::Zero() : Eigen::Vector3d(momentum / mass);
+        if (model.plan.planeCollisions)
+            for (int pass = 0; pass < 2; ++pass)
+                for (int p : members) {
+                    const Eigen::Vector3d x = pathOf(model, state, scratch, p, h).position(t);
+                    for (const Collider &c : model.colliders) {
+                        const Separation s = separation(c, x, sideOf(c, scratch.startPosition.col(p)));
+                        const double approach = s.normal.dot(v);
+                        if (!(s.distance <= model.radius[p] * (1.0 + 1e-6) && approach < 0.0))
+                            continue;
+                        // a zone struck into a collider rebounds from it as one body, with e
+                        const bool bounces = -approach > restingThreshold(model, s.normal);
+                        v -= (bounces ? 1.0 + model.restitution : 1.0) * approach * s.normal;
+                    }
+                }
+        // the particles touching a member and closing on the zone join it
+        bool joined = false;
+        if (model.plan.particleCollisions)
+            for (std::size_t k = 0; k < members.size(); ++k) {
+                const int p = members[k];
+                const Eigen::Vector3d x = pathOf(model, state, scratch, p, h).position(t);
+                forEachNear(model, scratch, p, [&](int q) {
+                    if (inZone[std::size_t(q)])
+                        return;
+                    const TimedPath b = pathOf(model, state, scratch, q, h);
+                    const Eigen::Vector3d d = x - b.position(t);
+                    if (!touches(d, model.radius[p] + model.radius[q]))
+                        return;
+                    const double distance = d.norm();
+                    const Eigen::Vector3d normal = apart(distance) ? Eigen::Vector3d(d / distance) : coincidentAxis(p, q);
+                    if (-normal.dot(v - b.velocity(t)) <= touchingThreshold(model))
+                        return;
+                    inZone[std::size_t(q)] = 1;
+                    if (model.invMass[q] == 0.0) {
+                        pinned = true;
+                        return;
+                    }
+                    members.push_back(q);
+                    joined = true;
+                });
+            }
+        if (!joined && !(pinned && !v.isZero()))
+            break;
+    }
+    for (int p : members)
+        redirect(scratch, state, p, pathOf(model, state, scratch, p, h), t, v);
+    scratch.zonesMade += 1;
+}
+
 }  // namespace
 
 void resolveImpacts(const Model &model, State &state, Workspace &work, double h)
@@ -481,9 +583,19 @@ void resolveImpacts(const Model &model, State &state, Workspace &work, double h)
                 scratch.impactsLeft += 1;
                 continue;
             }
+            const bool jammed = scratch.version[std::size_t(impact.i)] >= kEventsPerParticle ||
+                                (impact.j >= 0 && scratch.version[std::size_t(impact.j)] >= kEventsPerParticle);
+            events += 1;
+            if (jammed) {
+                resolveJam(model, state, scratch, impact, h);
+                // (copied: impactsOf may not be handed the list it is filling)
+                scratch.zoneQueue.assign(scratch.zoneMembers.begin(), scratch.zoneMembers.end());
+                for (int p : scratch.zoneQueue)
+                    impactsOf(model, state, scratch, p, impact.time, h);
+                continue;
+            }
             resolve(model, state, scratch, impact, h);
             scratch.impactsResolved += 1;
-            events += 1;
             impactsOf(model, state, scratch, impact.i, impact.time, h);
             if (impact.j >= 0)
                 impactsOf(model, state, scratch, impact.j, impact.time, h);

@@ -106,11 +106,20 @@ struct ContactScratch {
     std::vector<int> level;  // per particle: contacts between it and the ground, by breadth-first search
     std::vector<int> queue;
     std::vector<int> levelStart;  // counting sort of the contacts by level
+    // the fail-safe's impact zones (contact_solve.cpp, stopClosingContacts): per particle, its zone
+    // (union-find), and per zone its momentum and mass
+    std::vector<int> zoneOf;
+    Eigen::Matrix3Xd zoneMomentum;
+    std::vector<double> zoneMass;
 
     std::uint64_t impactsResolved = 0;  // impacts resolved so far, for the tests
     // impacts left to the resting contacts because a sub-step met more than kMaxImpactEvents (a
     // jammed elastic crowd): counted so that a run can say so
     std::uint64_t impactsLeft = 0;
+    std::uint64_t zonesMade = 0;  // jams made impact zones so far (contact_impacts.cpp), for the tests
+    std::vector<int> zoneMembers;       // a jam's impact zone
+    std::vector<int> zoneQueue;         // its members, searched for their next impacts
+    std::vector<std::uint8_t> inZone;   // per particle: in the zone (or a pinned particle it met)
 };
 
 }  // namespace core

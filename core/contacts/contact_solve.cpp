@@ -340,6 +340,97 @@ void rebound(State &state, ContactScratch &scratch, double restitution)
     }
 }
 
+// the fail-safe, after the velocity solve (Bridson, Fedkiw and Anderson's rigid impact zones, 2002,
+// for balls): a bounce still closing after the iterations (a cluster pressed against a wall by a
+// heavy ball, where 8 iterations carry too little of the push through) would let its balls pass
+// into each other. Its particles, with those of every other such bounce that shares one, go on as
+// one: each zone moves at its mass-weighted mean velocity (momentum kept; the kinetic energy can
+// only fall), with a pinned member holding it still, less its approach to any collider a member
+// touches. A zone may now close on a neighbour through any contact, so the closing contacts of the
+// zones' members are found again from the new velocities and merged until nothing closes: each
+// round merges two zones or stops one on a collider, so it ends. (A resting contact alone is left
+// to the iterations: taking those in too moved ordinary scenes, a net falling on a floor among them)
+void stopClosingContacts(const Model &model, State &state, ContactScratch &scratch, double h)
+{
+    const int n = model.particleCount();
+    std::vector<std::uint8_t> &member = scratch.isStray;  // borrowed: in a zone
+    member.assign(std::size_t(n), 0);
+    // closing: short of its target by more than a resting contact's speed, and by enough to sink a
+    // thousandth of the contact distance in a sub-step (what the iterations leave of a converged
+    // solve is far less)
+    const auto closing = [&](const Contact &c) {
+        if (!c.bounce && !member[std::size_t(c.i)] && (c.withCollider() || !member[std::size_t(c.j)]))
+            return false;
+        const double shortfall = c.targetSpeed - c.normal.dot(relativeVelocity(state, c));
+        const double distance = model.radius[c.i] + (c.withCollider() ? 0.0 : model.radius[c.j]);
+        return shortfall > restingThreshold(model, c.normal) && shortfall * h > 1e-3 * distance;
+    };
+    if (std::none_of(scratch.contacts.begin(), scratch.contacts.end(), closing))
+        return;
+    if (scratch.zoneMomentum.cols() < n)
+        scratch.zoneMomentum.resize(3, n);
+    std::vector<int> &zone = scratch.zoneOf;
+    zone.resize(std::size_t(n));
+    for (int p = 0; p < n; ++p)
+        zone[std::size_t(p)] = p;
+    const auto root = [&](int p) {
+        while (zone[std::size_t(p)] != p)
+            p = zone[std::size_t(p)] = zone[std::size_t(zone[std::size_t(p)])];
+        return p;
+    };
+    // (a particle that never closes on anything is a zone of its own, and is left as it is)
+    Eigen::Matrix3Xd &velocity = scratch.zoneMomentum;  // each zone's momentum, then its velocity
+    std::vector<double> &mass = scratch.zoneMass;
+    // every round merges two zones or stops one on a collider; corners of several colliders may
+    // need a few more, so the count is bounded
+    const std::size_t rounds = scratch.contacts.size() + 8;
+    for (std::size_t round = 0; round < rounds; ++round) {
+        bool any = false;
+        for (const Contact &c : scratch.contacts)
+            if (closing(c)) {
+                any = true;
+                member[std::size_t(c.i)] = 1;
+                if (!c.withCollider()) {
+                    member[std::size_t(c.j)] = 1;
+                    zone[std::size_t(root(c.i))] = root(c.j);
+                }
+            }
+        if (!any)
+            break;
+        mass.assign(std::size_t(n), 0.0);
+        for (int p = 0; p < n; ++p)
+            if (member[std::size_t(p)])
+                velocity.col(root(p)).setZero();
+        for (int p = 0; p < n; ++p) {
+            if (!member[std::size_t(p)])
+                continue;
+            const int r = root(p);
+            if (model.invMass[p] == 0.0 || !std::isfinite(mass[std::size_t(r)])) {
+                mass[std::size_t(r)] = std::numeric_limits<double>::infinity();  // pinned: the zone stands
+                continue;
+            }
+            velocity.col(r) += state.velocity.col(p) / model.invMass[p];
+            mass[std::size_t(r)] += 1.0 / model.invMass[p];
+        }
+        for (int p = 0; p < n; ++p)
+            if (member[std::size_t(p)] && root(p) == p)
+                velocity.col(p) = std::isfinite(mass[std::size_t(p)]) ? Eigen::Vector3d(velocity.col(p) / mass[std::size_t(p)])
+                                                                    : Eigen::Vector3d::Zero();
+        // less its approach to each collider a member touches (twice over, for a corner)
+        for (int pass = 0; pass < 2; ++pass)
+            for (const Contact &c : scratch.contacts)
+                if (c.withCollider() && member[std::size_t(c.i)]) {
+                    auto v = velocity.col(root(c.i));
+                    const double approach = c.normal.dot(v);
+                    if (approach < 0.0)
+                        v -= approach * c.normal;
+                }
+        for (int p = 0; p < n; ++p)
+            if (member[std::size_t(p)] && model.invMass[p] != 0.0)
+                state.velocity.col(p) = velocity.col(root(p));
+    }
+}
+
 // sequential impulses: the normal impulse towards the target speed, then friction within the cone;
 // then the bounces' restitution
 void solveVelocities(State &state, ContactScratch &scratch, double restitution)
@@ -484,6 +575,7 @@ void solveRestingContacts(const Model &model, State &state, Workspace &work, dou
     if (stopsHere(work))
         return;
     solveVelocities(state, scratch, model.restitution);
+    stopClosingContacts(model, state, scratch, h);
     keepImpulses(state, scratch);
     if (stopsHere(work))
         return;

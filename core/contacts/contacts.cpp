@@ -46,6 +46,9 @@ void reserve(const Model &model, ContactScratch &scratch)
     scratch.isStray.reserve(n);
     scratch.isFast.reserve(n);
     scratch.fast.reserve(n);
+    scratch.zoneOf.reserve(n);
+    scratch.zoneMomentum.resize(3, Eigen::Index(n));
+    scratch.zoneMass.reserve(n);
 }
 
 }  // namespace

@@ -101,6 +101,8 @@ private slots:
     void strikeAgainstABallAtAWallAddsNoEnergy();
     void strikeIntoARowOnAFloorAddsNoEnergy_data();
     void strikeIntoARowOnAFloorAddsNoEnergy();
+    void heavyStrikerDoesNotPressTheRowIntoItself_data();
+    void heavyStrikerDoesNotPressTheRowIntoItself();
 };
 
 void TestContactRows::cradlePassesTheImpulseThrough_data()
@@ -211,6 +213,49 @@ void TestContactRows::strikeIntoARowOnAFloorAddsNoEnergy()
     if (restitution == 1.0)
         QVERIFY2(std::abs(sim.state.velocity(0, balls) - 2.0) < 2e-3,
                  qPrintable(QStringLiteral("the last ball leaves at %1 m/s").arg(sim.state.velocity(0, balls))));
+}
+
+void TestContactRows::heavyStrikerDoesNotPressTheRowIntoItself_data()
+{
+    QTest::addColumn<double>("speed");
+    QTest::addColumn<double>("restitution");
+    for (double e : {0.0, 0.5})
+        for (double speed : {5.0, 20.0, 60.0, 150.0})
+            QTest::addRow("%g m/s, e %g", speed, e) << speed << e;
+}
+
+void TestContactRows::heavyStrikerDoesNotPressTheRowIntoItself()
+{
+    // a 50 kg striker drives a row of six 1 kg balls into a wall on a floor: the row is crushed
+    // between a mass it cannot stop and a wall it cannot pass, the case where the contact
+    // iterations carry too little of the push through. After every step no two balls overlap by
+    // more than a fifth of their contact distance, none is inside the wall, the order is kept and
+    // the energy never rises
+    QFETCH(double, speed);
+    QFETCH(double, restitution);
+    core::SceneDesc scene = rowOnAFloor(6, true, speed, restitution);
+    scene.particles[0].mass = 50.0;
+    test::Sim sim = test::compile(scene);
+    const double wall = -scene.planes.back().offset;
+    const double start = total(sim);
+    double deepest = 0.0;
+    for (int s = 0; s < 50; ++s) {
+        QVERIFY2(sim.step(), qPrintable(QStringLiteral("blew up at step %1").arg(s)));
+        for (int i = 0; i + 1 < sim.model->particleCount(); ++i) {
+            deepest = std::max(deepest, 2.0 * kRadius - (sim.state.position(0, i + 1) - sim.state.position(0, i)));
+            QVERIFY2(sim.state.position(0, i) < sim.state.position(0, i + 1),
+                     qPrintable(QStringLiteral("ball %1 passed ball %2 at step %3").arg(i).arg(i + 1).arg(s)));
+        }
+        const int last = sim.model->particleCount() - 1;
+        QVERIFY2(sim.state.position(0, last) <= wall - kRadius + 0.2 * kRadius,
+                 qPrintable(QStringLiteral("the last ball is %1 m into the wall at step %2")
+                                .arg(sim.state.position(0, last) + kRadius - wall)
+                                .arg(s)));
+        QVERIFY2(total(sim) <= start * (1.0 + 1e-6),
+                 qPrintable(QStringLiteral("energy rose from %1 J to %2 J at step %3").arg(start).arg(total(sim)).arg(s)));
+    }
+    qInfo("deepest overlap between two balls %.3g mm (contact distance %.0f mm)", 1e3 * deepest, 2e3 * kRadius);
+    QVERIFY2(deepest < 0.2 * 2.0 * kRadius, qPrintable(QString::number(deepest)));
 }
 
 QTEST_APPLESS_MAIN(TestContactRows)
