@@ -4,6 +4,7 @@
 // threads. Small loops stay on the calling thread without entering OpenMP at all: waking the
 // others costs more than they save, and even a one-thread OpenMP region allocates.
 
+#include <exception>
 #include <utility>
 
 #ifdef SPRINGLAB_OPENMP
@@ -60,6 +61,38 @@ void parallelChunks(int count, Body &&body)
     }
 #endif
     body(0, count);
+}
+
+// body(thread, begin, end) once for each of twoPhaseShares(count) contiguous shares of [0, count),
+// in parallel: for passes that collect into one list per share and join the lists in share order,
+// which gives the order one thread would have made whatever the count. A list may grow, so a body
+// may throw (std::bad_alloc): an exception must not leave a parallel region (the program would
+// end), so the first is kept and thrown again on the calling thread once every share is done
+template <typename Body>
+void parallelShares(int count, Body &&body)
+{
+#ifdef SPRINGLAB_OPENMP
+    if (splitAcrossThreads(count)) {
+        std::exception_ptr failure;
+#pragma omp parallel
+        {
+            const long long threads = omp_get_num_threads();
+            const long long thread = omp_get_thread_num();
+            try {
+                body(static_cast<int>(thread), static_cast<int>(count * thread / threads),
+                     static_cast<int>(count * (thread + 1) / threads));
+            } catch (...) {
+#pragma omp critical(springlab_parallel_shares)
+                if (!failure)
+                    failure = std::current_exception();
+            }
+        }
+        if (failure)
+            std::rethrow_exception(failure);
+        return;
+    }
+#endif
+    body(0, 0, count);
 }
 
 // How a two-phase pass shares out its work: across the threads (0 shares, the default), or, for

@@ -13,6 +13,7 @@
 // the 12 that equal spheres can touch, so only such a crowd meets it).
 
 #include "core/contacts/broad_phase.h"
+#include "core/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -116,26 +117,46 @@ bool sortIntoGrid(const Model &model, const Eigen::Matrix3Xd &position, const Ei
     grid.cellOf.resize(std::size_t(n));
     grid.big.clear();
 
-    // classify: not finite (in no pair), big (against all), or in the grid; the grid's extent
+    // classify: not finite (in no pair), big (against all), or in the grid; the grid's extent. In
+    // parallel shares, each with its own extent and big particles, joined in share order
     const double big = bigRadius(model, radius, grid);
+    const int shares = twoPhaseShares(n);
+    if (int(grid.shareExtents.size()) < shares) {
+        grid.shareExtents.resize(std::size_t(shares));
+        grid.bigShares.resize(std::size_t(shares));
+    }
+    parallelShares(n, [&](int share, int begin, int end) {
+        GridExtent &extent = grid.shareExtents[std::size_t(share)];
+        extent = GridExtent{};
+        std::vector<int> &bigOnes = grid.bigShares[std::size_t(share)];
+        bigOnes.clear();
+        for (int i = begin; i < end; ++i) {
+            const auto x = position.col(i);
+            if (!x.allFinite()) {
+                grid.slotOf[std::size_t(i)] = kNotFinite;
+            } else if (radius[i] > big) {
+                grid.slotOf[std::size_t(i)] = kBig;
+                bigOnes.push_back(i);
+            } else {
+                grid.slotOf[std::size_t(i)] = 0;
+                extent.lo = extent.lo.cwiseMin(x);
+                extent.hi = extent.hi.cwiseMax(x);
+                extent.largest = std::max(extent.largest, radius[i]);
+                extent.count += 1;
+            }
+        }
+    });
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
     Eigen::Vector3d hi = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
     double largest = 0.0;
     int count = 0;
-    for (int i = 0; i < n; ++i) {
-        const auto x = position.col(i);
-        if (!x.allFinite()) {
-            grid.slotOf[std::size_t(i)] = kNotFinite;
-        } else if (radius[i] > big) {
-            grid.slotOf[std::size_t(i)] = kBig;
-            grid.big.push_back(i);
-        } else {
-            grid.slotOf[std::size_t(i)] = 0;
-            lo = lo.cwiseMin(x);
-            hi = hi.cwiseMax(x);
-            largest = std::max(largest, radius[i]);
-            count += 1;
-        }
+    for (int share = 0; share < shares; ++share) {
+        const GridExtent &extent = grid.shareExtents[std::size_t(share)];
+        lo = lo.cwiseMin(extent.lo);
+        hi = hi.cwiseMax(extent.hi);
+        largest = std::max(largest, extent.largest);
+        count += extent.count;
+        grid.big.insert(grid.big.end(), grid.bigShares[std::size_t(share)].begin(), grid.bigShares[std::size_t(share)].end());
     }
     if (count == 0)
         return false;
@@ -185,15 +206,16 @@ bool sortIntoGrid(const Model &model, const Eigen::Matrix3Xd &position, const Ei
         grid.bucketStart.reserve(4 * std::size_t(count) + 2);
     grid.bucketStart.assign(std::size_t(layout.buckets) + 1, 0);
 
-    // each particle's cell; count the particles of each bucket
-    for (int i = 0; i < n; ++i) {
+    // each particle's cell (in parallel); count the particles of each bucket
+    parallelFor(n, [&](int i) {
         if (grid.slotOf[std::size_t(i)] != 0)
-            continue;
+            return;
         const Eigen::Vector3d u = (position.col(i) - lo) * layout.inverseCell;
-        const std::uint64_t cell = packCell(cellCoordinate(u.x()), cellCoordinate(u.y()), cellCoordinate(u.z()));
-        grid.cellOf[std::size_t(i)] = cell;
-        grid.bucketStart[std::size_t(bucketOf(layout, cell))] += 1;
-    }
+        grid.cellOf[std::size_t(i)] = packCell(cellCoordinate(u.x()), cellCoordinate(u.y()), cellCoordinate(u.z()));
+    });
+    for (int i = 0; i < n; ++i)
+        if (grid.slotOf[std::size_t(i)] == 0)
+            grid.bucketStart[std::size_t(bucketOf(layout, grid.cellOf[std::size_t(i)]))] += 1;
     int end = 0;
     for (int &b : grid.bucketStart) {
         end += b;
@@ -222,46 +244,37 @@ bool sortIntoGrid(const Model &model, const Eigen::Matrix3Xd &position, const Ei
 }
 
 // the pairs of grid slot a with the slots [begin, end) that lie in one of `cells` cells along x
-// from `first`
-// from `first`; a particle with kMaxGridPartners pairs already gets no more
-void scanRow(ContactGrid &grid, const GridSlot &a, std::uint64_t first, std::uint64_t cells, int begin, int end)
+// from `first`, as (a, b), into `out`; a scan that has found kMaxGridPartners (`found`) stops
+void scanRow(const ContactGrid &grid, const GridSlot &a, std::uint64_t first, std::uint64_t cells, int begin, int end,
+             int &found, std::vector<ContactPair> &out)
 {
     constexpr std::uint64_t kStepX = std::uint64_t(1) << (2 * kAxisBits);
-    std::uint16_t &partnersOfA = grid.partners[std::size_t(a.particle)];
-    for (int k = begin; k < end && partnersOfA < kMaxGridPartners; ++k) {
+    for (int k = begin; k < end && found < kMaxGridPartners; ++k) {
         const GridSlot &b = grid.sorted[std::size_t(k)];
         const std::uint64_t offset = b.cell - first;  // wraps to a huge value below `first`
         if (offset % kStepX == 0 && offset / kStepX < cells && !(a.pinned && b.pinned) &&
             overlapping(a.x, a.y, a.z, a.radius, b.x, b.y, b.z, b.radius)) {
-            std::uint16_t &partnersOfB = grid.partners[std::size_t(b.particle)];
-            if (partnersOfB >= kMaxGridPartners) {
-                grid.crowded = true;
-                continue;
-            }
-            ++partnersOfA;
-            ++partnersOfB;
-            grid.found.push_back({std::min(a.particle, b.particle), std::max(a.particle, b.particle)});
+            out.push_back({a.particle, b.particle});
+            ++found;
         }
     }
-    if (partnersOfA >= kMaxGridPartners)
-        grid.crowded = true;
 }
 
-// every overlapping pair of the grid, once, in grid order (neighbours in memory are neighbours in
-// space): each particle is paired with those after it in its own cell and with all of those in
-// the 13 neighbouring cells ahead of it, so each pair of cells is visited once. Those 13 cells are
-// five rows along x, each in consecutive buckets, so each row is one run of memory
-void pairsInGrid(const Layout &layout, ContactGrid &grid)
+// the pairs of the slots [begin, end) with those after them: each particle with those after it in
+// its own cell and with all of those in the 13 neighbouring cells ahead of it, so each pair of
+// cells is visited once. Those 13 cells are five rows along x, each in consecutive buckets, so each
+// row is one run of memory
+void scanSlots(const Layout &layout, const ContactGrid &grid, int begin, int end, std::vector<ContactPair> &out)
 {
-    const int count = int(grid.sorted.size());
     const auto start = [&](std::uint64_t bucket) { return grid.bucketStart[std::size_t(bucket)]; };
-    for (int slot = 0; slot < count; ++slot) {
+    for (int slot = begin; slot < end; ++slot) {
         const GridSlot &a = grid.sorted[std::size_t(slot)];
         const std::uint64_t cx = a.cell >> (2 * kAxisBits);
         const std::uint64_t cy = (a.cell >> kAxisBits) & kAxisMask;
         const std::uint64_t cz = a.cell & kAxisMask;
         const std::uint64_t own = bucketOf(layout, a.cell);
-        scanRow(grid, a, a.cell, 1, slot + 1, start(own + 1));
+        int found = 0;
+        scanRow(grid, a, a.cell, 1, slot + 1, start(own + 1), found, out);
         for (std::uint64_t z = cz; z <= cz + 1; ++z) {
             for (std::uint64_t y = z == cz ? cy : cy - 1; y <= cy + 1; ++y) {
                 // the row's cells: x - 1 .. x + 1, or only x + 1 in the particle's own row
@@ -269,17 +282,48 @@ void pairsInGrid(const Layout &layout, ContactGrid &grid)
                 const std::uint64_t cells = cx + 2 - x;
                 const std::uint64_t bucket = bucketAt(layout, x, y, z);
                 if (bucket + cells <= layout.buckets) {
-                    scanRow(grid, a, packCell(x, y, z), cells, start(bucket), start(bucket + cells));
+                    scanRow(grid, a, packCell(x, y, z), cells, start(bucket), start(bucket + cells), found, out);
                 } else {
                     // the row wraps around the end of the table
                     for (std::uint64_t c = 0; c < cells; ++c) {
                         const std::uint64_t b = bucketAt(layout, x + c, y, z);
-                        scanRow(grid, a, packCell(x + c, y, z), 1, start(b), start(b + 1));
+                        scanRow(grid, a, packCell(x + c, y, z), 1, start(b), start(b + 1), found, out);
                     }
                 }
             }
         }
     }
+}
+
+// every overlapping pair of the grid, once, in grid order (neighbours in memory are neighbours in
+// space). The slots are scanned in contiguous shares, one a thread, each into its own list; the
+// lists joined in share order are the pairs in the order one thread finds them, whatever the
+// thread count. A particle then keeps its pairs in that order until it has kMaxGridPartners (each
+// scan stops at that many of its own, so a crowd's lists stay linear in its size)
+void pairsInGrid(const Layout &layout, ContactGrid &grid)
+{
+    const int count = int(grid.sorted.size());
+    const int shares = twoPhaseShares(count);
+    if (int(grid.foundShares.size()) < shares)
+        grid.foundShares.resize(std::size_t(shares));
+    parallelShares(count, [&](int share, int begin, int end) {
+        std::vector<ContactPair> &out = grid.foundShares[std::size_t(share)];
+        out.clear();
+        scanSlots(layout, grid, begin, end, out);
+    });
+    for (int share = 0; share < shares; ++share)
+        for (const ContactPair &p : grid.foundShares[std::size_t(share)]) {
+            std::uint16_t &partnersOfA = grid.partners[std::size_t(p.i)];
+            std::uint16_t &partnersOfB = grid.partners[std::size_t(p.j)];
+            if (partnersOfA >= kMaxGridPartners || partnersOfB >= kMaxGridPartners) {
+                grid.crowded = true;
+                continue;
+            }
+            ++partnersOfA;
+            ++partnersOfB;
+            grid.crowded = grid.crowded || partnersOfA >= kMaxGridPartners || partnersOfB >= kMaxGridPartners;
+            grid.found.push_back({std::min(p.i, p.j), std::max(p.i, p.j)});
+        }
 }
 
 // the pairs of each big particle with every other particle (with another big one only once)

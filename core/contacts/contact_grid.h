@@ -3,7 +3,10 @@
 // sub-step, and the list of pairs it finds. It lives in the Workspace so that a step allocates nothing
 // once the arrays have reached the scene's size.
 
+#include <Eigen/Core>
+
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace core {
@@ -31,6 +34,14 @@ struct GridSlot {
 // memory quadratic in n (20 000 of them needed 3 GB, 50 000 aborted the program)
 constexpr int kMaxGridPartners = 64;
 
+// the particles of one thread's share that go in the grid: how many, their extent and largest radius
+struct GridExtent {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d hi = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
+    double largest = 0.0;
+    int count = 0;
+};
+
 struct ContactGrid {
     // the overlapping pairs of the last pass, in lexicographic (i, j) order
     std::vector<ContactPair> pairs;
@@ -49,6 +60,9 @@ struct ContactGrid {
     std::vector<int> big;                 // particles too big for the cells, checked against all
     std::vector<double> radiusSample;     // radii sampled to pick the cell size
     std::vector<ContactPair> found;       // the pairs in the order the grid finds them
+    std::vector<std::vector<ContactPair>> foundShares;
+    std::vector<GridExtent> shareExtents;          // per thread's share, while sorting
+    std::vector<std::vector<int>> bigShares;       // per thread's share, its big particles  // the pairs each thread's share of the grid found
     std::vector<std::uint16_t> partners;  // per particle, the grid pairs found for it so far
     // whether a particle reached kMaxGridPartners pairs in the last pass, so that pairs of it
     // may have been left out (a crowd of overlapping particles)

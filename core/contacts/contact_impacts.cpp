@@ -13,6 +13,7 @@
 #include "core/contacts/broad_phase.h"
 #include "core/contacts/particle_path.h"
 #include "core/geometry.h"
+#include "core/parallel.h"
 #include "core/passes.h"
 
 #include <algorithm>
@@ -115,19 +116,48 @@ double touchingThreshold(const Model &model)
     return 2.0 * model.gravity.norm() * model.subStep();
 }
 
-void push(ContactScratch &scratch, double time, int i, int j)
+// the heap's order: std::push_heap keeps the largest on top, so the order is reversed
+bool later(const Impact &a, const Impact &b)
+{
+    return b < a;
+}
+
+// an impact found: into the heap of impacts to come (scratch.impacts), or into the list of a
+// thread's share of a parallel search, which joinShares() adds to the heap. The heap pops in the
+// impacts' total order (time, then particles), so the order they were found in makes no difference
+void push(const ContactScratch &scratch, std::vector<Impact> &out, double time, int i, int j)
 {
     const std::uint32_t vj = j >= 0 ? scratch.version[std::size_t(j)] : 0;
-    scratch.impacts.push_back({time, i, j, scratch.version[std::size_t(i)], vj});
-    // a min-heap: std::push_heap keeps the largest on top, so the order is reversed
-    std::push_heap(scratch.impacts.begin(), scratch.impacts.end(),
-                   [](const Impact &a, const Impact &b) { return b < a; });
+    out.push_back({time, i, j, scratch.version[std::size_t(i)], vj});
+    if (&out == &scratch.impacts)
+        std::push_heap(out.begin(), out.end(), later);
+}
+
+// the impacts of every thread's share added to the heap
+void joinShares(ContactScratch &scratch, int shares)
+{
+    for (int share = 0; share < shares; ++share) {
+        const std::vector<Impact> &found = scratch.impactShares[std::size_t(share)];
+        scratch.impacts.insert(scratch.impacts.end(), found.begin(), found.end());
+    }
+    std::make_heap(scratch.impacts.begin(), scratch.impacts.end(), later);
+}
+
+// a share's list for each thread, emptied
+int startShares(ContactScratch &scratch, int count)
+{
+    const int shares = twoPhaseShares(count);
+    if (int(scratch.impactShares.size()) < shares)
+        scratch.impactShares.resize(std::size_t(shares));
+    for (int share = 0; share < shares; ++share)
+        scratch.impactShares[std::size_t(share)].clear();
+    return shares;
 }
 
 // particle i's impact with collider k from time `from` on, if any: at `from` already when it touches
 // the collider there and approaches it faster than a resting contact, else where its path meets it
-void colliderImpact(const Model &model, const State &state, ContactScratch &scratch, int i, int k, double from,
-                    double h)
+void colliderImpact(const Model &model, const State &state, const ContactScratch &scratch, std::vector<Impact> &out,
+                    int i, int k, double from, double h)
 {
     const double r = model.radius[i];
     const Collider &c = model.colliders[std::size_t(k)];
@@ -140,7 +170,7 @@ void colliderImpact(const Model &model, const State &state, ContactScratch &scra
     if (!(s0.distance > r)) {
         // touching (or not finite): an impact now if it comes in fast, else a resting contact
         if (-s0.normal.dot(a.velocity(t0)) > touchingThreshold(model))
-            push(scratch, t0, i, -1 - k);
+            push(scratch, out, t0, i, -1 - k);
         return;
     }
     const Eigen::Vector3d x1 = state.position.col(i);
@@ -153,12 +183,13 @@ void colliderImpact(const Model &model, const State &state, ContactScratch &scra
         return;  // passed the rectangle's edge
     const Separation s = separation(c, a.position(t0 + *t), side);
     if (-s.normal.dot(a.velocity(t0 + *t)) > restingThreshold(model, s.normal))
-        push(scratch, t0 + *t, i, -1 - k);
+        push(scratch, out, t0 + *t, i, -1 - k);
 }
 
 // one pair from time `from` on: an impact at `from` if they touch then and close faster than a
 // resting contact, else where conservative advancement along their paths finds them touching
-void pairImpact(const Model &model, const State &state, ContactScratch &scratch, int i, int j, double from, double h)
+void pairImpact(const Model &model, const State &state, const ContactScratch &scratch, std::vector<Impact> &out, int i,
+                int j, double from, double h)
 {
     if (model.invMass[i] == 0.0 && model.invMass[j] == 0.0)
         return;
@@ -178,7 +209,7 @@ void pairImpact(const Model &model, const State &state, ContactScratch &scratch,
     const Eigen::Vector3d d0 = a.position(t0) - b.position(t0);
     if (!(d0.squaredNorm() > contact * contact)) {
         if (closing(t0, true))  // touching and closing: the impulse passes on now
-            push(scratch, t0, i, j);
+            push(scratch, out, t0, i, j);
         return;
     }
     // the chords of the two paths from t0: clear of each other all along them by more than the paths
@@ -202,7 +233,7 @@ void pairImpact(const Model &model, const State &state, ContactScratch &scratch,
         t = firstTouch(gap, a.speedBound() + b.speedBound(), h - t0, contact);
     }
     if (t && closing(t0 + *t, false))
-        push(scratch, t0 + *t, i, j);
+        push(scratch, out, t0 + *t, i, j);
 }
 
 // each particle's sphere holding its path through the rest of the sub-step, for the broad phase; a
@@ -213,23 +244,34 @@ void sweep(const Model &model, const State &state, ContactScratch &scratch, doub
     const int n = model.particleCount();
     scratch.sweptCentre.resize(3, n);
     scratch.sweptRadius.resize(n);
-    scratch.fast.clear();
     scratch.isFast.assign(std::size_t(n), 0);
-    for (int i = 0; i < n; ++i) {
-        const TimedPath a = pathOf(model, state, scratch, i, h);
-        const double reach = 0.5 * (a.path.x1 - a.path.x0).norm() + bulge(a.path);
-        if (reach > kFast * model.radius[i]) {
-            scratch.fast.push_back(i);
-            scratch.isFast[std::size_t(i)] = 1;
-            scratch.sweptCentre.col(i).setConstant(std::numeric_limits<double>::quiet_NaN());  // out of the grid
-        } else {
-            scratch.sweptCentre.col(i) = 0.5 * (a.path.x0 + a.path.x1);
+    // in parallel shares, each listing its fast particles; the lists joined in share order
+    const int shares = twoPhaseShares(n);
+    if (int(scratch.fastShares.size()) < shares)
+        scratch.fastShares.resize(std::size_t(shares));
+    parallelShares(n, [&](int share, int begin, int end) {
+        std::vector<int> &fast = scratch.fastShares[std::size_t(share)];
+        fast.clear();
+        for (int i = begin; i < end; ++i) {
+            const TimedPath a = pathOf(model, state, scratch, i, h);
+            const double reach = 0.5 * (a.path.x1 - a.path.x0).norm() + bulge(a.path);
+            if (reach > kFast * model.radius[i]) {
+                fast.push_back(i);
+                scratch.isFast[std::size_t(i)] = 1;
+                scratch.sweptCentre.col(i).setConstant(std::numeric_limits<double>::quiet_NaN());  // out of the grid
+            } else {
+                scratch.sweptCentre.col(i) = 0.5 * (a.path.x0 + a.path.x1);
+            }
+            // a hair larger than the path, so that a pair touching exactly (a row of balls placed
+            // side by side, a ball that ends its move touching the next) is a candidate: the
+            // broad phase counts only overlaps
+            scratch.sweptRadius[i] = (model.radius[i] + reach) * (1.0 + 1e-9);
         }
-        // a hair larger than the path, so that a pair touching exactly (a row of balls placed
-        // side by side, a ball that ends its move touching the next) is a candidate: the
-        // broad phase counts only overlaps
-        scratch.sweptRadius[i] = (model.radius[i] + reach) * (1.0 + 1e-9);
-    }
+    });
+    scratch.fast.clear();
+    for (int share = 0; share < shares; ++share)
+        scratch.fast.insert(scratch.fast.end(), scratch.fastShares[std::size_t(share)].begin(),
+                            scratch.fastShares[std::size_t(share)].end());
 }
 
 // the broad phase's pairs as adjacency lists (both ways)
@@ -268,13 +310,27 @@ void impactsOfPairs(const Model &model, const State &state, Workspace &work, dou
     listCandidates(n, grid.pairs, scratch);
     const bool all = scratch.strays.empty();
     const auto wanted = [&](int i, int j) { return all || scratch.isStray[std::size_t(i)] || scratch.isStray[std::size_t(j)]; };
-    for (const ContactPair &pair : grid.pairs)
-        if (wanted(pair.i, pair.j))
-            pairImpact(model, state, scratch, pair.i, pair.j, from, h);
-    for (int i : scratch.fast)
-        for (int j = 0; j < n; ++j)
-            if (j != i && !(scratch.isFast[std::size_t(j)] && j < i) && wanted(i, j))
-                pairImpact(model, state, scratch, std::min(i, j), std::max(i, j), from, h);
+    // the pairs, and each fast particle against every other, searched in parallel shares
+    const int pairs = int(grid.pairs.size());
+    const int fast = int(scratch.fast.size());
+    const int shares = startShares(scratch, std::max(pairs, fast));
+    parallelShares(pairs, [&](int share, int begin, int end) {
+        for (int k = begin; k < end; ++k) {
+            const ContactPair &pair = grid.pairs[std::size_t(k)];
+            if (wanted(pair.i, pair.j))
+                pairImpact(model, state, scratch, scratch.impactShares[std::size_t(share)], pair.i, pair.j, from, h);
+        }
+    });
+    parallelShares(fast, [&](int share, int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+            const int i = scratch.fast[std::size_t(f)];
+            for (int j = 0; j < n; ++j)
+                if (j != i && !(scratch.isFast[std::size_t(j)] && j < i) && wanted(i, j))
+                    pairImpact(model, state, scratch, scratch.impactShares[std::size_t(share)], std::min(i, j),
+                               std::max(i, j), from, h);
+        }
+    });
+    joinShares(scratch, shares);
 }
 
 // the impulse of one impact at its time: restitution along the normal, Coulomb friction across it
@@ -392,7 +448,7 @@ void impactsOf(const Model &model, const State &state, ContactScratch &scratch, 
         return;
     if (model.plan.planeCollisions)
         for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k)
-            colliderImpact(model, state, scratch, p, k, t, h);
+            colliderImpact(model, state, scratch, scratch.impacts, p, k, t, h);
     if (!model.plan.particleCollisions)
         return;
     // a fast path, or one an impact sent out of its sphere in a scene small enough, is checked
@@ -415,26 +471,26 @@ void impactsOf(const Model &model, const State &state, ContactScratch &scratch, 
             if (!scratch.isFast[std::size_t(q)] && scratch.segmentOf[std::size_t(q)] < 0 &&
                 (scratch.sweptCentre.col(q) - centre).norm() > reach + scratch.sweptRadius[q])
                 continue;
-            pairImpact(model, state, scratch, std::min(p, q), std::max(p, q), t, h);
+            pairImpact(model, state, scratch, scratch.impacts, std::min(p, q), std::max(p, q), t, h);
         }
     } else {
         for (int e = scratch.candidateStart[std::size_t(p)]; e < scratch.candidateStart[std::size_t(p) + 1]; ++e) {
             const int q = scratch.candidates[std::size_t(e)];
-            pairImpact(model, state, scratch, std::min(p, q), std::max(p, q), t, h);
+            pairImpact(model, state, scratch, scratch.impacts, std::min(p, q), std::max(p, q), t, h);
         }
         // a fast particle is out of the grid, so in no one's candidates: its impact with p, found
         // on p's old path, is stale now and must be looked for again on the new one (a ball at
         // 95 m/s passed through the one ahead of it once that one's path changed)
         for (int q : scratch.fast)
             if (q != p)
-                pairImpact(model, state, scratch, std::min(p, q), std::max(p, q), t, h);
+                pairImpact(model, state, scratch, scratch.impacts, std::min(p, q), std::max(p, q), t, h);
         // and likewise the strays of a small scene (in a large one the next broad phase finds
         // them): a ball squeezed out of its sphere by one neighbour met another whose new path
         // stayed in its own, and they passed through each other
         if (small)
             for (int q = 0; q < model.particleCount(); ++q)
                 if (q != p && scratch.isStray[std::size_t(q)])
-                    pairImpact(model, state, scratch, std::min(p, q), std::max(p, q), t, h);
+                    pairImpact(model, state, scratch, scratch.impacts, std::min(p, q), std::max(p, q), t, h);
         if (stray && !scratch.isStray[std::size_t(p)]) {
             scratch.isStray[std::size_t(p)] = 1;
             scratch.strays.push_back(p);
@@ -557,10 +613,17 @@ void resolveImpacts(const Model &model, State &state, Workspace &work, double h)
     scratch.candidateStart.assign(std::size_t(n) + 1, 0);
     scratch.candidates.clear();
     scratch.isFast.assign(std::size_t(n), 0);
-    if (model.plan.planeCollisions)
-        for (int i : model.freeParticles)
-            for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k)
-                colliderImpact(model, state, scratch, i, k, 0.0, h);
+    if (model.plan.planeCollisions) {
+        const int free = int(model.freeParticles.size());
+        const int shares = startShares(scratch, free);
+        parallelShares(free, [&](int share, int begin, int end) {
+            std::vector<Impact> &out = scratch.impactShares[std::size_t(share)];
+            for (int f = begin; f < end; ++f)
+                for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k)
+                    colliderImpact(model, state, scratch, out, model.freeParticles[std::size_t(f)], k, 0.0, h);
+        });
+        joinShares(scratch, shares);
+    }
     if (model.plan.particleCollisions && !stopsHere(work))
         impactsOfPairs(model, state, work, 0.0, h);
     if (stopsHere(work))
@@ -568,7 +631,6 @@ void resolveImpacts(const Model &model, State &state, Workspace &work, double h)
 
     // in the order they happen; each resolved impact searches the paths it changed again from its
     // time, so the impulse passes on through whatever the particles touch
-    const auto later = [](const Impact &a, const Impact &b) { return b < a; };
     const std::uint64_t most = kEventsPerParticle * std::uint64_t(std::max(n, 1));
     std::uint64_t events = 0;
     for (int round = 0;; ++round) {

@@ -116,6 +116,11 @@ struct ContactScratch {
     // impacts left to the resting contacts because a sub-step met more than kMaxImpactEvents (a
     // jammed elastic crowd): counted so that a run can say so
     std::uint64_t impactsLeft = 0;
+    // what each thread's share of a parallel search found, joined in share order afterwards so
+    // that the result is the same on any thread count: impacts, fast particles, contacts
+    std::vector<std::vector<Impact>> impactShares;
+    std::vector<std::vector<int>> fastShares;
+    std::vector<std::vector<Contact>> contactShares;
     std::uint64_t zonesMade = 0;  // jams made impact zones so far (contact_impacts.cpp), for the tests
     std::vector<int> zoneMembers;       // a jam's impact zone
     std::vector<int> zoneQueue;         // its members, searched for their next impacts

@@ -24,6 +24,7 @@
 #include "core/contacts/broad_phase.h"
 #include "core/geometry.h"
 #include "core/contacts/particle_path.h"
+#include "core/parallel.h"
 #include "core/passes.h"
 
 #include <algorithm>
@@ -67,8 +68,10 @@ void gather(const Model &model, State &state, Workspace &work, double h)
     // m: how near counts as a near miss; never more than a particle's radius, so that a huge gravity
     // or step cannot make every particle a near miss of every other
     const double reach = model.restingSpeed * h;
-    const auto add = [&](int i, int j, double side, const Eigen::Vector3d &normal, double gap, double friction,
-                         double staticFriction) {
+    // gathered in parallel shares, each into its own list, joined in share order: the order one
+    // thread gathers them in, whatever the count
+    const auto add = [&](std::vector<Contact> &out, int i, int j, double side, const Eigen::Vector3d &normal, double gap,
+                         double friction, double staticFriction) {
         const Eigen::Vector3d vj = j >= 0 ? Eigen::Vector3d(state.velocity.col(j)) : Eigen::Vector3d::Zero();
         const double approach = normal.dot(state.velocity.col(i) - vj);
         const bool fast = -approach > restingThreshold(model, normal);
@@ -90,19 +93,41 @@ void gather(const Model &model, State &state, Workspace &work, double h)
         c.bounce = gap <= 0.0 && fast;
         c.drift = c.bounce ? 0.0 : scratch.drift;
         c.targetSpeed = c.bounce ? 0.0 : restingTarget(approach, gap, c.drift, h);
-        scratch.contacts.push_back(c);
+        out.push_back(c);
+    };
+    const auto startShares = [&](int count) {
+        const int shares = twoPhaseShares(count);
+        if (int(scratch.contactShares.size()) < shares)
+            scratch.contactShares.resize(std::size_t(shares));
+        for (int share = 0; share < shares; ++share)
+            scratch.contactShares[std::size_t(share)].clear();
+        return shares;
+    };
+    const auto joinShares = [&](int shares) {
+        for (int share = 0; share < shares; ++share)
+            scratch.contacts.insert(scratch.contacts.end(), scratch.contactShares[std::size_t(share)].begin(),
+                                    scratch.contactShares[std::size_t(share)].end());
     };
 
-    if (model.plan.planeCollisions)
-        for (int i : model.freeParticles)
-            for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k) {
-                const Collider &collider = model.colliders[std::size_t(k)];
-                const double side = sideOf(collider, scratch.startPosition.col(i));
-                const Separation s = separation(collider, state.position.col(i), side);
-                const double gap = s.distance - model.radius[i];
-                if (gap < std::min(reach, model.radius[i]))
-                    add(i, -1 - k, side, s.normal, gap, collider.friction, collider.staticFriction);
+    if (model.plan.planeCollisions) {
+        const int free = int(model.freeParticles.size());
+        const int shares = startShares(free);
+        parallelShares(free, [&](int share, int begin, int end) {
+            for (int f = begin; f < end; ++f) {
+                const int i = model.freeParticles[std::size_t(f)];
+                for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k) {
+                    const Collider &collider = model.colliders[std::size_t(k)];
+                    const double side = sideOf(collider, scratch.startPosition.col(i));
+                    const Separation s = separation(collider, state.position.col(i), side);
+                    const double gap = s.distance - model.radius[i];
+                    if (gap < std::min(reach, model.radius[i]))
+                        add(scratch.contactShares[std::size_t(share)], i, -1 - k, side, s.normal, gap, collider.friction,
+                            collider.staticFriction);
+                }
             }
+        });
+        joinShares(shares);
+    }
 
     if (model.plan.particleCollisions && !stopsHere(work)) {
         ContactGrid &grid = work.contacts;
@@ -113,16 +138,24 @@ void gather(const Model &model, State &state, Workspace &work, double h)
             findContacts(model, state.position, scratch.sweptRadius, grid);
         if (stopsHere(work))
             return;
-        for (const ContactPair &pair : grid.pairs) {
-            // i the free one: a pinned particle never moves, whichever end it is
-            const bool swap = model.invMass[pair.i] == 0.0;
-            const int i = swap ? pair.j : pair.i;
-            const int j = swap ? pair.i : pair.j;
-            const Eigen::Vector3d d = state.position.col(i) - state.position.col(j);
-            const double distance = d.norm();
-            const Eigen::Vector3d normal = apart(distance) ? Eigen::Vector3d(d / distance) : coincidentAxis(pair.i, pair.j);
-            add(i, j, 1.0, normal, distance - model.radius[i] - model.radius[j], model.friction, model.staticFriction);
-        }
+        const int pairs = int(grid.pairs.size());
+        const int shares = startShares(pairs);
+        parallelShares(pairs, [&](int share, int begin, int end) {
+            for (int k = begin; k < end; ++k) {
+                const ContactPair &pair = grid.pairs[std::size_t(k)];
+                // i the free one: a pinned particle never moves, whichever end it is
+                const bool swap = model.invMass[pair.i] == 0.0;
+                const int i = swap ? pair.j : pair.i;
+                const int j = swap ? pair.i : pair.j;
+                const Eigen::Vector3d d = state.position.col(i) - state.position.col(j);
+                const double distance = d.norm();
+                const Eigen::Vector3d normal =
+                    apart(distance) ? Eigen::Vector3d(d / distance) : coincidentAxis(pair.i, pair.j);
+                add(scratch.contactShares[std::size_t(share)], i, j, 1.0, normal,
+                    distance - model.radius[i] - model.radius[j], model.friction, model.staticFriction);
+            }
+        });
+        joinShares(shares);
     }
 
     // a near miss closing fast is an impact to come, located in time in the next sub-step, when
