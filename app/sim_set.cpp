@@ -53,6 +53,10 @@ constexpr Field<core::Settings> kSettingsFields[] = {
     {"planeCollisions", Kind::Boolean, [](core::Settings &s, const OverrideValue &v) { s.planeCollisions = v.flag; }},
     {"particleCollisions", Kind::Boolean,
      [](core::Settings &s, const OverrideValue &v) { s.particleCollisions = v.flag; }},
+    {"triangleCollisions", Kind::Boolean,
+     [](core::Settings &s, const OverrideValue &v) { s.triangleCollisions = v.flag; }},
+    {"selfCollision", Kind::Boolean, [](core::Settings &s, const OverrideValue &v) { s.selfCollision = v.flag; }},
+    {"thickness", Kind::Number, [](core::Settings &s, const OverrideValue &v) { s.thickness = v.number; }},
 };
 
 // a particle's values; a spring's rest length that the file left out was measured from the

@@ -68,6 +68,10 @@ void resolveImpacts(const Model &model, State &state, Workspace &work, double h)
 void solveRestingContacts(const Model &model, State &state, Workspace &work, double h);       // contact_solve.cpp
 // m/s: a contact approaching slower than this along its normal is resting, not an impact
 double restingThreshold(const Model &model, const Eigen::Vector3d &normal);
+// the triangle collisions (triangle_collisions.cpp): the positions at the sub-step's start, then,
+// after the contacts, every particle and sheet edge kept off the sheets' triangles
+void rememberTriangleStart(const Model &model, const State &state, Workspace &work);
+void collideTriangles(const Model &model, State &state, Workspace &work);
 void breakSprings(const Model &model, State &state, Workspace &work);      // spring_breaks.cpp
 // every position and velocity finite and bounded (only the pinned particles' when freeChecked says
 // the integrator checked the free ones); else records the first culprit in work.blowup

@@ -10,7 +10,8 @@ namespace core {
 
 // the stages of one sub-step, in the order they run; FusedSubStep stands for the force stages
 // and the integration of a model whose plan fuses them (StepPlan::subStep); PlaneCollisions and
-// ParticleCollisions are the handout's contact passes, Contacts the iterative solver
+// ParticleCollisions are the handout's contact passes, Contacts the iterative solver,
+// TriangleCollisions the sheets' (with either)
 enum class Stage {
     Gravity,
     Drag,
@@ -21,10 +22,11 @@ enum class Stage {
     PlaneCollisions,
     ParticleCollisions,
     Contacts,
+    TriangleCollisions,
     Breaks,
     Check
 };
-inline constexpr int kStageCount = 11;
+inline constexpr int kStageCount = 12;
 
 struct StageTiming {
     std::uint64_t calls = 0;

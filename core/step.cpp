@@ -33,6 +33,7 @@ bool step(const Model &model, State &state, Workspace &work)
         // chose when the model was compiled
         bool freeChecked = false;  // whether the update checked the free particles' new values
         rememberSubStepStart(model, state, work);  // the contact solver's paths start here
+        rememberTriangleStart(model, state, work);
         switch (plan.subStep) {
         case SubStepPath::FusedLattice:
             // the Euler schemes on a lattice: every force pass and the update fused, a block of
@@ -63,6 +64,11 @@ bool step(const Model &model, State &state, Workspace &work)
             timed(profile, Stage::ParticleCollisions, plan.particleCollisions,
                   [&] { collideParticles(model, state, work); });
         }
+
+        // 3b. nothing through a sheet: particles and sheet edges against the sheets' triangles
+        if (plan.triangleCollisions)
+            freeChecked = false;
+        timed(profile, Stage::TriangleCollisions, plan.triangleCollisions, [&] { collideTriangles(model, state, work); });
 
         // springs stretched past their breaking strain break, for good
         timed(profile, Stage::Breaks, plan.springBreaks, [&] { breakSprings(model, state, work); });

@@ -284,7 +284,8 @@ LoadResult parseScene(const QByteArray &json, const QString &sourceName, const L
     const std::pair<QString, qsizetype> lists[] = {{QStringLiteral("particles"), limits.particles},
                                                    {QStringLiteral("springs"), limits.springs},
                                                    {QStringLiteral("planes"), limits.planes},
-                                                   {QStringLiteral("contactImpulses"), limits.contactImpulses}};
+                                                   {QStringLiteral("contactImpulses"), limits.contactImpulses},
+                                                   {QStringLiteral("triangles"), limits.triangles}};
     for (const auto &[key, limit] : lists)
         if (const qsizetype count = lengths.value(key, 0); count > limit) {
             result.error = sourceName + u": "_s + key + u": "_s +
@@ -447,7 +448,16 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
     if (s.staticFriction)
         out += "        \"staticFriction\": " + formatNumber(*s.staticFriction) + ",\n";
     out += "        \"planeCollisions\": " + flag(s.planeCollisions) + ",\n";
-    out += "        \"particleCollisions\": " + flag(s.particleCollisions) + "\n    },\n";
+    out += "        \"particleCollisions\": " + flag(s.particleCollisions);
+    // the sheets' collisions, only where they differ from the defaults, so that other files stay
+    // as they were
+    if (s.triangleCollisions)
+        out += ",\n        \"triangleCollisions\": true";
+    if (!s.selfCollision)
+        out += ",\n        \"selfCollision\": false";
+    if (s.thickness > 0.0)
+        out += ",\n        \"thickness\": " + formatNumber(s.thickness);
+    out += "\n    },\n";
 
     // particles, springs and planes, one per line
     appendList(out, "particles", scene.particles, false, [&](const core::ParticleDesc &p) {
@@ -485,6 +495,14 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
             out += ", \"normal\": " + formatNumber(c.normal) + ", \"friction\": ";
             appendVector(out, c.friction);
             out += '}';
+        });
+    }
+    // the sheets' triangles, only when the scene lists them
+    if (!scene.triangles.empty()) {
+        out.chop(1);
+        out += ",\n";
+        appendList(out, "triangles", scene.triangles, true, [&](const std::array<int, 3> &t) {
+            out += '[' + QByteArray::number(t[0]) + ", " + QByteArray::number(t[1]) + ", " + QByteArray::number(t[2]) + ']';
         });
     }
     out += "}\n";

@@ -25,6 +25,7 @@ inline constexpr qsizetype kMaxParticles = 10'000'000;
 inline constexpr qsizetype kMaxSprings = 100'000'000;          // room for a cloth's ~6 springs per particle
 inline constexpr qsizetype kMaxPlanes = 10'000;
 inline constexpr qsizetype kMaxContactImpulses = 100'000'000;  // a pile's ~3 contacts per particle, with room
+inline constexpr qsizetype kMaxTriangles = 100'000'000;        // a sheet's ~2 triangles per particle, with room
 inline constexpr int kMaxNestingDepth = 32;  // arrays and objects open at once; the format itself needs 4
 
 // the limits a load checks; a caller (or a test) may pass smaller ones
@@ -34,6 +35,7 @@ struct LoadLimits {
     qsizetype springs = kMaxSprings;
     qsizetype planes = kMaxPlanes;
     qsizetype contactImpulses = kMaxContactImpulses;
+    qsizetype triangles = kMaxTriangles;
     int nestingDepth = kMaxNestingDepth;
 };
 

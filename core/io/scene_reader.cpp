@@ -72,14 +72,15 @@ constexpr qsizetype kListedWarnings = 100;
 constexpr std::array kSettingsKeys{"timeStep"_L1,      "substeps"_L1,        "autoSubsteps"_L1,  "integrator"_L1,
                                    "xpbdIterations"_L1, "tolerance"_L1,     "adaptiveStep"_L1,    "gravity"_L1,       "viscosity"_L1,
                                    "restitution"_L1,   "contactSolver"_L1,   "friction"_L1,      "staticFriction"_L1,
-                                   "planeCollisions"_L1, "particleCollisions"_L1};
+                                   "planeCollisions"_L1, "particleCollisions"_L1, "triangleCollisions"_L1,
+                                   "selfCollision"_L1, "thickness"_L1};
 constexpr std::array kParticleKeys{"position"_L1, "velocity"_L1, "mass"_L1, "radius"_L1, "pinned"_L1};
 constexpr std::array kSpringKeys{"particles"_L1, "stiffness"_L1, "damping"_L1, "restLength"_L1, "breakStrain"_L1};
 constexpr std::array kPlaneKeys{"normal"_L1, "offset"_L1,  "twoSided"_L1, "friction"_L1,
                                 "size"_L1,   "centre"_L1,  "axis"_L1};
 constexpr std::array kImpulseKeys{"particle"_L1, "other"_L1, "plane"_L1, "normal"_L1, "friction"_L1};
 constexpr std::array kRootKeys{"format"_L1, "version"_L1, "name"_L1,     "settings"_L1,       "particles"_L1,
-                               "springs"_L1, "planes"_L1, "steerable"_L1, "contactImpulses"_L1};
+                               "springs"_L1, "planes"_L1, "steerable"_L1, "contactImpulses"_L1, "triangles"_L1};
 
 // where a top-level key is in kRootKeys
 std::size_t rootIndex(QLatin1StringView key)
@@ -113,6 +114,7 @@ private:
     bool checkSpring(std::array<Item, kSpringKeys.size()> &items, qsizetype i);
     bool checkPlane(std::array<Item, kPlaneKeys.size()> &items, qsizetype i);
     bool checkImpulse(std::array<Item, kImpulseKeys.size()> &items, qsizetype i);
+    bool readTriangles(JsonToken first);
     bool checkHeader();
 
     bool fail(const QString &path, const QString &reason)
@@ -226,6 +228,7 @@ private:
     Section m_planes;
     Section m_steerable;
     Section m_impulses;
+    Section m_triangles;
     Section m_root;  // the top-level object's own warnings
     Section *m_section = &m_header;
 
@@ -319,7 +322,10 @@ void SceneTextReader::checkSettings(std::array<Item, kSettingsKeys.size()> &item
         !member(at("friction"_L1), path, "friction"_L1, optional, settings.friction) ||
         !member(at("staticFriction"_L1), path, "staticFriction"_L1, optional, staticFriction, &hasStaticFriction) ||
         !member(at("planeCollisions"_L1), path, "planeCollisions"_L1, optional, settings.planeCollisions) ||
-        !member(at("particleCollisions"_L1), path, "particleCollisions"_L1, optional, settings.particleCollisions))
+        !member(at("particleCollisions"_L1), path, "particleCollisions"_L1, optional, settings.particleCollisions) ||
+        !member(at("triangleCollisions"_L1), path, "triangleCollisions"_L1, optional, settings.triangleCollisions) ||
+        !member(at("selfCollision"_L1), path, "selfCollision"_L1, optional, settings.selfCollision) ||
+        !member(at("thickness"_L1), path, "thickness"_L1, optional, settings.thickness))
         return;
 
     // the integrator and the contact solver by name; the static coefficient only when given
@@ -504,6 +510,47 @@ bool SceneTextReader::checkImpulse(std::array<Item, kImpulseKeys.size()> &items,
     return true;
 }
 
+// the sheets' triangles: an array of arrays of three particle indices (findProblem() checks they
+// exist and differ)
+bool SceneTextReader::readTriangles(JsonToken first)
+{
+    m_section = &m_triangles;
+    const auto listPath = [] { return u"triangles"_s; };
+    if (first != JsonToken::BeginArray) {
+        Item item;
+        if (!take(first, item))
+            return false;
+        expected(listPath, u"an array"_s, first);
+        return true;
+    }
+    for (qsizetype i = 0;; ++i) {
+        const JsonToken token = m_in.next();
+        if (token == JsonToken::EndArray)
+            return true;
+        Item item;
+        if (!take(token, item))
+            return false;
+        if (m_triangles.failed())
+            continue;
+        const auto path = [i] { return elementPath(u"triangles"_s, i); };
+        if (item.kind != JsonToken::BeginArray) {
+            expected(path, u"an array of 3 particle indices"_s, item.kind);
+            continue;
+        }
+        if (item.size != 3) {
+            fail(path(), u"expected an array of 3 particle indices, got "_s + QString::number(item.size));
+            continue;
+        }
+        std::array<int, 3> corners{};
+        bool ok = true;
+        for (int c = 0; c < 3 && ok; ++c)
+            ok = read(item.itemKinds[std::size_t(c)], item.items[std::size_t(c)], [&] { return elementPath(path(), c); },
+                      corners[std::size_t(c)]);
+        if (ok)
+            m_scene.triangles.push_back(corners);
+    }
+}
+
 bool SceneTextReader::read()
 {
     if (m_in.next() != JsonToken::BeginObject)
@@ -527,7 +574,7 @@ bool SceneTextReader::read()
         bool ok = true;
         // a list met a second time is only read through: the key that comes twice is the message
         if (again && (key == "settings"_L1 || key == "particles"_L1 || key == "springs"_L1 || key == "planes"_L1 ||
-                      key == "contactImpulses"_L1)) {
+                      key == "contactImpulses"_L1 || key == "triangles"_L1)) {
             ok = m_in.skipRest(first);
         } else if (key == "settings"_L1) {
             ok = readSettings(first);
@@ -549,6 +596,9 @@ bool SceneTextReader::read()
             m_scene.contactImpulses.reserve(std::size_t(m_lengths.value(key, 0)));
             ok = readList(first, m_impulses, key,
                           elementCheck<kImpulseKeys>([this](auto &items, qsizetype i) { return checkImpulse(items, i); }));
+        } else if (key == "triangles"_L1) {
+            m_scene.triangles.reserve(std::size_t(m_lengths.value(key, 0)));
+            ok = readTriangles(first);
         } else {
             // format, version, name, steerable: small values; the last of two is the one kept, as
             // in Qt's objects
@@ -626,7 +676,8 @@ LoadResult SceneTextReader::result()
         if (moreWarnings > 0)
             result.warnings += m_source + u": "_s + QString::number(moreWarnings) + u" more unknown keys, ignored"_s;
     };
-    for (const Section *section : {&m_settings, &m_particles, &m_springs, &m_planes, &m_steerable, &m_impulses, &m_root}) {
+    for (const Section *section :
+         {&m_settings, &m_particles, &m_springs, &m_planes, &m_steerable, &m_impulses, &m_triangles, &m_root}) {
         result.warnings += section->warnings;
         moreWarnings += section->moreWarnings;
         if (section->failed()) {

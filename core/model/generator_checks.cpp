@@ -126,6 +126,7 @@ std::optional<std::string> checkOptions(const ClothOptions &o)
         .value("damping", Parameter::Damping, o.damping)
         .value("substeps", Parameter::Substeps, o.substeps)
         .value("height", Parameter::Coordinate, o.height)
+        .value("thickness", Parameter::Thickness, o.thickness)
         .extent(o.spacing * std::hypot(o.rows - 1, o.cols - 1));
     return check.result();
 }

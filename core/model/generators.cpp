@@ -46,6 +46,18 @@ void joinGrid(SceneDesc &scene, int rows, int cols, double spacing, int dr, int 
         }
 }
 
+// the grid's cells as two triangles each, split along the diagonal (r, c)-(r + 1, c + 1) (a shear
+// spring), counter-clockwise seen from +y
+void addGridTriangles(SceneDesc &scene, int rows, int cols)
+{
+    for (int r = 0; r + 1 < rows; ++r)
+        for (int c = 0; c + 1 < cols; ++c) {
+            const int p00 = r * cols + c, p01 = p00 + 1, p10 = p00 + cols, p11 = p10 + 1;
+            scene.triangles.push_back({p00, p10, p11});
+            scene.triangles.push_back({p00, p11, p01});
+        }
+}
+
 }  // namespace
 
 SceneDesc makeNet(const NetOptions &o)
@@ -76,6 +88,12 @@ SceneDesc makeCloth(const ClothOptions &o)
     joinGrid(scene, o.rows, o.cols, o.spacing, 1, -1, o.shearStiffness, o.damping);
     joinGrid(scene, o.rows, o.cols, o.spacing, 0, 2, o.bendStiffness, o.damping);
     joinGrid(scene, o.rows, o.cols, o.spacing, 2, 0, o.bendStiffness, o.damping);
+    if (o.sheetCollisions) {
+        addGridTriangles(scene, o.rows, o.cols);
+        scene.settings.triangleCollisions = true;
+        scene.settings.thickness = o.thickness;
+        scene.settings.selfCollision = o.selfCollision;
+    }
     if (o.pinCorners) {
         scene.particles.front().pinned = true;
         scene.particles[static_cast<std::size_t>(o.cols - 1)].pinned = true;

@@ -30,7 +30,8 @@ struct NetOptions {
 SceneDesc makeNet(const NetOptions &options);
 
 // a cloth: an n × m sheet in the horizontal plane y = height with structural (neighbour), shear
-// (diagonal) and bend (second neighbour) springs, pinned at the two corners of its first row
+// (diagonal) and bend (second neighbour) springs, pinned at the two corners of its first row; with
+// sheetCollisions, its cells' triangles listed (two a cell) and triangle collisions on
 struct ClothOptions {
     int rows = 32;
     int cols = 32;
@@ -43,6 +44,12 @@ struct ClothOptions {
     double bendStiffness = 100.0;         // N/m
     double damping = 0.02;                // N·s/m, every spring
     bool pinCorners = true;
+    // m, how far apart the sheet keeps from itself and others (0: from the radius and spacing), and
+    // whether it collides with itself (Settings::thickness, Settings::selfCollision)
+    double thickness = 0.0;
+    bool selfCollision = true;
+    // the sheet collides as a surface (Settings::triangleCollisions), its cells' triangles listed
+    bool sheetCollisions = false;
     // sub-steps per step of the default 0.01 s: keeps ω h under symplectic Euler's limit of 2
     // (Gershgorin: ω² ≤ 2 Σk / m ≈ 5.9e6 s⁻², so h = 5e-4 s gives ω h ≤ 1.2)
     int substeps = 20;

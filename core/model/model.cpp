@@ -135,11 +135,32 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *b
 
     // the triangles the viewport draws a cloth with: the model's before the edit if it had the
     // same springs between the same particles
-    if (before && before->particleCount() == n && before->springA == model->springA &&
-        before->springB == model->springB)
+    const bool sameSprings = before && before->particleCount() == n && before->springA == model->springA &&
+                             before->springB == model->springB && before->triangles;
+    const auto listedAsBefore = [&] {
+        const std::vector<int> &corners = before->triangles->corners;
+        if (corners.size() != 3 * scene.triangles.size())
+            return false;
+        for (std::size_t t = 0; t < scene.triangles.size(); ++t)
+            for (std::size_t c = 0; c < 3; ++c)
+                if (corners[3 * t + c] != scene.triangles[t][c])
+                    return false;
+        return true;
+    };
+    if (sameSprings && (scene.triangles.empty() ? true : listedAsBefore()))
         model->triangles = before->triangles;
+    else if (!scene.triangles.empty())
+        model->triangles = std::make_shared<const SpringTriangles>(sceneTriangles(scene));
     else if (plan.springs)
-        model->triangles = std::make_shared<const SpringTriangles>(findSpringTriangles(scene));
+        model->triangles = std::make_shared<const SpringTriangles>(sceneTriangles(scene));
+    // the sheets among them, for the triangle collisions
+    if (s.triangleCollisions && anythingFree && model->triangles && !model->triangles->empty()) {
+        auto surface = std::make_shared<const ClothSurface>(makeClothSurface(scene, *model->triangles));
+        if (!surface->empty()) {
+            model->surface = std::move(surface);
+            plan.triangleCollisions = true;
+        }
+    }
 
     // auto substeps: as many as the stability limit at the initial state asks, and no fewer than the
     // scene's own

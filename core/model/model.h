@@ -3,6 +3,7 @@
 // between threads as std::shared_ptr<const Model>. The step plan says which passes this scene
 // needs; a pass the plan leaves out is never run.
 
+#include "core/contacts/cloth_surface.h"
 #include "core/contacts/colliders.h"
 #include "core/model/scene.h"
 #include "core/springs/spring_layout.h"
@@ -32,6 +33,9 @@ struct StepPlan {
     bool planeCollisions = false;     // switched on, a plane, and something free
     bool particleCollisions = false;  // switched on, two particles, one of them free
     bool springBreaks = false;        // a spring with a breaking strain
+    // switched on, a sheet's triangle, and something free: particles and sheet edges against the
+    // sheets' triangles (triangle_collisions.cpp)
+    bool triangleCollisions = false;
     // the contacts go through the iterative solver (contacts.cpp) rather than the handout's passes:
     // its choice, and a contact pass planned
     bool contactSolver = false;
@@ -86,6 +90,9 @@ struct Model {
     // the spring mesh's triangles, for drawing it as a sheet (spring_triangles.h); found once, here,
     // and shared by every snapshot of the model
     std::shared_ptr<const SpringTriangles> triangles;
+    // the triangles that collide, in sheets with their thickness (cloth_surface.h); set while the
+    // plan has triangle collisions
+    std::shared_ptr<const ClothSurface> surface;
 
     // planes n·p = offset, unit normals
     Eigen::Matrix3Xd planeNormal;

@@ -48,6 +48,10 @@ constexpr ParameterInfo kTable[] = {
      "xpbd's passes over the springs in each sub-step: more hold stiff springs closer to their rest length, "
      "at that many times the cost of the pass",
      1.0, 20.0},
+    {Parameter::Thickness, "thickness", "Thickness", "m", 0.0, 1.0e3, false, Scale::Linear, 0.0,
+     "How far apart a sheet keeps from itself, other sheets and particles in a triangle collision; "
+     "0: each sheet's own, from its particles' radii and its shortest side",
+     0.0, 0.1},
 };
 
 }  // namespace

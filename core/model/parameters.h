@@ -32,8 +32,9 @@ enum class Parameter {
     Friction,     // a Coulomb coefficient, static or kinetic
     Extent,       // a side of a rectangle
     XpbdIterations,  // xpbd's passes over the springs a sub-step
+    Thickness,       // how far apart sheets stay; 0: each sheet's own
 };
-inline constexpr int kParameterCount = static_cast<int>(Parameter::XpbdIterations) + 1;
+inline constexpr int kParameterCount = static_cast<int>(Parameter::Thickness) + 1;
 
 enum class Scale { Linear, Log };
 

@@ -5,6 +5,7 @@
 #include "core/integrators/integrator.h"
 
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,14 @@ struct Settings {
     std::optional<double> staticFriction{};
     bool planeCollisions = true;
     bool particleCollisions = true;
+    // the sheets' triangles (SceneDesc::triangles, or those the springs span) as surfaces that
+    // particles and other sheets collide with (docs/physics.md, "Triangle collisions"); off unless
+    // asked for while the pass costs several times the rest of a cloth's sub-step
+    bool triangleCollisions = false;
+    // a sheet collides with itself too (two sheets always collide with each other)
+    bool selfCollision = true;
+    // m, how far apart two sheets stay; 0: each sheet's own, from its particles' radii
+    double thickness = 0.0;
 
     bool operator==(const Settings &) const = default;
 };
@@ -111,6 +120,9 @@ struct SceneDesc {
     std::vector<PlaneDesc> planes;
     int steerable = -1;  // the particle the arrow keys push (the pool's cue ball); -1: none
     std::vector<ContactImpulse> contactImpulses;  // sorted by (i, j); empty in a scene not yet run
+    // the triangles of its sheets, three particle indices each, for drawing and for the triangle
+    // collisions; empty: those its springs span (core/contacts/cloth_surface.h, sceneTriangles)
+    std::vector<std::array<int, 3>> triangles;
 
     bool operator==(const SceneDesc &) const = default;
 };

@@ -72,6 +72,21 @@ void storeState(const State &state, SceneDesc &scene)
     if (state.breaks.empty())
         return;
     assert(state.springBroken.size() == scene.springs.size());
+    // the triangles it lists that a broken spring tore go too: a torn sheet goes on as torn
+    if (!scene.triangles.empty()) {
+        const SpringTriangles listed = sceneTriangles(scene);
+        std::size_t whole = 0;
+        for (std::size_t t = 0; t < scene.triangles.size(); ++t) {
+            bool torn = false;
+            for (std::size_t s = 0; s < 3; ++s) {
+                const int spring = listed.sides[3 * t + s];
+                torn = torn || (spring >= 0 && state.springBroken[std::size_t(spring)] != 0);
+            }
+            if (!torn)
+                scene.triangles[whole++] = scene.triangles[t];
+        }
+        scene.triangles.resize(whole);
+    }
     std::size_t kept = 0;
     for (std::size_t k = 0; k < scene.springs.size(); ++k)
         if (state.springBroken[k] == 0)

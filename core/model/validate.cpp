@@ -74,6 +74,7 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
         !check(Parameter::Viscosity, s.viscosity, "settings.viscosity", problem) ||
         !check(Parameter::Restitution, s.restitution, "settings.restitution", problem) ||
         !check(Parameter::Friction, s.friction, "settings.friction", problem) ||
+        !check(Parameter::Thickness, s.thickness, "settings.thickness", problem) ||
         (s.staticFriction && !check(Parameter::Friction, *s.staticFriction, "settings.staticFriction", problem)))
         return problem;
 
@@ -124,6 +125,18 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
         if ((plane.size[0] > 0.0) != (plane.size[1] > 0.0))
             return SceneProblem{indexed("planes", i, "size"),
                                 "needs both sides greater than 0 m for a rectangle, or both 0 for the whole plane"};
+    }
+    // the sheets' triangles: three different particles each
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+        const std::array<int, 3> &t = scene.triangles[i];
+        for (std::size_t corner = 0; corner < 3; ++corner)
+            if (t[corner] < 0 || t[corner] >= count)
+                return SceneProblem{"triangles[" + std::to_string(i) + "][" + std::to_string(corner) + "]",
+                                    "particle index " + std::to_string(t[corner]) +
+                                        " is out of range (the scene has " + std::to_string(count) + " particles)"};
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+            return SceneProblem{"triangles[" + std::to_string(i) + "]",
+                                "names a particle twice: a triangle needs three different particles"};
     }
     // the particle the arrow keys push
     if (scene.steerable < -1 || scene.steerable >= count)

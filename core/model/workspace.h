@@ -6,6 +6,7 @@
 
 #include "core/contacts/contact_grid.h"
 #include "core/contacts/contact_scratch.h"
+#include "core/contacts/triangle_scratch.h"
 #include "core/blowup.h"
 #include "core/profile.h"
 #include "core/integrators/xpbd_layout.h"
@@ -40,6 +41,7 @@ struct Workspace {
     std::vector<std::uint8_t> xpbdTornFlags;
     ContactGrid contacts;  // the particle-pair pass's grid and pairs (broad_phase.cpp)
     ContactScratch contactSolver;  // the iterative contact solver's (contacts.cpp)
+    TriangleScratch triangles;     // the triangle collisions' (triangle_collisions.cpp)
 
     Profile profile;
     // set by the step that stopped being finite or bounded; step() refuses to go on until it is

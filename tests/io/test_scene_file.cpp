@@ -10,6 +10,7 @@
 #include "core/contacts/colliders.h"
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
+#include "core/model/generators.h"
 #include "core/model/validate.h"
 #include "tests/address_space_cap.h"
 
@@ -292,6 +293,9 @@ private slots:
     void surrogatePairIsACharacter();
     void roundTripAwkward();
     void roundTripRandomBits();
+    void trianglesAndSheetSettingsRoundTrip();
+    void badTrianglesAreNamed_data();
+    void badTrianglesAreNamed();
     void examplesExist();
     void roundTripExamples_data();
     void roundTripExamples();
@@ -984,6 +988,56 @@ void TestSceneFile::roundTripRandomBits()
     const io::LoadResult result = io::parseScene(io::sceneToJson(scene), QStringLiteral("random.json"));
     QVERIFY2(result.ok(), qPrintable(result.error));
     QCOMPARE(bitDifference(scene, *result.scene), QString());
+}
+
+void TestSceneFile::trianglesAndSheetSettingsRoundTrip()
+{
+    // a cloth lists its triangles; the sheets' settings are written where they are not the defaults
+    core::ClothOptions options;
+    options.rows = 3;
+    options.cols = 4;
+    options.sheetCollisions = true;
+    core::SceneDesc scene = core::makeCloth(options);
+    QCOMPARE(scene.triangles.size(), std::size_t(12));
+    scene.settings.thickness = 0.004;
+    scene.settings.selfCollision = false;
+    const QByteArray json = io::sceneToJson(scene);
+    QVERIFY(json.contains("\"triangles\": ["));
+    QVERIFY(json.contains("\"thickness\": 0.004"));
+    QVERIFY(json.contains("\"selfCollision\": false"));
+    QVERIFY(json.contains("\"triangleCollisions\": true"));
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("sheet.json"));
+    QVERIFY2(result.ok(), qPrintable(result.error));
+    QVERIFY(result.scene->triangles == scene.triangles);
+    QVERIFY(result.scene->settings == scene.settings);
+    // the defaults are left out, so that other files stay as they were
+    core::SceneDesc plain = core::makeChain({});
+    const QByteArray chain = io::sceneToJson(plain);
+    QVERIFY(!chain.contains("triangles") && !chain.contains("thickness") && !chain.contains("selfCollision"));
+}
+
+void TestSceneFile::badTrianglesAreNamed_data()
+{
+    QTest::addColumn<QByteArray>("triangles");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("not a list") << QByteArray("3") << u"triangles: expected an array"_s;
+    QTest::newRow("two corners") << QByteArray("[[0, 1]]") << u"triangles[0]: expected an array of 3 particle indices, got 2"_s;
+    QTest::newRow("not an integer") << QByteArray("[[0, 1, 1.5]]") << u"triangles[0][2]: expected an integer"_s;
+    QTest::newRow("out of range") << QByteArray("[[0, 1, 7]]") << u"triangles[0][2]: particle index 7 is out of range"_s;
+    QTest::newRow("a corner twice") << QByteArray("[[0, 1, 1]]") << u"triangles[0]: names a particle twice"_s;
+}
+
+void TestSceneFile::badTrianglesAreNamed()
+{
+    QFETCH(QByteArray, triangles);
+    QFETCH(QString, message);
+    const QByteArray json = R"({"format": "springlab-scene", "version": 1, "name": "t", "particles": [
+        {"position": [0, 0, 0], "mass": 1, "radius": 0.1}, {"position": [1, 0, 0], "mass": 1, "radius": 0.1},
+        {"position": [0, 0, 1], "mass": 1, "radius": 0.1}], "springs": [], "planes": [], "triangles": )" +
+                            triangles + "}";
+    const io::LoadResult result = io::parseScene(json, QStringLiteral("t.json"));
+    QVERIFY(!result.ok());
+    QVERIFY2(result.error.contains(message), qPrintable(result.error));
 }
 
 void TestSceneFile::examplesExist()

@@ -25,6 +25,7 @@ namespace {
 constexpr SliderScale kLengthScale{1e-3, 100.0, core::Scale::Log, false, 1000};      // m
 constexpr SliderScale kMassScale{1e-4, 1e3, core::Scale::Log, false, 1000};          // kg
 constexpr SliderScale kRadiusScale{1e-3, 10.0, core::Scale::Log, false, 1000};       // m
+constexpr SliderScale kThicknessScale{0.0, 0.1, core::Scale::Linear, false, 1000};    // m, 0: automatic
 constexpr SliderScale kStiffnessScale{1e-1, 1e6, core::Scale::Log, true, 1000};      // N/m
 constexpr SliderScale kDampingScale{1e-3, 1e3, core::Scale::Log, true, 1000};        // N·s/m
 constexpr SliderScale kJitterScale{1e-4, 1.0, core::Scale::Log, true, 1000};         // m
@@ -220,6 +221,9 @@ void GenerateDialog::addKinds(QStackedWidget *pages)
         form.value("bend", tr("Bend k"), stiffness, &core::ClothOptions::bendStiffness, kStiffnessScale);
         form.value("damping", tr("Damping kc"), damping, &core::ClothOptions::damping, kDampingScale);
         form.toggle("pin", tr("Pin the two corners of the first row"), &core::ClothOptions::pinCorners);
+        form.toggle("sheet", tr("Collides as a surface"), &core::ClothOptions::sheetCollisions);
+        form.value("thickness", tr("Thickness (0: automatic)"), m, &core::ClothOptions::thickness, kThicknessScale);
+        form.toggle("self", tr("Collides with itself"), &core::ClothOptions::selfCollision);
     }
     {
         OptionsForm form(m_rope, "rope",

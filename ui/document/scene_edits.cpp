@@ -1,5 +1,6 @@
 #include "scene_edits.h"
 
+#include "core/contacts/cloth_surface.h"
 #include "core/contacts/contact_impulses.h"
 
 #include <Eigen/Geometry>
@@ -140,6 +141,19 @@ void removeItems(core::SceneDesc &scene, const Selection &selection)
             springs.push_back(spring);
     }
 
+    // the listed triangles of the particles that stay
+    std::vector<std::array<int, 3>> triangles;
+    for (std::array<int, 3> t : scene.triangles) {
+        bool whole = true;
+        for (int &corner : t) {
+            corner = inRange(scene, corner) ? remap[std::size_t(corner)] : -1;
+            whole = whole && corner >= 0;
+        }
+        if (whole)
+            triangles.push_back(t);
+    }
+    scene.triangles = std::move(triangles);
+
     if (scene.steerable >= 0)
         scene.steerable = inRange(scene, scene.steerable) ? remap[std::size_t(scene.steerable)] : -1;
     scene.particles = std::move(kept);
@@ -177,6 +191,17 @@ Fragment copyItems(const core::SceneDesc &scene, const Selection &selection)
         if (a >= 0 && b >= 0)
             fragment.springs.push_back({a, b, s.stiffness, s.damping, s.restLength});
     }
+    // the listed triangles all of whose corners are copied
+    for (const std::array<int, 3> &t : scene.triangles) {
+        std::array<int, 3> copied{};
+        bool whole = true;
+        for (std::size_t c = 0; c < 3; ++c) {
+            copied[c] = inRange(scene, t[c]) ? remap[std::size_t(t[c])] : -1;
+            whole = whole && copied[c] >= 0;
+        }
+        if (whole)
+            fragment.triangles.push_back(copied);
+    }
     return fragment;
 }
 
@@ -184,6 +209,21 @@ Selection pasteFragment(core::SceneDesc &scene, const Fragment &fragment, const 
 {
     Selection added;
     const int base = static_cast<int>(scene.particles.size());
+    // a scene that lists triangles keeps listing all of them: the scene's own (those its springs
+    // make, when it listed none) and the fragment's
+    if (!scene.triangles.empty() || !fragment.triangles.empty()) {
+        if (scene.triangles.empty())
+            scene.triangles = core::listedTriangles(scene);
+        std::vector<std::array<int, 3>> added = fragment.triangles;
+        if (added.empty()) {
+            core::SceneDesc part;
+            part.particles = fragment.particles;
+            part.springs = fragment.springs;
+            added = core::listedTriangles(part);
+        }
+        for (std::array<int, 3> t : added)
+            scene.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    }
     for (core::ParticleDesc p : fragment.particles) {
         p.position += offset;
         added.particles.push_back(addParticle(scene, p));
@@ -208,7 +248,14 @@ Selection addGenerated(core::SceneDesc &scene, const core::SceneDesc &generated,
         high = high.cwiseMax(p.position);
     }
     scene.settings.substeps = std::max(scene.settings.substeps, generated.settings.substeps);
-    return pasteFragment(scene, Fragment{generated.particles, generated.springs}, centre - 0.5 * (low + high));
+    // a generated sheet's thickness and self-collision (Generate › Cloth) become the scene's
+    if (!generated.triangles.empty()) {
+        if (generated.settings.thickness > 0.0)
+            scene.settings.thickness = generated.settings.thickness;
+        scene.settings.selfCollision = generated.settings.selfCollision;
+        scene.settings.triangleCollisions = true;
+    }
+    return pasteFragment(scene, Fragment{generated.particles, generated.springs, generated.triangles}, centre - 0.5 * (low + high));
 }
 
 void moveParticles(core::SceneDesc &scene, const std::vector<int> &particles, const std::vector<Eigen::Vector3d> &from,

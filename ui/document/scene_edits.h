@@ -42,6 +42,7 @@ std::vector<int> selectedParticles(const core::SceneDesc &scene, const Selection
 struct Fragment {
     std::vector<core::ParticleDesc> particles;
     std::vector<core::SpringDesc> springs;  // indices into particles
+    std::vector<std::array<int, 3>> triangles;  // indices into particles; empty: its springs'
     bool empty() const { return particles.empty(); }
 };
 

@@ -79,6 +79,10 @@ const Binding kBindings[] = {
     {"staticFriction", core::Parameter::Friction, Group::Contacts, "",
      [](const core::SceneDesc &s) { return s.settings.staticFriction.value_or(s.settings.friction); },
      [](core::Settings &s, double v) { s.staticFriction = v; }, nullptr},
+    // 0: each sheet's own thickness, from its particles' radii
+    {"thickness", core::Parameter::Thickness, Group::Contacts, "",
+     [](const core::SceneDesc &s) { return s.settings.thickness; },
+     [](core::Settings &s, double v) { s.thickness = v; }, nullptr},
     {"stiffness", core::Parameter::Stiffness, Group::Springs, "", firstSpring<&core::SpringDesc::stiffness>,
      nullptr, &core::SpringDesc::stiffness},
     {"damping", core::Parameter::Damping, Group::Springs, "", firstSpring<&core::SpringDesc::damping>, nullptr,
@@ -244,6 +248,26 @@ ParametersPanel::ParametersPanel(SceneDocument &document, QWidget *parent)
             [this](bool on) { setCollisions(on, m_document.scene().settings.particleCollisions); });
     connect(m_particleCollisions, &QCheckBox::toggled, this,
             [this](bool on) { setCollisions(m_document.scene().settings.planeCollisions, on); });
+    // the sheets' triangles as surfaces, and a sheet against itself
+    m_triangleCollisions = new QCheckBox(tr("Sheet collisions"), this);
+    m_triangleCollisions->setObjectName(QStringLiteral("parameter-triangleCollisions"));
+    m_triangleCollisions->setToolTip(tr("A cloth is a surface: particles and other sheets stay on their side of its "
+                                        "triangles, at the thickness, whatever their speed"));
+    m_selfCollision = new QCheckBox(tr("Self-collision"), this);
+    m_selfCollision->setObjectName(QStringLiteral("parameter-selfCollision"));
+    m_selfCollision->setToolTip(tr("A sheet does not pass through itself when it folds"));
+    forms[std::size_t(Group::Contacts)]->addRow(m_triangleCollisions);
+    forms[std::size_t(Group::Contacts)]->addRow(m_selfCollision);
+    connect(m_triangleCollisions, &QCheckBox::toggled, this, [this](bool on) {
+        core::Settings settings = m_document.scene().settings;
+        settings.triangleCollisions = on;
+        pushSettings(settings, tr("Switch sheet collisions"));
+    });
+    connect(m_selfCollision, &QCheckBox::toggled, this, [this](bool on) {
+        core::Settings settings = m_document.scene().settings;
+        settings.selfCollision = on;
+        pushSettings(settings, tr("Switch self-collision"));
+    });
 
     // refusals show below the groups until the next accepted change
     m_message->setObjectName(QStringLiteral("parameter-message"));
@@ -298,6 +322,11 @@ void ParametersPanel::refresh()
         const QSignalBlocker blockParticles(m_particleCollisions);
         m_planeCollisions->setChecked(scene.settings.planeCollisions);
         m_particleCollisions->setChecked(scene.settings.particleCollisions);
+        const QSignalBlocker blockSheets(m_triangleCollisions);
+        const QSignalBlocker blockSelf(m_selfCollision);
+        m_triangleCollisions->setChecked(scene.settings.triangleCollisions);
+        m_selfCollision->setChecked(scene.settings.selfCollision);
+        m_selfCollision->setEnabled(scene.settings.triangleCollisions);
     }
 
     // spring values apply to every spring; say so, and say when they differ now
@@ -405,6 +434,12 @@ void ParametersPanel::showStability(const core::StabilityLimit &limit, const cor
     case StabilityLevel::Near: m_stabilityNote->setStyleSheet(QStringLiteral("color: #b06000")); break;
     case StabilityLevel::Past: m_stabilityNote->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold")); break;
     }
+}
+
+void ParametersPanel::pushSettings(const core::Settings &settings, const QString &text)
+{
+    m_message->hide();
+    m_document.undoStack()->push(new SettingsCommand(m_document, text, QStringLiteral("collisions"), settings));
 }
 
 void ParametersPanel::setCollisions(bool planes, bool particles)

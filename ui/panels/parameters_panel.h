@@ -17,6 +17,7 @@ class QLabel;
 
 namespace core {
 struct Model;
+struct Settings;
 struct StabilityLimit;
 }
 
@@ -38,6 +39,8 @@ public:
     QComboBox *integratorBox() const { return m_integrator; }
     QCheckBox *planeCollisionsBox() const { return m_planeCollisions; }
     QCheckBox *particleCollisionsBox() const { return m_particleCollisions; }
+    QCheckBox *triangleCollisionsBox() const { return m_triangleCollisions; }
+    QCheckBox *selfCollisionBox() const { return m_selfCollision; }
     QCheckBox *autoSubstepsBox() const { return m_autoSubsteps; }
     // the contact solvers in core::kContactSolvers order: "Iterative", "Handout"
     QComboBox *contactSolverBox() const { return m_contactSolver; }
@@ -62,6 +65,8 @@ private:
     void showRefusal(const QString &message);
     void edit(std::size_t binding, double value);
     void setCollisions(bool planes, bool particles);
+    // a settings change from one of the switches, undoable
+    void pushSettings(const core::Settings &settings, const QString &text);
     void setIntegrator(int index);
     void setAutoSubsteps(bool on);
     void setContactSolver(int index);
@@ -74,6 +79,8 @@ private:
     QComboBox *m_integrator = nullptr;
     QCheckBox *m_planeCollisions = nullptr;
     QCheckBox *m_particleCollisions = nullptr;
+    QCheckBox *m_triangleCollisions = nullptr;
+    QCheckBox *m_selfCollision = nullptr;
     QCheckBox *m_autoSubsteps = nullptr;
     QComboBox *m_contactSolver = nullptr;
     QCheckBox *m_staticFollows = nullptr;
