@@ -15,6 +15,7 @@
 // triangle's corners or an edge's ends by their weights in the closest points and their masses.
 
 #include "core/contacts/triangle_geometry.h"
+#include "core/parallel.h"
 #include "core/passes.h"
 
 #include <algorithm>
@@ -31,6 +32,15 @@ constexpr int kPasses = 4;
 constexpr int kZoneRounds = 64;
 // a box over more grid cells than this is checked against every item instead
 constexpr long long kMostCells = 512;
+// how far a particle may move from where the candidates were found before they are found again:
+// this share of the thickest sheet's thickness (a sheet at rest keeps its candidates; one that
+// moves finds them again each sub-step, the fewer for it)
+constexpr double kBoundThickness = 0.5;
+// the grid's cell edge over the triangles' mean box (measured on a 64 x 64 sheet crumpling: 1.5
+// searches 17% faster than 1, 0.5 and 3 a half and a sixth slower)
+constexpr double kCellPerBox = 1.5;
+// an empty slot of a grid's hash table (no cell key has every bit set: keys have 63)
+constexpr std::uint64_t kNoCell = ~std::uint64_t(0);
 
 using Vec = Eigen::Vector3d;
 
@@ -65,7 +75,7 @@ std::array<Vec, 4> gather(const Eigen::Matrix3Xd &x, const std::array<int, 4> &v
     return {x.col(v[0]), x.col(v[1]), x.col(v[2]), x.col(v[3])};
 }
 
-// ---- broad phase: a hashed grid of the swept boxes ------------------------------------------
+// ---- broad phase: a hashed grid of boxes ------------------------------------------------------
 
 // cells of an edge `size`, cell (x, y, z) holding floor(p / size)
 struct Cells {
@@ -85,22 +95,31 @@ std::uint64_t cellKey(long long x, long long y, long long z)
     return ((std::uint64_t(x) & mask) << 42) | ((std::uint64_t(y) & mask) << 21) | (std::uint64_t(z) & mask);
 }
 
-struct CellRange {
-    long long lo[3], hi[3];
-    long long count() const
-    {
-        long long c = 1;
-        for (int a = 0; a < 3; ++a) {
-            const long long span = hi[a] - lo[a] + 1;
-            if (span > kMostCells)
-                return kMostCells + 1;
-            c *= span;
-            if (c > kMostCells)
-                return kMostCells + 1;
-        }
-        return c;
+// a cell key's slot in an open-addressing table of mask + 1 slots (a multiplicative hash)
+std::size_t slotOf(std::uint64_t key, std::uint64_t mask)
+{
+    return std::size_t(((key * 0x9E3779B97F4A7C15ull) >> 17) & mask);
+}
+
+}  // namespace
+
+long long CellRange::count() const
+{
+    long long c = 1;
+    for (int a = 0; a < 3; ++a) {
+        const long long span = hi[a] - lo[a] + 1;
+        if (span <= 0)
+            return 0;
+        if (span > kMostCells)
+            return kMostCells + 1;
+        c *= span;
+        if (c > kMostCells)
+            return kMostCells + 1;
     }
-};
+    return c;
+}
+
+namespace {
 
 CellRange rangeOf(const Cells &cells, const Vec &low, const Vec &high)
 {
@@ -118,38 +137,81 @@ bool overlap(const Vec &aLow, const Vec &aHigh, const Vec &bLow, const Vec &bHig
            aLow.z() <= bHigh.z() && bLow.z() <= aHigh.z();
 }
 
-// whether cell (x, y, z) is the one holding the low corner of the two boxes' overlap: a pair met
-// in several cells is kept in that one alone
-bool firstCell(const Cells &cells, const Vec &aLow, const Vec &bLow, long long x, long long y, long long z)
+// The grid of one kind of item (triangles or edges): a hash table from each occupied cell to its
+// run of entries, the runs in one array, each run in item order (a counting sort: no comparison
+// sort of the entries). A box over too many cells is kept aside and checked against every query.
+void fillGrid(const Cells &cells, const Eigen::Matrix3Xd &low, const Eigen::Matrix3Xd &high,
+              const std::vector<std::uint8_t> &active, TriangleGrid &grid)
 {
-    const Vec corner = aLow.cwiseMax(bLow);
-    return cells.index(corner.x()) == x && cells.index(corner.y()) == y && cells.index(corner.z()) == z;
-}
-
-void addCells(const Cells &cells, const Vec &low, const Vec &high, int item,
-              std::vector<std::pair<std::uint64_t, int>> &entries, std::vector<int> &big)
-{
-    const CellRange r = rangeOf(cells, low, high);
-    if (r.count() > kMostCells) {
-        big.push_back(item);
-        return;
+    const int items = int(active.size());
+    grid.big.clear();
+    grid.lowCell.resize(3, items);
+    grid.range.resize(std::size_t(items));
+    // each item's cells, and the number of entries it makes
+    std::size_t entries = 0;
+    for (int item = 0; item < items; ++item) {
+        CellRange &r = grid.range[std::size_t(item)];
+        r.lo[0] = 1;
+        r.hi[0] = 0;  // no cells
+        if (!active[std::size_t(item)] || !low.col(item).allFinite() || !high.col(item).allFinite())
+            continue;
+        r = rangeOf(cells, low.col(item), high.col(item));
+        for (int a = 0; a < 3; ++a)
+            grid.lowCell(a, item) = r.lo[a];
+        const long long count = r.count();
+        if (count > kMostCells) {
+            grid.big.push_back(item);
+            r.lo[0] = 1;
+            r.hi[0] = 0;
+            continue;
+        }
+        entries += std::size_t(count);
     }
-    for (long long x = r.lo[0]; x <= r.hi[0]; ++x)
-        for (long long y = r.lo[1]; y <= r.hi[1]; ++y)
-            for (long long z = r.lo[2]; z <= r.hi[2]; ++z)
-                entries.emplace_back(cellKey(x, y, z), item);
+    std::size_t slots = 16;
+    while (slots < 2 * entries)
+        slots *= 2;
+    grid.mask = slots - 1;
+    grid.keys.assign(slots, kNoCell);
+    grid.first.assign(slots + 1, 0);
+    auto slotFor = [&](std::uint64_t key) {
+        std::size_t slot = slotOf(key, grid.mask);
+        while (grid.keys[slot] != key && grid.keys[slot] != kNoCell)
+            slot = (slot + 1) & grid.mask;
+        return slot;
+    };
+    auto forCells = [&](int item, auto &&body) {
+        const CellRange &r = grid.range[std::size_t(item)];
+        for (long long x = r.lo[0]; x <= r.hi[0]; ++x)
+            for (long long y = r.lo[1]; y <= r.hi[1]; ++y)
+                for (long long z = r.lo[2]; z <= r.hi[2]; ++z)
+                    body(cellKey(x, y, z));
+    };
+    // count per cell, then each cell's run starts after the runs of the slots before it
+    for (int item = 0; item < items; ++item)
+        forCells(item, [&](std::uint64_t key) {
+            const std::size_t slot = slotFor(key);
+            grid.keys[slot] = key;
+            ++grid.first[slot + 1];
+        });
+    for (std::size_t slot = 0; slot < slots; ++slot)
+        grid.first[slot + 1] += grid.first[slot];
+    grid.fill.assign(grid.first.begin(), grid.first.end() - 1);
+    grid.items.resize(entries);
+    for (int item = 0; item < items; ++item)
+        forCells(item, [&](std::uint64_t key) { grid.items[std::size_t(grid.fill[slotFor(key)]++)] = item; });
 }
 
-// calls visit(item) for every item whose box overlaps the box low..high, each once: the items of
-// `entries` by the grid, the big ones all; a query box over too many cells tries every active item
+// calls visit(item) for every item whose box overlaps the box low..high, each once (in the cell
+// that holds the low corner of the two boxes' overlap); a query box over too many cells tries every
+// active item
 template <typename Visit>
-void query(const Cells &cells, const Vec &low, const Vec &high, const std::vector<std::pair<std::uint64_t, int>> &entries,
+void query(const Cells &cells, const Vec &low, const Vec &high, const TriangleGrid &grid,
            const Eigen::Matrix3Xd &itemLow, const Eigen::Matrix3Xd &itemHigh, const std::vector<std::uint8_t> &active,
-           const std::vector<int> &big, Visit &&visit)
+           int after, Visit &&visit)
 {
     const CellRange r = rangeOf(cells, low, high);
     if (r.count() > kMostCells) {
-        for (int item = 0; item < int(active.size()); ++item)
+        for (int item = after + 1; item < int(active.size()); ++item)
             if (active[std::size_t(item)] && overlap(low, high, itemLow.col(item), itemHigh.col(item)))
                 visit(item);
         return;
@@ -158,16 +220,24 @@ void query(const Cells &cells, const Vec &low, const Vec &high, const std::vecto
         for (long long y = r.lo[1]; y <= r.hi[1]; ++y)
             for (long long z = r.lo[2]; z <= r.hi[2]; ++z) {
                 const std::uint64_t key = cellKey(x, y, z);
-                auto it = std::lower_bound(entries.begin(), entries.end(), std::pair<std::uint64_t, int>{key, -1});
-                for (; it != entries.end() && it->first == key; ++it) {
-                    const int item = it->second;
-                    if (overlap(low, high, itemLow.col(item), itemHigh.col(item)) &&
-                        firstCell(cells, low, itemLow.col(item), x, y, z))
+                std::size_t slot = slotOf(key, grid.mask);
+                while (grid.keys[slot] != key && grid.keys[slot] != kNoCell)
+                    slot = (slot + 1) & grid.mask;
+                if (grid.keys[slot] == kNoCell)
+                    continue;
+                // a run is in item order: those up to `after` are skipped at once
+                const int *begin = grid.items.data() + grid.first[slot];
+                const int *end = grid.items.data() + grid.first[slot + 1];
+                for (const int *it = std::upper_bound(begin, end, after); it != end; ++it) {
+                    const int item = *it;
+                    if (std::max(r.lo[0], grid.lowCell(0, item)) == x && std::max(r.lo[1], grid.lowCell(1, item)) == y &&
+                        std::max(r.lo[2], grid.lowCell(2, item)) == z &&
+                        overlap(low, high, itemLow.col(item), itemHigh.col(item)))
                         visit(item);
                 }
             }
-    for (const int item : big)
-        if (overlap(low, high, itemLow.col(item), itemHigh.col(item)))
+    for (const int item : grid.big)
+        if (item > after && overlap(low, high, itemLow.col(item), itemHigh.col(item)))
             visit(item);
 }
 
@@ -177,10 +247,25 @@ double pairDistance(const Eigen::Matrix3Xd &x, const PairView &pair)
     return std::sqrt(closest(pair.kind, gather(x, pair.v)).squaredDistance);
 }
 
-// The candidate pairs: those whose boxes, swept over the sub-step and grown by each particle's
-// margin, overlap. They serve the following sub-steps too, as long as every particle stays within
-// its margin of the box it was found with (stale()): a sheet at rest finds them once. They are kept
-// in one order, by kind and index, so that which sub-step found them changes no answer.
+// the farthest each of a pair's two features can move from where the candidates were found while
+// they hold: its corners' largest bound
+std::pair<double, double> featureBounds(const PairView &pair, const std::vector<double> &perParticle)
+{
+    const auto r = [&](int k) { return perParticle[std::size_t(pair.v[std::size_t(k)])]; };
+    const double first = pair.kind == PairKind::PointTriangle ? r(0) : std::max(r(0), r(1));
+    const double second = pair.kind == PairKind::PointTriangle ? std::max({r(1), r(2), r(3)}) : std::max(r(2), r(3));
+    return {first, second};
+}
+
+// The candidate pairs: those that can come within their distance on this sub-step's path or, later,
+// while every particle stays within its bound of where it ends this sub-step (`built`). Found by the
+// boxes swept over the sub-step's path and padded by the bound, then kept only where the pair's
+// distance at the end, less how far the two features moved relative to each other over the sub-step
+// and both features' bounds, is within reach. A sheet moving as a whole (falling, swinging) has
+// few: only the pairs that are close, not all those its motion sweeps past. They serve later sub-steps
+// while every particle stays within its bound (stale()): a sheet at rest finds them once. Found in
+// parallel shares, each item's in index order, joined in share order: one order, by kind and
+// index, whichever sub-step or thread count found them.
 void findCandidates(const Model &model, const ClothSurface &surface, const Eigen::Matrix3Xd &x0,
                     const Eigen::Matrix3Xd &x1, TriangleScratch &s)
 {
@@ -190,9 +275,9 @@ void findCandidates(const Model &model, const ClothSurface &surface, const Eigen
     s.built = x1;
     s.builtFor = &surface;
     s.builtActive = s.triangleActive;
-    s.builtLow.resize(3, n);
-    s.builtHigh.resize(3, n);
-    s.particleMargin.resize(std::size_t(n));
+    s.bound.resize(std::size_t(n));
+    s.sweptLow.resize(3, n);
+    s.sweptHigh.resize(3, n);
     s.pointLow.resize(3, n);
     s.pointHigh.resize(3, n);
     s.triangleLow.resize(3, triangles);
@@ -202,27 +287,25 @@ void findCandidates(const Model &model, const ClothSurface &surface, const Eigen
     std::vector<std::uint8_t> &finite = s.finite;
     finite.assign(std::size_t(n), 1);
     for (int i = 0; i < n; ++i) {
-        // room for a few sub-steps of the particle's present motion, and at least a thickness
-        const double margin = std::max(s.margin, 4.0 * (x1.col(i) - x0.col(i)).norm());
-        s.particleMargin[std::size_t(i)] = std::isfinite(margin) ? margin : s.margin;
-        s.builtLow.col(i) = x0.col(i).cwiseMin(x1.col(i));
-        s.builtHigh.col(i) = x0.col(i).cwiseMax(x1.col(i));
-        const double pad = s.pointRadius[std::size_t(i)] + s.particleMargin[std::size_t(i)];
-        s.pointLow.col(i) = s.builtLow.col(i).array() - pad;
-        s.pointHigh.col(i) = s.builtHigh.col(i).array() + pad;
+        const Vec start = x0.col(i) - s.shiftStart;
+        const double bound = kBoundThickness * s.margin;
+        s.bound[std::size_t(i)] = bound;
+        s.sweptLow.col(i) = start.cwiseMin(x1.col(i)).array() - bound;
+        s.sweptHigh.col(i) = start.cwiseMax(x1.col(i)).array() + bound;
+        const double pad = s.pointRadius[std::size_t(i)];
+        s.pointLow.col(i) = s.sweptLow.col(i).array() - pad;
+        s.pointHigh.col(i) = s.sweptHigh.col(i).array() + pad;
         finite[std::size_t(i)] = s.pointLow.col(i).allFinite() && s.pointHigh.col(i).allFinite();
     }
     auto featureBox = [&](const int *v, int count, double half, Eigen::Ref<Vec> low, Eigen::Ref<Vec> high) {
-        double margin = 0.0;
-        low = s.builtLow.col(v[0]);
-        high = s.builtHigh.col(v[0]);
-        for (int k = 0; k < count; ++k) {
-            low = low.cwiseMin(s.builtLow.col(v[k]));
-            high = high.cwiseMax(s.builtHigh.col(v[k]));
-            margin = std::max(margin, s.particleMargin[std::size_t(v[k])]);
+        low = s.sweptLow.col(v[0]);
+        high = s.sweptHigh.col(v[0]);
+        for (int k = 1; k < count; ++k) {
+            low = low.cwiseMin(s.sweptLow.col(v[k]));
+            high = high.cwiseMax(s.sweptHigh.col(v[k]));
         }
-        low.array() -= half + margin;
-        high.array() += half + margin;
+        low.array() -= half;
+        high.array() += half;
     };
     double extent = 0.0;
     int counted = 0;
@@ -243,85 +326,133 @@ void findCandidates(const Model &model, const ClothSurface &surface, const Eigen
         featureBox(&surface.edgeEnds[std::size_t(2 * e)], 2, half, s.edgeLow.col(e), s.edgeHigh.col(e));
     }
     Cells cells;
-    cells.size = counted > 0 && extent > 0.0 ? extent / counted : 1.0;
+    cells.size = counted > 0 && extent > 0.0 ? kCellPerBox * extent / counted : 1.0;
+    fillGrid(cells, s.triangleLow, s.triangleHigh, s.triangleActive, s.triangleGrid);
+    fillGrid(cells, s.edgeLow, s.edgeHigh, s.edgeActive, s.edgeGrid);
 
-    s.triangleCells.clear();
-    s.bigTriangles.clear();
-    for (int t = 0; t < triangles; ++t)
-        if (s.triangleActive[std::size_t(t)] && s.triangleLow.col(t).allFinite() && s.triangleHigh.col(t).allFinite())
-            addCells(cells, s.triangleLow.col(t), s.triangleHigh.col(t), t, s.triangleCells, s.bigTriangles);
-    std::sort(s.triangleCells.begin(), s.triangleCells.end());
-    s.edgeCells.clear();
-    s.bigEdges.clear();
-    for (int e = 0; e < edges; ++e)
-        if (s.edgeActive[std::size_t(e)] && s.edgeLow.col(e).allFinite() && s.edgeHigh.col(e).allFinite())
-            addCells(cells, s.edgeLow.col(e), s.edgeHigh.col(e), e, s.edgeCells, s.bigEdges);
-    std::sort(s.edgeCells.begin(), s.edgeCells.end());
-
-    // room to spare, so that the candidates of a later build (a tear, a fold) seldom allocate
-    if (s.candidates.capacity() == 0)
-        s.candidates.reserve(std::size_t(4 * (n + edges)));
+    // a pair found by the boxes is kept when it can come within its distance: on this sub-step's path
+    // the two features' closest points close by at most twice the largest move of a corner relative
+    // to the first's (a point of a feature moves by its corners' moves averaged)
+    auto keep = [&](const TrianglePair &pair, std::vector<TrianglePair> &out, std::vector<double> &distances) {
+        const PairView v = view(surface, s, pair);
+        const double d = pairDistance(x1, v);
+        const Vec reference = x1.col(v.v[0]) - x0.col(v.v[0]);
+        double relative = 0.0;
+        for (std::size_t k = 1; k < 4; ++k)
+            relative = std::max(relative, (x1.col(v.v[k]) - x0.col(v.v[k]) - reference).norm());
+        const auto [first, second] = featureBounds(v, s.bound);
+        if (!(d - 2.0 * relative > v.distance && d - first - second > v.distance)) {
+            out.push_back(pair);
+            distances.push_back(d);
+        }
+    };
+    const int shares = std::max(twoPhaseShares(n), twoPhaseShares(edges));
+    if (int(s.shareCandidates.size()) < shares) {
+        s.shareCandidates.resize(std::size_t(shares));
+        s.shareDistances.resize(std::size_t(shares));
+        s.shareVisits.resize(std::size_t(shares));
+    }
+    for (int share = 0; share < shares; ++share) {
+        s.shareCandidates[std::size_t(share)].clear();
+        s.shareDistances[std::size_t(share)].clear();
+    }
     s.candidates.clear();
-    // particles against triangles
-    for (int i = 0; i < n; ++i) {
-        if (!finite[std::size_t(i)])
-            continue;
-        const Vec low = s.pointLow.col(i), high = s.pointHigh.col(i);
-        const int sheet = surface.vertexSheet[std::size_t(i)];
-        query(cells, low, high, s.triangleCells, s.triangleLow, s.triangleHigh, s.triangleActive, s.bigTriangles, [&](int t) {
-            const int *c = &surface.corners[std::size_t(3 * t)];
-            if (c[0] == i || c[1] == i || c[2] == i)
-                return;
-            if (!surface.selfCollision && sheet == surface.triangleSheet[std::size_t(t)])
-                return;
-            if (model.invMass[i] == 0.0 && model.invMass[c[0]] == 0.0 && model.invMass[c[1]] == 0.0 &&
-                model.invMass[c[2]] == 0.0)
-                return;
-            s.candidates.push_back({false, i, t});
-        });
-    }
-    // edges against edges, each pair once (a < b)
-    for (int e = 0; e < edges; ++e) {
-        if (!s.edgeActive[std::size_t(e)] || !s.edgeLow.col(e).allFinite() || !s.edgeHigh.col(e).allFinite())
-            continue;
-        const Vec low = s.edgeLow.col(e), high = s.edgeHigh.col(e);
-        const int a0 = surface.edgeEnds[std::size_t(2 * e)], a1 = surface.edgeEnds[std::size_t(2 * e + 1)];
-        const int sheet = surface.edgeSheet[std::size_t(e)];
-        query(cells, low, high, s.edgeCells, s.edgeLow, s.edgeHigh, s.edgeActive, s.bigEdges, [&](int f) {
-            if (f <= e)
-                return;
-            const int b0 = surface.edgeEnds[std::size_t(2 * f)], b1 = surface.edgeEnds[std::size_t(2 * f + 1)];
-            if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1)
-                return;
-            if (!surface.selfCollision && sheet == surface.edgeSheet[std::size_t(f)])
-                return;
-            if (model.invMass[a0] == 0.0 && model.invMass[a1] == 0.0 && model.invMass[b0] == 0.0 &&
-                model.invMass[b1] == 0.0)
-                return;
-            s.candidates.push_back({true, e, f});
-        });
-    }
-    std::sort(s.candidates.begin(), s.candidates.end(), [](const TrianglePair &x, const TrianglePair &y) {
-        return x.edges != y.edges ? y.edges : x.a != y.a ? x.a < y.a : x.b < y.b;
+    s.builtDistance.clear();
+    auto join = [&] {
+        for (int share = 0; share < shares; ++share) {
+            std::vector<TrianglePair> &found = s.shareCandidates[std::size_t(share)];
+            std::vector<double> &distances = s.shareDistances[std::size_t(share)];
+            s.candidates.insert(s.candidates.end(), found.begin(), found.end());
+            s.builtDistance.insert(s.builtDistance.end(), distances.begin(), distances.end());
+            found.clear();
+            distances.clear();
+        }
+    };
+    // particles against triangles, each particle's in triangle order
+    parallelShares(n, [&](int share, int begin, int end) {
+        std::vector<TrianglePair> &out = s.shareCandidates[std::size_t(share)];
+        std::vector<double> &distances = s.shareDistances[std::size_t(share)];
+        std::vector<int> &visits = s.shareVisits[std::size_t(share)];
+        for (int i = begin; i < end; ++i) {
+            if (!finite[std::size_t(i)])
+                continue;
+            const int sheet = surface.vertexSheet[std::size_t(i)];
+            visits.clear();
+            query(cells, s.pointLow.col(i), s.pointHigh.col(i), s.triangleGrid, s.triangleLow, s.triangleHigh,
+                  s.triangleActive, -1, [&](int t) {
+                      const int *c = &surface.corners[std::size_t(3 * t)];
+                      if (c[0] == i || c[1] == i || c[2] == i)
+                          return;
+                      if (!surface.selfCollision && sheet == surface.triangleSheet[std::size_t(t)])
+                          return;
+                      if (model.invMass[i] == 0.0 && model.invMass[c[0]] == 0.0 && model.invMass[c[1]] == 0.0 &&
+                          model.invMass[c[2]] == 0.0)
+                          return;
+                      visits.push_back(t);
+                  });
+            std::sort(visits.begin(), visits.end());
+            visits.erase(std::unique(visits.begin(), visits.end()), visits.end());
+            for (const int t : visits)
+                keep({false, i, t}, out, distances);
+        }
     });
-    // (a pair is met in one cell only; this is a guard)
-    s.candidates.erase(std::unique(s.candidates.begin(), s.candidates.end(),
-                                   [](const TrianglePair &x, const TrianglePair &y) {
-                                       return x.edges == y.edges && x.a == y.a && x.b == y.b;
-                                   }),
-                       s.candidates.end());
-    s.builtDistance.resize(s.candidates.size());
-    for (std::size_t c = 0; c < s.candidates.size(); ++c)
-        s.builtDistance[c] = pairDistance(x1, view(surface, s, s.candidates[c]));
+    join();
+    // edges against edges, each pair once (a < b), each edge's in edge order
+    parallelShares(edges, [&](int share, int begin, int end) {
+        std::vector<TrianglePair> &out = s.shareCandidates[std::size_t(share)];
+        std::vector<double> &distances = s.shareDistances[std::size_t(share)];
+        std::vector<int> &visits = s.shareVisits[std::size_t(share)];
+        for (int e = begin; e < end; ++e) {
+            if (!s.edgeActive[std::size_t(e)] || !s.edgeLow.col(e).allFinite() || !s.edgeHigh.col(e).allFinite())
+                continue;
+            const int a0 = surface.edgeEnds[std::size_t(2 * e)], a1 = surface.edgeEnds[std::size_t(2 * e + 1)];
+            const int sheet = surface.edgeSheet[std::size_t(e)];
+            visits.clear();
+            query(cells, s.edgeLow.col(e), s.edgeHigh.col(e), s.edgeGrid, s.edgeLow, s.edgeHigh, s.edgeActive, e, [&](int f) {
+                const int b0 = surface.edgeEnds[std::size_t(2 * f)], b1 = surface.edgeEnds[std::size_t(2 * f + 1)];
+                if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1)
+                    return;
+                if (!surface.selfCollision && sheet == surface.edgeSheet[std::size_t(f)])
+                    return;
+                if (model.invMass[a0] == 0.0 && model.invMass[a1] == 0.0 && model.invMass[b0] == 0.0 &&
+                    model.invMass[b1] == 0.0)
+                    return;
+                visits.push_back(f);
+            });
+            std::sort(visits.begin(), visits.end());
+            visits.erase(std::unique(visits.begin(), visits.end()), visits.end());
+            for (const int f : visits)
+                keep({true, e, f}, out, distances);
+        }
+    });
+    join();
 }
 
-// how far each particle has been from where the candidates were found, at most, during the
-// sub-step (its path is the segment from x0 to x1)
+// how far each particle has been from where the candidates were found, at most, during the sub-step,
+// less the common shift (its path less the shift is the segment from x0 - shiftStart to
+// x1 - shiftEnd, and a segment is no farther from a point than its ends)
 void measureReach(const Eigen::Matrix3Xd &x0, const Eigen::Matrix3Xd &x1, TriangleScratch &s)
 {
     s.reach.resize(std::size_t(x1.cols()));
     for (int i = 0; i < x1.cols(); ++i)
-        s.reach[std::size_t(i)] = std::max((x0.col(i) - s.built.col(i)).norm(), (x1.col(i) - s.built.col(i)).norm());
+        s.reach[std::size_t(i)] = std::max((x0.col(i) - s.shiftStart - s.built.col(i)).norm(),
+                                           (x1.col(i) - s.shiftEnd - s.built.col(i)).norm());
+}
+
+// the free particles' mean move over the sub-step (the finite ones'): the common shift of a sheet that
+// falls or swings as a whole, which changes no distance between two features
+Vec meanMove(const Model &model, const Eigen::Matrix3Xd &x0, const Eigen::Matrix3Xd &x1)
+{
+    Vec sum = Vec::Zero();
+    int count = 0;
+    for (const int i : model.freeParticles) {
+        const Vec d = x1.col(i) - x0.col(i);
+        if (d.allFinite()) {
+            sum += d;
+            ++count;
+        }
+    }
+    return count > 0 ? Vec(sum / count) : Vec::Zero();
 }
 
 // whether candidate c is certainly farther apart than its distance all through the sub-step: its
@@ -330,9 +461,7 @@ void measureReach(const Eigen::Matrix3Xd &x0, const Eigen::Matrix3Xd &x1, Triang
 // this sub-step
 bool surelyApart(const TriangleScratch &s, std::size_t c, const PairView &pair)
 {
-    const auto r = [&](int k) { return s.reach[std::size_t(pair.v[std::size_t(k)])]; };
-    const double first = pair.kind == PairKind::PointTriangle ? r(0) : std::max(r(0), r(1));
-    const double second = pair.kind == PairKind::PointTriangle ? std::max({r(1), r(2), r(3)}) : std::max(r(2), r(3));
+    const auto [first, second] = featureBounds(pair, s.reach);
     return s.builtDistance[c] - first - second > pair.distance;
 }
 
@@ -493,16 +622,15 @@ bool movedSince(const std::vector<int> &changedAt, const std::array<int, 4> &v, 
            changedAt[std::size_t(v[2])] >= stamp || changedAt[std::size_t(v[3])] >= stamp;
 }
 
-// whether a particle (every one, or those an answer moved since `stamp`) left its margin about the
-// box the candidates were found for
+// whether a particle (every one, or those an answer moved since `stamp`) left its bound about where
+// the candidates were found
 bool stale(const TriangleScratch &s, const Eigen::Matrix3Xd &x1, int stamp, bool every)
 {
     for (int i = 0; i < x1.cols(); ++i) {
         if (!every && s.changedAt[std::size_t(i)] < stamp)
             continue;
-        const double m = s.particleMargin[std::size_t(i)];
-        const Vec p = x1.col(i);
-        if (!((p.array() >= s.builtLow.col(i).array() - m).all() && (p.array() <= s.builtHigh.col(i).array() + m).all()))
+        const double reach = every ? s.reach[std::size_t(i)] : (x1.col(i) - s.shiftEnd - s.built.col(i)).norm();
+        if (!(reach <= s.bound[std::size_t(i)]))
             return true;
     }
     return false;
@@ -622,12 +750,22 @@ void collideTriangles(const Model &model, State &state, Workspace &work)
     // the candidates of an earlier sub-step while they hold: the same surface, the same whole
     // triangles (a tear changes the particles' contact radii, a restored state may mend one), and
     // every particle within its margin
+    // every particle within its bound once the common shift is taken away (distances between
+    // features do not change with it, so a sheet falling as a whole keeps its candidates)
     const bool rebuild = s.builtFor != &surface || s.built.cols() != n || s.builtActive != s.triangleActive;
+    const Vec common = meanMove(model, x0, state.position);
+    s.shiftStart = s.shiftCarried;
+    s.shiftEnd = s.shiftStart + common;
+    if (!rebuild)
+        measureReach(x0, state.position, s);
     if (rebuild || stale(s, state.position, 0, true)) {
+        s.shiftStart = -common;
+        s.shiftEnd.setZero();
         findCandidates(model, surface, x0, state.position, s);
+        measureReach(x0, state.position, s);
         ++s.builds;
     }
-    measureReach(x0, state.position, s);
+    s.shiftCarried = s.shiftEnd;
 
     // 1. proximity at the thickness (stamp 0)
     for (std::size_t c = 0; c < s.candidates.size(); ++c) {
@@ -668,6 +806,9 @@ void collideTriangles(const Model &model, State &state, Workspace &work)
     auto refresh = [&](int since) {
         if (!stale(s, state.position, since, false))
             return;
+        s.shiftStart -= s.shiftEnd;
+        s.shiftEnd.setZero();
+        s.shiftCarried.setZero();
         findCandidates(model, surface, x0, state.position, s);
         measureReach(x0, state.position, s);
         pending.assign(s.candidates.size(), 0);

@@ -1,8 +1,10 @@
 #pragma once
-// What the triangle collision pass (triangle_collisions.cpp) keeps within a sub-step: where the
-// particles started it, the candidate pairs of its broad phase and the impact zones of its
-// fail-safe. Rebuilt every sub-step and kept in the Workspace, so that a step allocates nothing
-// once the arrays have reached the scene's size. Nothing in it carries over to the next sub-step.
+// What the triangle collision pass (triangle_collisions.cpp) keeps: where the particles began the
+// sub-step, the candidate pairs of its broad phase (kept across sub-steps while every particle stays within
+// its bound) and the impact zones of its fail-safe. Kept in the Workspace, so that a sub-step allocates
+// nothing once the arrays have reached the scene's size. Nothing in it changes an answer: a pair
+// the candidates miss is surely apart, so a resumed run that finds them at another sub-step moves
+// every particle the same.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -18,23 +20,50 @@ struct TrianglePair {
     int b = 0;
 };
 
+// the cells a box covers, from lo to hi on each axis
+struct CellRange {
+    long long lo[3], hi[3];
+    long long count() const;  // (triangle_collisions.cpp) more than the grid takes: its limit + 1
+};
+
+// one kind of item's grid (triangles or edges): an open-addressing table of the occupied cells
+// (kNoCell where empty), each slot's run of items in `items` from first[slot] to first[slot + 1],
+// each item's cells and low cell, and the items whose boxes cover too many cells to enter
+struct TriangleGrid {
+    std::vector<std::uint64_t> keys;
+    std::vector<int> first, fill;
+    std::vector<int> items;
+    std::uint64_t mask = 0;
+    std::vector<CellRange> range;
+    Eigen::Matrix<long long, 3, Eigen::Dynamic> lowCell;
+    std::vector<int> big;
+};
+
 struct TriangleScratch {
     Eigen::Matrix3Xd start;  // m, the positions at the sub-step's start
-    // the candidates below serve every sub-step while each particle stays within its margin of the
-    // box it was found with: the positions then, the box (unpadded), the margin, the surface and
-    // the whole triangles they were found for, and each candidate's distance then
+    // the candidates below serve every sub-step while each particle stays within its bound of where it
+    // was when they were found: the positions then, the bounds, the surface and the whole triangles
+    // they were found for, and each candidate's distance then
     Eigen::Matrix3Xd built;
-    Eigen::Matrix3Xd builtLow, builtHigh;
-    std::vector<double> particleMargin;
+    std::vector<double> bound;  // m
     const void *builtFor = nullptr;
     std::vector<std::uint8_t> builtActive;
     std::vector<double> builtDistance;
+    // m, the common shift taken away from every particle at the sub-step's start and end (the sheets'
+    // mean move since the candidates were found), and the end's carried to the next sub-step's start
+    Eigen::Vector3d shiftStart = Eigen::Vector3d::Zero(), shiftEnd = Eigen::Vector3d::Zero();
+    Eigen::Vector3d shiftCarried = Eigen::Vector3d::Zero();
     std::vector<double> reach;  // per particle: the farthest it has been from `built` in the sub-step
-    double margin = 0.0;  // m, the least margin: the thickest sheet's thickness
-    // the broad phase: boxes swept over the sub-step, min and max corners per item
+    double margin = 0.0;  // m, the thickest sheet's thickness
+    // the broad phase: per particle its path over the sub-step padded by its bound, and the boxes of
+    // the items from those, min and max corners
+    Eigen::Matrix3Xd sweptLow, sweptHigh;
     Eigen::Matrix3Xd pointLow, pointHigh, triangleLow, triangleHigh, edgeLow, edgeHigh;
-    std::vector<std::pair<std::uint64_t, int>> triangleCells, edgeCells;  // (cell key, item), sorted
-    std::vector<int> bigTriangles, bigEdges;  // boxes over too many cells for the grid
+    TriangleGrid triangleGrid, edgeGrid;
+    // per thread share of the search: its candidates, their distances, one item's visits
+    std::vector<std::vector<TrianglePair>> shareCandidates;
+    std::vector<std::vector<double>> shareDistances;
+    std::vector<std::vector<int>> shareVisits;
     std::vector<std::uint8_t> triangleActive, edgeActive;  // whole (no side torn)
     // per particle: its distance from a sheet's middle at contact (ClothSurface::contactRadius, or
     // its radius once every triangle it was a corner of has torn away), and whether it still is one
