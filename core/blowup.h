@@ -5,13 +5,16 @@
 
 namespace core {
 
-// the first value that stopped being finite or bounded, or (StepSize) an adaptive integrator that
-// could not cover a sub-step within its budget of trial steps
+// the first value that stopped being finite or bounded, (StepSize) an adaptive integrator that
+// could not cover a sub-step within its budget of trial steps, or (SheetPairs) the triangle
+// collisions finding more pairs within reach than a sheet that is not flying apart can have
 struct Blowup {
-    enum class Quantity { Position, Velocity, StepSize };
-    int particle = -1;        // -1 for StepSize
+    enum class Quantity { Position, Velocity, StepSize, SheetPairs };
+    int particle = -1;        // -1 for StepSize and SheetPairs
     Quantity quantity = Quantity::Position;
-    double value = 0.0;       // the offending component; for StepSize, the last trial step, s
+    // the offending component; for StepSize, the last trial step, s; for SheetPairs, the most pairs
+    // a sub-step may test
+    double value = 0.0;
     std::uint64_t step = 0;   // the step it happened in (1 = the first step)
     double time = 0.0;        // s, the time at the start of that step
     // the particle's position (m) and speed (m/s) when it was found: where it left the world

@@ -69,6 +69,8 @@ bool step(const Model &model, State &state, Workspace &work)
         if (plan.triangleCollisions)
             freeChecked = false;
         timed(profile, Stage::TriangleCollisions, plan.triangleCollisions, [&] { collideTriangles(model, state, work); });
+        if (work.blowup)  // more pairs within reach than a sheet that is not flying apart has
+            return stopped(state, work);
 
         // springs stretched past their breaking strain break, for good
         timed(profile, Stage::Breaks, plan.springBreaks, [&] { breakSprings(model, state, work); });

@@ -39,6 +39,13 @@ constexpr double kBoundThickness = 0.5;
 // the grid's cell edge over the triangles' mean box (measured on a 64 x 64 sheet crumpling: 1.5
 // searches 17% faster than 1, 0.5 and 3 a half and a sixth slower)
 constexpr double kCellPerBox = 1.5;
+// the share of the triangles and edges that may be loose (found again outside the grid) before the
+// whole broad phase is run again instead
+constexpr double kMostLoose = 0.25;
+// the most candidate pairs a sub-step may test, per particle and edge: a 64 x 64 sheet crumpled on
+// the floor has 2.5 at most, a sheet flying apart (springs past their stability limit) millions,
+// each costing a time-of-impact search; past this the run stops as blown up instead of hanging
+constexpr std::size_t kMostPairsPerItem = 32;
 // an empty slot of a grid's hash table (no cell key has every bit set: keys have 63)
 constexpr std::uint64_t kNoCell = ~std::uint64_t(0);
 
@@ -257,16 +264,53 @@ std::pair<double, double> featureBounds(const PairView &pair, const std::vector<
     return {first, second};
 }
 
+// whether a candidate pair may be tested at all: not a feature against itself or a neighbour, not
+// within one sheet when self-collision is off, not between four pinned particles
+bool pointTriangleAllowed(const Model &model, const ClothSurface &surface, int i, int t)
+{
+    const int *c = &surface.corners[std::size_t(3 * t)];
+    if (c[0] == i || c[1] == i || c[2] == i)
+        return false;
+    if (!surface.selfCollision && surface.vertexSheet[std::size_t(i)] == surface.triangleSheet[std::size_t(t)])
+        return false;
+    return !(model.invMass[i] == 0.0 && model.invMass[c[0]] == 0.0 && model.invMass[c[1]] == 0.0 &&
+             model.invMass[c[2]] == 0.0);
+}
+
+bool edgeEdgeAllowed(const Model &model, const ClothSurface &surface, int e, int f)
+{
+    const int a0 = surface.edgeEnds[std::size_t(2 * e)], a1 = surface.edgeEnds[std::size_t(2 * e + 1)];
+    const int b0 = surface.edgeEnds[std::size_t(2 * f)], b1 = surface.edgeEnds[std::size_t(2 * f + 1)];
+    if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1)
+        return false;
+    if (!surface.selfCollision && surface.edgeSheet[std::size_t(e)] == surface.edgeSheet[std::size_t(f)])
+        return false;
+    return !(model.invMass[a0] == 0.0 && model.invMass[a1] == 0.0 && model.invMass[b0] == 0.0 &&
+             model.invMass[b1] == 0.0);
+}
+
+std::size_t mostCandidates(int particles, int edges)
+{
+    return kMostPairsPerItem * std::size_t(particles + edges);
+}
+
+bool pairBefore(const TrianglePair &x, const TrianglePair &y)
+{
+    return x.edges != y.edges ? y.edges : x.a != y.a ? x.a < y.a : x.b < y.b;
+}
+
 // The candidate pairs: those that can come within their distance on this sub-step's path or, later,
 // while every particle stays within its bound of where it ends this sub-step (`built`). Found by the
 // boxes swept over the sub-step's path and padded by the bound, then kept only where the pair's
 // distance at the end, less how far the two features moved relative to each other over the sub-step
 // and both features' bounds, is within reach. A sheet moving as a whole (falling, swinging) has
 // few: only the pairs that are close, not all those its motion sweeps past. They serve later sub-steps
-// while every particle stays within its bound (stale()): a sheet at rest finds them once. Found in
+// while every particle stays within its bound (collectMoved()): a sheet at rest finds them once. Found in
 // parallel shares, each item's in index order, joined in share order: one order, by kind and
-// index, whichever sub-step or thread count found them.
-void findCandidates(const Model &model, const ClothSurface &surface, const Eigen::Matrix3Xd &x0,
+// index, whichever sub-step or thread count found them. Returns false, the candidates incomplete,
+// where there are more than `most` (each share stops once its own are more: the answer is the same
+// on any thread count).
+bool findCandidates(const Model &model, const ClothSurface &surface, const Eigen::Matrix3Xd &x0,
                     const Eigen::Matrix3Xd &x1, TriangleScratch &s)
 {
     const int n = model.particleCount();
@@ -327,8 +371,14 @@ void findCandidates(const Model &model, const ClothSurface &surface, const Eigen
     }
     Cells cells;
     cells.size = counted > 0 && extent > 0.0 ? kCellPerBox * extent / counted : 1.0;
+    s.cellSize = cells.size;
     fillGrid(cells, s.triangleLow, s.triangleHigh, s.triangleActive, s.triangleGrid);
     fillGrid(cells, s.edgeLow, s.edgeHigh, s.edgeActive, s.edgeGrid);
+    s.looseTriangle.assign(std::size_t(triangles), 0);
+    s.looseEdge.assign(std::size_t(edges), 0);
+    s.looseTriangleActive.assign(std::size_t(triangles), 0);
+    s.looseEdgeActive.assign(std::size_t(edges), 0);
+    s.looseCount = 0;
 
     // a pair found by the boxes is kept when it can come within its distance: on this sub-step's path
     // the two features' closest points close by at most twice the largest move of a corner relative
@@ -368,27 +418,20 @@ void findCandidates(const Model &model, const ClothSurface &surface, const Eigen
             distances.clear();
         }
     };
+    const std::size_t most = mostCandidates(n, edges);
     // particles against triangles, each particle's in triangle order
     parallelShares(n, [&](int share, int begin, int end) {
         std::vector<TrianglePair> &out = s.shareCandidates[std::size_t(share)];
         std::vector<double> &distances = s.shareDistances[std::size_t(share)];
         std::vector<int> &visits = s.shareVisits[std::size_t(share)];
-        for (int i = begin; i < end; ++i) {
+        for (int i = begin; i < end && out.size() <= most; ++i) {
             if (!finite[std::size_t(i)])
                 continue;
-            const int sheet = surface.vertexSheet[std::size_t(i)];
             visits.clear();
             query(cells, s.pointLow.col(i), s.pointHigh.col(i), s.triangleGrid, s.triangleLow, s.triangleHigh,
                   s.triangleActive, -1, [&](int t) {
-                      const int *c = &surface.corners[std::size_t(3 * t)];
-                      if (c[0] == i || c[1] == i || c[2] == i)
-                          return;
-                      if (!surface.selfCollision && sheet == surface.triangleSheet[std::size_t(t)])
-                          return;
-                      if (model.invMass[i] == 0.0 && model.invMass[c[0]] == 0.0 && model.invMass[c[1]] == 0.0 &&
-                          model.invMass[c[2]] == 0.0)
-                          return;
-                      visits.push_back(t);
+                      if (pointTriangleAllowed(model, surface, i, t))
+                          visits.push_back(t);
                   });
             std::sort(visits.begin(), visits.end());
             visits.erase(std::unique(visits.begin(), visits.end()), visits.end());
@@ -397,27 +440,20 @@ void findCandidates(const Model &model, const ClothSurface &surface, const Eigen
         }
     });
     join();
+    if (s.candidates.size() > most)
+        return false;
     // edges against edges, each pair once (a < b), each edge's in edge order
     parallelShares(edges, [&](int share, int begin, int end) {
         std::vector<TrianglePair> &out = s.shareCandidates[std::size_t(share)];
         std::vector<double> &distances = s.shareDistances[std::size_t(share)];
         std::vector<int> &visits = s.shareVisits[std::size_t(share)];
-        for (int e = begin; e < end; ++e) {
+        for (int e = begin; e < end && s.candidates.size() + out.size() <= most; ++e) {
             if (!s.edgeActive[std::size_t(e)] || !s.edgeLow.col(e).allFinite() || !s.edgeHigh.col(e).allFinite())
                 continue;
-            const int a0 = surface.edgeEnds[std::size_t(2 * e)], a1 = surface.edgeEnds[std::size_t(2 * e + 1)];
-            const int sheet = surface.edgeSheet[std::size_t(e)];
             visits.clear();
             query(cells, s.edgeLow.col(e), s.edgeHigh.col(e), s.edgeGrid, s.edgeLow, s.edgeHigh, s.edgeActive, e, [&](int f) {
-                const int b0 = surface.edgeEnds[std::size_t(2 * f)], b1 = surface.edgeEnds[std::size_t(2 * f + 1)];
-                if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1)
-                    return;
-                if (!surface.selfCollision && sheet == surface.edgeSheet[std::size_t(f)])
-                    return;
-                if (model.invMass[a0] == 0.0 && model.invMass[a1] == 0.0 && model.invMass[b0] == 0.0 &&
-                    model.invMass[b1] == 0.0)
-                    return;
-                visits.push_back(f);
+                if (edgeEdgeAllowed(model, surface, e, f))
+                    visits.push_back(f);
             });
             std::sort(visits.begin(), visits.end());
             visits.erase(std::unique(visits.begin(), visits.end()), visits.end());
@@ -426,6 +462,7 @@ void findCandidates(const Model &model, const ClothSurface &surface, const Eigen
         }
     });
     join();
+    return s.candidates.size() <= most;
 }
 
 // how far each particle has been from where the candidates were found, at most, during the sub-step,
@@ -437,6 +474,194 @@ void measureReach(const Eigen::Matrix3Xd &x0, const Eigen::Matrix3Xd &x1, Triang
     for (int i = 0; i < x1.cols(); ++i)
         s.reach[std::size_t(i)] = std::max((x0.col(i) - s.shiftStart - s.built.col(i)).norm(),
                                            (x1.col(i) - s.shiftEnd - s.built.col(i)).norm());
+}
+
+// The candidates brought up to date where only some particles (`s.moved`) left their bounds: each is
+// found again about where it is now; every triangle or edge with one of them as a corner is fresh,
+// and loose from then on (its box no longer the one in the main grid: small grids of the loose and
+// of the fresh items are made instead); the pairs of a moved particle or a fresh item are dropped
+// and searched again, the rest kept. The
+// pairs found are pruned by the distance less each feature's reach (its corners' farthest from
+// where they were found, over this sub-step, or the bound). Returns false, changing nothing, when
+// so many items would be loose that finding everything again costs less.
+bool updateCandidates(const Model &model, const ClothSurface &surface, const Eigen::Matrix3Xd &x0,
+                      const Eigen::Matrix3Xd &x1, TriangleScratch &s)
+{
+    const int n = model.particleCount();
+    const int triangles = surface.triangleCount();
+    const int edges = surface.edgeCount();
+    s.isMoved.assign(std::size_t(n), 0);
+    for (const int i : s.moved)
+        s.isMoved[std::size_t(i)] = 1;
+    auto touches = [&](const int *v, int count) {
+        for (int k = 0; k < count; ++k)
+            if (s.isMoved[std::size_t(v[k])])
+                return true;
+        return false;
+    };
+    int loose = s.looseCount;
+    for (int t = 0; t < triangles; ++t)
+        if (!s.looseTriangle[std::size_t(t)] && touches(&surface.corners[std::size_t(3 * t)], 3))
+            ++loose;
+    for (int e = 0; e < edges; ++e)
+        if (!s.looseEdge[std::size_t(e)] && touches(&surface.edgeEnds[std::size_t(2 * e)], 2))
+            ++loose;
+    if (loose > kMostLoose * (triangles + edges))
+        return false;
+
+    // the moved particles found again where they end this sub-step
+    const double bound = kBoundThickness * s.margin;
+    for (const int i : s.moved) {
+        const Vec start = x0.col(i) - s.shiftStart;
+        const Vec end = x1.col(i) - s.shiftEnd;
+        s.built.col(i) = end;
+        s.sweptLow.col(i) = start.cwiseMin(end).array() - bound;
+        s.sweptHigh.col(i) = start.cwiseMax(end).array() + bound;
+        const double pad = s.pointRadius[std::size_t(i)];
+        s.pointLow.col(i) = s.sweptLow.col(i).array() - pad;
+        s.pointHigh.col(i) = s.sweptHigh.col(i).array() + pad;
+        s.finite[std::size_t(i)] = s.pointLow.col(i).allFinite() && s.pointHigh.col(i).allFinite();
+    }
+    auto featureBox = [&](const int *v, int count, double half, Eigen::Ref<Vec> low, Eigen::Ref<Vec> high) {
+        low = s.sweptLow.col(v[0]);
+        high = s.sweptHigh.col(v[0]);
+        for (int k = 1; k < count; ++k) {
+            low = low.cwiseMin(s.sweptLow.col(v[k]));
+            high = high.cwiseMax(s.sweptHigh.col(v[k]));
+        }
+        low.array() -= half;
+        high.array() += half;
+    };
+    // the items with a moved corner: fresh (their pairs are found again), and loose from now on
+    s.freshTriangle.assign(std::size_t(triangles), 0);
+    s.freshEdge.assign(std::size_t(edges), 0);
+    for (int t = 0; t < triangles; ++t)
+        if (s.triangleActive[std::size_t(t)] && touches(&surface.corners[std::size_t(3 * t)], 3)) {
+            s.looseTriangle[std::size_t(t)] = 1;
+            s.freshTriangle[std::size_t(t)] = 1;
+            featureBox(&surface.corners[std::size_t(3 * t)], 3,
+                       0.5 * surface.sheetThickness[std::size_t(surface.triangleSheet[std::size_t(t)])],
+                       s.triangleLow.col(t), s.triangleHigh.col(t));
+        }
+    for (int e = 0; e < edges; ++e)
+        if (s.edgeActive[std::size_t(e)] && touches(&surface.edgeEnds[std::size_t(2 * e)], 2)) {
+            s.looseEdge[std::size_t(e)] = 1;
+            s.freshEdge[std::size_t(e)] = 1;
+            featureBox(&surface.edgeEnds[std::size_t(2 * e)], 2,
+                       0.5 * surface.sheetThickness[std::size_t(surface.edgeSheet[std::size_t(e)])], s.edgeLow.col(e),
+                       s.edgeHigh.col(e));
+        }
+    s.looseCount = loose;
+    // the grids of the loose items and of the fresh ones, in the main grids' cells
+    Cells cells;
+    cells.size = s.cellSize;
+    for (int t = 0; t < triangles; ++t) {
+        s.looseTriangleActive[std::size_t(t)] = s.looseTriangle[std::size_t(t)] && s.triangleActive[std::size_t(t)];
+        s.freshTriangle[std::size_t(t)] = s.freshTriangle[std::size_t(t)] && s.triangleActive[std::size_t(t)];
+    }
+    for (int e = 0; e < edges; ++e) {
+        s.looseEdgeActive[std::size_t(e)] = s.looseEdge[std::size_t(e)] && s.edgeActive[std::size_t(e)];
+        s.freshEdge[std::size_t(e)] = s.freshEdge[std::size_t(e)] && s.edgeActive[std::size_t(e)];
+    }
+    fillGrid(cells, s.triangleLow, s.triangleHigh, s.looseTriangleActive, s.looseTriangleGrid);
+    fillGrid(cells, s.edgeLow, s.edgeHigh, s.looseEdgeActive, s.looseEdgeGrid);
+    fillGrid(cells, s.triangleLow, s.triangleHigh, s.freshTriangle, s.freshTriangleGrid);
+
+    // the kept pairs: neither a moved particle nor a fresh item in them (a pair of a loose item
+    // found since the grids were filled holds while its particles stay within their bounds)
+    std::size_t kept = 0;
+    for (std::size_t c = 0; c < s.candidates.size(); ++c) {
+        const TrianglePair &pair = s.candidates[c];
+        const bool redo = pair.edges ? s.freshEdge[std::size_t(pair.a)] || s.freshEdge[std::size_t(pair.b)]
+                                     : s.isMoved[std::size_t(pair.a)] || s.freshTriangle[std::size_t(pair.b)];
+        if (redo)
+            continue;
+        s.candidates[kept] = pair;
+        s.builtDistance[kept] = s.builtDistance[c];
+        ++kept;
+    }
+    s.candidates.resize(kept);
+    s.builtDistance.resize(kept);
+
+    // the pairs found again, pruned by their features' reach now
+    measureReach(x0, x1, s);
+    std::vector<TrianglePair> &found = s.shareCandidates[0];
+    found.clear();
+    auto keep = [&](const TrianglePair &pair) {
+        const PairView v = view(surface, s, pair);
+        const auto [first, second] = featureBounds(v, s.reach);
+        const double d = pairDistance(s.built, v);
+        if (!(d - std::max(first, bound) - std::max(second, bound) > v.distance))
+            found.push_back(pair);
+    };
+    std::vector<int> &visits = s.shareVisits[0];
+    for (int i = 0; i < n; ++i) {
+        if (!s.finite[std::size_t(i)])
+            continue;
+        visits.clear();
+        auto visit = [&](int t) {
+            if (pointTriangleAllowed(model, surface, i, t))
+                visits.push_back(t);
+        };
+        if (s.isMoved[std::size_t(i)]) {  // every triangle: those in the main grid, the loose ones
+            query(cells, s.pointLow.col(i), s.pointHigh.col(i), s.triangleGrid, s.triangleLow, s.triangleHigh,
+                  s.triangleActive, -1, [&](int t) {
+                      if (!s.looseTriangle[std::size_t(t)])
+                          visit(t);
+                  });
+            query(cells, s.pointLow.col(i), s.pointHigh.col(i), s.looseTriangleGrid, s.triangleLow, s.triangleHigh,
+                  s.looseTriangleActive, -1, visit);
+        } else {  // the fresh triangles alone
+            query(cells, s.pointLow.col(i), s.pointHigh.col(i), s.freshTriangleGrid, s.triangleLow, s.triangleHigh,
+                  s.freshTriangle, -1, visit);
+        }
+        std::sort(visits.begin(), visits.end());
+        visits.erase(std::unique(visits.begin(), visits.end()), visits.end());
+        for (const int t : visits)
+            keep({false, i, t});
+    }
+    for (int e = 0; e < edges; ++e) {
+        if (!s.freshEdge[std::size_t(e)] || !s.edgeLow.col(e).allFinite() || !s.edgeHigh.col(e).allFinite())
+            continue;
+        visits.clear();
+        // the edges in the main grid, either side of e; the loose ones, fresh ones after e only (a
+        // pair of two fresh edges is found from its first)
+        query(cells, s.edgeLow.col(e), s.edgeHigh.col(e), s.edgeGrid, s.edgeLow, s.edgeHigh, s.edgeActive, -1, [&](int f) {
+            if (!s.looseEdge[std::size_t(f)] && edgeEdgeAllowed(model, surface, e, f))
+                visits.push_back(f);
+        });
+        query(cells, s.edgeLow.col(e), s.edgeHigh.col(e), s.looseEdgeGrid, s.edgeLow, s.edgeHigh, s.looseEdgeActive, -1,
+              [&](int f) {
+                  if ((!s.freshEdge[std::size_t(f)] || f > e) && edgeEdgeAllowed(model, surface, e, f))
+                      visits.push_back(f);
+              });
+        std::sort(visits.begin(), visits.end());
+        visits.erase(std::unique(visits.begin(), visits.end()), visits.end());
+        for (const int f : visits)
+            keep({true, std::min(e, f), std::max(e, f)});
+    }
+    std::sort(found.begin(), found.end(), pairBefore);
+    // merged into the kept ones, in the one order
+    std::vector<TrianglePair> &merged = s.mergedCandidates;
+    std::vector<double> &distances = s.mergedDistances;
+    merged.clear();
+    distances.clear();
+    std::size_t a = 0, b = 0;
+    while (a < s.candidates.size() || b < found.size()) {
+        if (b == found.size() || (a < s.candidates.size() && pairBefore(s.candidates[a], found[b]))) {
+            merged.push_back(s.candidates[a]);
+            distances.push_back(s.builtDistance[a]);
+            ++a;
+        } else {
+            merged.push_back(found[b]);
+            distances.push_back(pairDistance(s.built, view(surface, s, found[b])));
+            ++b;
+        }
+    }
+    std::swap(s.candidates, merged);
+    std::swap(s.builtDistance, distances);
+    found.clear();
+    return true;
 }
 
 // the free particles' mean move over the sub-step (the finite ones'): the common shift of a sheet that
@@ -622,18 +847,18 @@ bool movedSince(const std::vector<int> &changedAt, const std::array<int, 4> &v, 
            changedAt[std::size_t(v[2])] >= stamp || changedAt[std::size_t(v[3])] >= stamp;
 }
 
-// whether a particle (every one, or those an answer moved since `stamp`) left its bound about where
-// the candidates were found
-bool stale(const TriangleScratch &s, const Eigen::Matrix3Xd &x1, int stamp, bool every)
+// the particles (every one, or those an answer moved since `stamp`) that left their bound about
+// where the candidates were found, into s.moved
+void collectMoved(TriangleScratch &s, const Eigen::Matrix3Xd &x1, int stamp, bool every)
 {
+    s.moved.clear();
     for (int i = 0; i < x1.cols(); ++i) {
         if (!every && s.changedAt[std::size_t(i)] < stamp)
             continue;
         const double reach = every ? s.reach[std::size_t(i)] : (x1.col(i) - s.shiftEnd - s.built.col(i)).norm();
         if (!(reach <= s.bound[std::size_t(i)]))
-            return true;
+            s.moved.push_back(i);
     }
-    return false;
 }
 
 int zoneRoot(std::vector<int> &zoneOf, int i)
@@ -749,21 +974,34 @@ void collideTriangles(const Model &model, State &state, Workspace &work)
     s.changedAt.assign(std::size_t(n), -1);
     // the candidates of an earlier sub-step while they hold: the same surface, the same whole
     // triangles (a tear changes the particles' contact radii, a restored state may mend one), and
-    // every particle within its margin
     // every particle within its bound once the common shift is taken away (distances between
-    // features do not change with it, so a sheet falling as a whole keeps its candidates)
+    // features do not change with it, so a sheet falling as a whole keeps its candidates); those
+    // of the particles that left it found again, or all of them when many did
     const bool rebuild = s.builtFor != &surface || s.built.cols() != n || s.builtActive != s.triangleActive;
     const Vec common = meanMove(model, x0, state.position);
     s.shiftStart = s.shiftCarried;
     s.shiftEnd = s.shiftStart + common;
-    if (!rebuild)
+    if (!rebuild) {
         measureReach(x0, state.position, s);
-    if (rebuild || stale(s, state.position, 0, true)) {
+        collectMoved(s, state.position, 0, true);
+    }
+    // more candidates than a sheet that is not flying apart has: the run stops as blown up (the
+    // candidates, incomplete, are found afresh next time)
+    auto overwhelmed = [&] {
+        s.builtFor = nullptr;
+        s.candidates.clear();
+        s.builtDistance.clear();
+        work.blowup = Blowup{-1, Blowup::Quantity::SheetPairs, double(mostCandidates(n, surface.edgeCount())), 0, 0.0};
+    };
+    if (rebuild || (!s.moved.empty() && !updateCandidates(model, surface, x0, state.position, s))) {
         s.shiftStart = -common;
         s.shiftEnd.setZero();
-        findCandidates(model, surface, x0, state.position, s);
+        if (!findCandidates(model, surface, x0, state.position, s))
+            return overwhelmed();
         measureReach(x0, state.position, s);
         ++s.builds;
+    } else if (!s.moved.empty()) {
+        ++s.updates;
     }
     s.shiftCarried = s.shiftEnd;
 
@@ -804,27 +1042,36 @@ void collideTriangles(const Model &model, State &state, Workspace &work)
         searchAll = false;
     };
     auto refresh = [&](int since) {
-        if (!stale(s, state.position, since, false))
-            return;
-        s.shiftStart -= s.shiftEnd;
-        s.shiftEnd.setZero();
-        s.shiftCarried.setZero();
-        findCandidates(model, surface, x0, state.position, s);
+        collectMoved(s, state.position, since, false);
+        if (s.moved.empty())
+            return true;
+        if (!updateCandidates(model, surface, x0, state.position, s)) {
+            s.shiftStart -= s.shiftEnd;
+            s.shiftEnd.setZero();
+            s.shiftCarried.setZero();
+            if (!findCandidates(model, surface, x0, state.position, s)) {
+                overwhelmed();
+                return false;
+            }
+        }
         measureReach(x0, state.position, s);
         pending.assign(s.candidates.size(), 0);
         searchAll = true;
         ++s.rebuilds;
+        return true;
     };
     for (int pass = 0; pass < kPasses; ++pass) {
         stamp = pass + 1;
-        refresh(stamp - 1);
+        if (!refresh(stamp - 1))
+            return;
         search(stamp - 1, true);
         if (s.impacted.empty())
             return;
     }
     // what the last pass's answers left meeting
     ++stamp;
-    refresh(stamp - 1);
+    if (!refresh(stamp - 1))
+        return;
     search(stamp - 1, false);
     if (s.impacted.empty())
         return;
@@ -848,7 +1095,8 @@ void collideTriangles(const Model &model, State &state, Workspace &work)
             joinZone(s, view(surface, s, s.candidates[std::size_t(c)]).v);
         ++stamp;
         moveZones(model, state, s, stamp);
-        refresh(stamp - 1);
+        if (!refresh(stamp - 1))
+            return;
         search(stamp - 1, false);
         if (s.impacted.empty())
             return;

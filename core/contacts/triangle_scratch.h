@@ -60,6 +60,17 @@ struct TriangleScratch {
     Eigen::Matrix3Xd sweptLow, sweptHigh;
     Eigen::Matrix3Xd pointLow, pointHigh, triangleLow, triangleHigh, edgeLow, edgeHigh;
     TriangleGrid triangleGrid, edgeGrid;
+    double cellSize = 1.0;  // m, the grids' cells
+    // found again since the grids were filled: the particles that left their bounds now, and the
+    // items with one as a corner (loose: their boxes are in the small grids, not the main ones)
+    std::vector<int> moved;
+    std::vector<std::uint8_t> isMoved;
+    std::vector<std::uint8_t> looseTriangle, looseEdge, looseTriangleActive, looseEdgeActive;
+    std::vector<std::uint8_t> freshTriangle, freshEdge;  // loose since this update
+    int looseCount = 0;
+    TriangleGrid looseTriangleGrid, looseEdgeGrid, freshTriangleGrid;
+    std::vector<TrianglePair> mergedCandidates;
+    std::vector<double> mergedDistances;
     // per thread share of the search: its candidates, their distances, one item's visits
     std::vector<std::vector<TrianglePair>> shareCandidates;
     std::vector<std::vector<double>> shareDistances;
@@ -88,6 +99,7 @@ struct TriangleScratch {
     std::uint64_t stops = 0;       // sub-steps the fail-safe ended by stopping every particle
     std::uint64_t builds = 0;      // broad phases run at a sub-step's start
     std::uint64_t rebuilds = 0;    // broad phases run again within a sub-step
+    std::uint64_t updates = 0;     // sub-steps that found some particles' candidates again
 };
 
 }  // namespace core

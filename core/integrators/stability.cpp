@@ -340,6 +340,11 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
                 << "planes to keep it in.";
             return out.str();
         }
+    } else if (blowup.quantity == Blowup::Quantity::SheetPairs) {
+        out << "The sheets flew apart at t = " << format(blowup.time) << " s (step " << blowup.step
+            << "): their collisions had more than " << format(blowup.value)
+            << " pairs of particles, edges and triangles within reach in one sub-step, where even a crumpled "
+            << "sheet has a few per particle, so they could no longer be kept from passing through each other.";
     } else {
         out << "Particle " << blowup.particle << "'s "
             << (blowup.quantity == Blowup::Quantity::Velocity ? "velocity" : "position") << " became "
