@@ -5,6 +5,10 @@
 //                                                    memory bandwidth bound
 //   springlab-bench contacts [--out DIR] [--quick]   stacks, piles and a heap beside Bullet's rigid
 //                                                    spheres: what stands, what settles, the cost
+//   springlab-bench cloth-contacts [--out DIR] [--quick] [--size N]... [--seconds S]
+//                                                    a sheet crumpling and one draping, with the
+//                                                    core's triangle collisions, without them and
+//                                                    as Bullet's soft-body cloth: crossings, cost
 //   springlab-bench stiff [--out DIR] [--quick]      a stiff cloth: the sub-steps and cost each of
 //                                                    symplectic Euler, implicit Euler and xpbd needs
 //                                                    to stay within 1% stretch
@@ -22,6 +26,7 @@
 // the program picks Qt's offscreen platform unless QT_QPA_PLATFORM says otherwise.
 
 #include "accuracy.h"
+#include "cloth_contacts.h"
 #include "contacts.h"
 #include "pause_latency.h"
 #include "reference_problems.h"
@@ -50,6 +55,7 @@ const char *const kUsage =
     "       springlab-bench stability [--out DIR] [--quick]\n"
     "       springlab-bench throughput [--out DIR] [--quick]\n"
     "       springlab-bench contacts [--out DIR] [--quick]\n"
+    "       springlab-bench cloth-contacts [--out DIR] [--quick] [--size N]... [--seconds S]\n"
     "       springlab-bench stiff [--out DIR] [--quick] [--size N]... [--stiffness K]...\n"
     "       springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]\n"
     "       springlab-bench pause --scene FILE [--runs R] [--timeline-mb M]\n"
@@ -130,6 +136,46 @@ int contacts(const QStringList &arguments, QTextStream &out, QTextStream &err)
         QStringLiteral("Folder for the CSV and plot (default: .)."),
         QStringLiteral("Short runs and a small heap: a smoke test only."),
         [&](const QString &dir, bool quick) { return bench::runContacts({dir, quick}, out); });
+}
+
+int clothContacts(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("A sheet crumpling on the floor and one draping over a ball, with the core's triangle "
+                       "collisions, with colliding beads instead and as Bullet's soft-body cloth: crossings and time a step."));
+    parser.addHelpOption();
+    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Folder for the CSV (default: .)."),
+                                       QStringLiteral("DIR"), QStringLiteral("."));
+    const QCommandLineOption quickOption(QStringLiteral("quick"),
+                                         QStringLiteral("A 16 x 16 sheet for 0.1 s: a smoke test only."));
+    const QCommandLineOption sizeOption(QStringLiteral("size"),
+                                        QStringLiteral("Only this sheet size (particles a side, 2 to 1000); repeatable."),
+                                        QStringLiteral("N"));
+    const QCommandLineOption secondsOption(
+        QStringLiteral("seconds"), QStringLiteral("Simulated seconds a run (default: 2 at 64 a side and under, else 0.5)."),
+        QStringLiteral("S"));
+    parser.addOptions({outOption, quickOption, sizeOption, secondsOption});
+    if (const std::optional<int> done = parseMode(parser, arguments, out, err, QStringLiteral("cloth-contacts")))
+        return *done;
+    bench::ClothContactsOptions options;
+    options.outDir = parser.value(outOption);
+    options.quick = parser.isSet(quickOption);
+    for (const QString &text : parser.values(sizeOption)) {
+        bool ok = false;
+        const int size = text.toInt(&ok);
+        if (!ok || size < 2 || size > 1000)
+            return badArguments(err, QStringLiteral("--size: expected a whole number from 2 to 1000, got \"%1\"").arg(text));
+        options.sizes.push_back(size);
+    }
+    if (parser.isSet(secondsOption)) {
+        bool ok = false;
+        options.seconds = parser.value(secondsOption).toDouble(&ok);
+        if (!ok || !(options.seconds > 0.0) || options.seconds > 3600.0)
+            return badArguments(err, QStringLiteral("--seconds: expected a number of seconds above 0 and up to 3600, got \"%1\"")
+                                         .arg(parser.value(secondsOption)));
+    }
+    return bench::runClothContacts(options, out);
 }
 
 int stiff(const QStringList &arguments, QTextStream &out, QTextStream &err)
@@ -283,6 +329,8 @@ int main(int argc, char *argv[])
         return throughput(arguments, out, err);
     if (name == QStringLiteral("contacts"))
         return contacts(arguments, out, err);
+    if (name == QStringLiteral("cloth-contacts"))
+        return clothContacts(arguments, out, err);
     if (name == QStringLiteral("stiff"))
         return stiff(arguments, out, err);
     if (name == QStringLiteral("xpbd-substep"))
