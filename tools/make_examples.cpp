@@ -115,9 +115,10 @@ core::SceneDesc clothOnTableScene()
     options.spacing = 0.05;
     options.height = 0.8 + options.radius;
     options.pinCorners = false;
+    options.sheetCollisions = true;  // it folds onto itself as it slides off the table
     core::SceneDesc scene = core::makeCloth(options);
     scene.name = "cloth-on-table";
-    scene.settings.particleCollisions = false;  // no self contacts: the sheet does not fold onto itself here
+    scene.settings.particleCollisions = false;  // the sheet collides as a surface instead
     scene.settings.restitution = 0.0;
     PlaneDesc table{Vector3d(0.0, 1.0, 0.0), 0.8};
     table.size = Eigen::Vector2d(1.0, 1.0);
@@ -128,12 +129,61 @@ core::SceneDesc clothOnTableScene()
     return scene;
 }
 
-// a 32 × 32 cloth pinned at two corners, draping onto a floor
+// a 32 × 32 cloth pinned at two corners, draping onto a floor; it collides as a surface, so a ball
+// generated onto it stays on it
 core::SceneDesc clothScene()
 {
-    core::SceneDesc scene = core::makeCloth({});
-    scene.settings.particleCollisions = false;  // no self contacts: the sheet never folds onto itself here
+    core::ClothOptions options;
+    options.sheetCollisions = true;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.settings.particleCollisions = false;  // the sheet collides as a surface instead
     scene.planes = {core::floorPlane(-0.3)};
+    return scene;
+}
+
+// a 32 × 32 sheet of 1.5 cm beads held upright just off the floor, a little wavy so that it
+// buckles, and let fall: it folds onto itself into a heap on the floor and never passes through
+// itself (the triangle collisions with self-collision on)
+core::SceneDesc clothCrumpleScene()
+{
+    core::ClothOptions options;
+    options.radius = 0.015;
+    options.pinCorners = false;
+    options.sheetCollisions = true;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.name = "cloth-crumple";
+    const double half = 0.5 * options.spacing * (options.rows - 1);
+    for (ParticleDesc &p : scene.particles) {
+        // the sheet's rows stood up along y, its lowest 5 cm off the floor
+        const double y = 0.05 + half + p.position.z();
+        p.position = Vector3d(p.position.x(), y, 0.02 * std::sin(17.0 * y) + 0.01 * std::sin(23.0 * p.position.x()));
+    }
+    scene.settings.particleCollisions = false;  // the sheet collides as a surface instead
+    scene.settings.friction = 0.3;
+    scene.planes = {core::floorPlane()};
+    return scene;
+}
+
+// a 24 × 24 sheet dropped onto a post of pinned 2 cm balls, thinner than its 5 cm cells: the sheet
+// drapes over the post's top instead of falling through around it
+core::SceneDesc clothOverPostScene()
+{
+    core::ClothOptions options;
+    options.rows = 24;
+    options.cols = 24;
+    options.radius = 0.01;
+    options.height = 0.75;
+    options.pinCorners = false;
+    options.sheetCollisions = true;
+    core::SceneDesc scene = core::makeCloth(options);
+    scene.name = "cloth-over-post";
+    // the post: pinned balls stacked 4 cm apart from the floor to 0.6 m, under a cell's middle
+    const double offset = 0.5 * options.spacing;
+    for (double y = 0.02; y <= 0.6 + 1e-9; y += 0.04)
+        scene.particles.push_back(ParticleDesc{Vector3d(offset, y, offset), Vector3d::Zero(), 1.0, 0.02, true});
+    scene.settings.particleCollisions = false;  // the sheet collides as a surface instead
+    scene.settings.friction = 0.4;
+    scene.planes = {core::floorPlane()};
     return scene;
 }
 
@@ -145,6 +195,7 @@ core::SceneDesc tearableClothScene()
     options.rows = 24;
     options.cols = 24;
     options.pinCorners = false;
+    options.sheetCollisions = true;  // the ball rests on the sheet, and the torn sheet collides as torn
     core::SceneDesc scene = core::makeCloth(options);
     scene.name = "tearable-cloth";
     for (int c = 0; c < options.cols; ++c) {
@@ -212,5 +263,6 @@ int main(int argc, char **argv)
 {
     return tools::writeScenes(argc, argv,
                               {particlesScene(), springsScene(), collisionsScene(), poolScene(), clothScene(), tearableClothScene(),
-                               heapScene(), stackScene(), clothOnTableScene(), stiffClothScene(), stiffChainScene()});
+                               heapScene(), stackScene(), clothOnTableScene(), stiffClothScene(), stiffChainScene(),
+                               clothCrumpleScene(), clothOverPostScene()});
 }

@@ -153,6 +153,9 @@ void TestGenerateDialog::addsTheClothAsOneUndoStep()
     const Eigen::Vector3d middle = 0.5 * (after.particles[n].position + after.particles.back().position);
     QVERIFY((middle - Eigen::Vector3d(2.0, 1.5, -1.0)).norm() < 1e-12);
     QCOMPARE(after.settings.substeps, std::max(before.settings.substeps, core::ClothOptions{}.substeps));
+    // the cloth collides as a surface: its 12 cells' triangles listed, the scene's collisions on
+    QVERIFY(after.settings.triangleCollisions);
+    QVERIFY(after.triangles.size() >= 12);
 
     // the new particles are the selection, and the worker runs the new scene
     std::vector<int> added(12);
@@ -228,11 +231,16 @@ void TestGenerateDialog::everyKindIsTheCoreGeneratorsDefault()
     ui::GenerateDialog *dialog = open();
     QVERIFY(dialog != nullptr);
     using Kind = ui::GenerateDialog::Kind;
+    // the dialog's cloth collides as a surface (its triangles listed), the generator's by default not
+    core::ClothOptions surface;
+    surface.sheetCollisions = true;
     const std::pair<Kind, core::SceneDesc> kinds[] = {
         {Kind::Rope, core::makeRope({})},   {Kind::Chain, core::makeChain({})},
         {Kind::Block, core::makeBlock({})}, {Kind::Ball, core::makeBall({})},
-        {Kind::SoftBall, core::makeSoftBall({})}, {Kind::Cloth, core::makeCloth({})},
+        {Kind::SoftBall, core::makeSoftBall({})}, {Kind::Cloth, core::makeCloth(surface)},
     };
+    QVERIFY(!core::makeCloth(surface).triangles.empty());
+    QVERIFY(core::makeCloth(surface).settings.triangleCollisions);
     for (const auto &[kind, expected] : kinds) {
         const int paints = dialog->preview()->paintCount();
         chooseKind(dialog, kind);

@@ -147,10 +147,6 @@ private:
 void TestMonkey::initTestCase()
 {
     QVERIFY(foldersReady());
-    // copies of the examples to open: a Save after Open must never write into the source tree
-    for (const QString &example : ui::DocumentFiles::exampleNames())
-        QVERIFY(QFile::copy(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/%1.json").arg(example),
-                            m_files.filePath(example + QStringLiteral(".json"))));
     setAutosave(m_files.filePath(QStringLiteral("recovery")), 0);
     QSettings().setValue(QStringLiteral("screenshots/directory"), m_files.filePath(QStringLiteral("shots")));
 }
@@ -187,6 +183,16 @@ TestMonkey::Outcome TestMonkey::run(const QString &example, std::uint32_t seed, 
     // (File › Open Recent offers other actions) and the timeline's budget are kept in them
     for (const char *kept : {"view", "files/recent", "timeline"})
         QSettings().remove(QString::fromLatin1(kept));
+    // and the same files: fresh copies of the examples to open (a Save after Open writes into the
+    // copy, never the source tree, and the last run's must not open here), and no monkey.json of
+    // the last run's
+    QFile::remove(m_files.filePath(QStringLiteral("monkey.json")));
+    for (const QString &name : examples) {
+        const QString copy = m_files.filePath(name + QStringLiteral(".json"));
+        QFile::remove(copy);
+        if (!QFile::copy(QStringLiteral(SPRINGLAB_SOURCE_DIR "/resources/scenes/%1.json").arg(name), copy))
+            return failed(QStringLiteral("cannot copy the example %1").arg(name));
+    }
     // small: software GL draws every pixel
     if (!openEditor({.setup = answerAtRandom, .size = QSize(800, 600), .settle = false}))
         return failed(editorFailure());

@@ -127,6 +127,9 @@ GenerateDialog::GenerateDialog(QWidget *parent)
 {
     setObjectName(QStringLiteral("generateDialog"));
     setWindowTitle(tr("Generate"));
+    // a cloth made here collides as a surface unless the user says otherwise: a ball dropped on it
+    // stays on it (the generator's own default stays off for scenes built in code)
+    m_cloth.sheetCollisions = true;
 
     // the kind, and its options
     m_kindBox->setObjectName(QStringLiteral("generateKind"));
