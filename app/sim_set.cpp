@@ -50,6 +50,9 @@ constexpr Field<core::Settings> kSettingsFields[] = {
      [](core::Settings &s, const OverrideValue &v) { s.contactSolver = v.contactSolver; }},
     {"friction", Kind::Number, [](core::Settings &s, const OverrideValue &v) { s.friction = v.number; }},
     {"staticFriction", Kind::Number, [](core::Settings &s, const OverrideValue &v) { s.staticFriction = v.number; }},
+    {"spin", Kind::Boolean, [](core::Settings &s, const OverrideValue &v) { s.spin = v.flag; }},
+    {"rollingFriction", Kind::Number, [](core::Settings &s, const OverrideValue &v) { s.rollingFriction = v.number; }},
+    {"spinningFriction", Kind::Number, [](core::Settings &s, const OverrideValue &v) { s.spinningFriction = v.number; }},
     {"planeCollisions", Kind::Boolean, [](core::Settings &s, const OverrideValue &v) { s.planeCollisions = v.flag; }},
     {"particleCollisions", Kind::Boolean,
      [](core::Settings &s, const OverrideValue &v) { s.particleCollisions = v.flag; }},
@@ -67,6 +70,8 @@ constexpr Field<core::ParticleDesc> kParticleFields[] = {
     {"pinned", Kind::Boolean, [](core::ParticleDesc &p, const OverrideValue &v) { p.pinned = v.flag; }},
     {"position", Kind::Vector, [](core::ParticleDesc &p, const OverrideValue &v) { p.position = v.vector; }},
     {"velocity", Kind::Vector, [](core::ParticleDesc &p, const OverrideValue &v) { p.velocity = v.vector; }},
+    {"angularVelocity", Kind::Vector,
+     [](core::ParticleDesc &p, const OverrideValue &v) { p.angularVelocity = v.vector; }},
 };
 
 // a spring's values; which particles it joins is the scene's structure, not a value
@@ -82,6 +87,9 @@ constexpr Field<core::PlaneDesc> kPlaneFields[] = {
     {"offset", Kind::Number, [](core::PlaneDesc &p, const OverrideValue &v) { p.offset = v.number; }},
     {"twoSided", Kind::Boolean, [](core::PlaneDesc &p, const OverrideValue &v) { p.twoSided = v.flag; }},
     {"friction", Kind::Number, [](core::PlaneDesc &p, const OverrideValue &v) { p.friction = v.number; }},
+    {"rollingFriction", Kind::Number, [](core::PlaneDesc &p, const OverrideValue &v) { p.rollingFriction = v.number; }},
+    {"spinningFriction", Kind::Number,
+     [](core::PlaneDesc &p, const OverrideValue &v) { p.spinningFriction = v.number; }},
 };
 
 template <typename Fields>

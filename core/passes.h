@@ -72,6 +72,10 @@ double restingThreshold(const Model &model, const Eigen::Vector3d &normal);
 // after the contacts, every particle and sheet edge kept off the sheets' triangles
 void rememberTriangleStart(const Model &model, const State &state, Workspace &work);
 void collideTriangles(const Model &model, State &state, Workspace &work);
+
+// the particles' orientations turned by their spins over the sub-step (integrators/orientation.cpp),
+// where the plan has spin
+void turnParticles(const Model &model, State &state, double h);
 void breakSprings(const Model &model, State &state, Workspace &work);      // spring_breaks.cpp
 // every position and velocity finite and bounded (only the pinned particles' when freeChecked says
 // the integrator checked the free ones); else records the first culprit in work.blowup

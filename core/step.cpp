@@ -25,6 +25,7 @@ bool step(const Model &model, State &state, Workspace &work)
     const StepPlan &plan = model.plan;
     Profile &profile = work.profile;
     const double h = model.subStep();
+    fitSpin(model, state);  // a state made before the scene could turn (a test's, an edit's)
 
     for (int sub = 0; sub < model.substeps; ++sub) {
         if (stopsHere(work))  // asked to stop: the step is not taken (the caller restores where it began)
@@ -71,6 +72,9 @@ bool step(const Model &model, State &state, Workspace &work)
         timed(profile, Stage::TriangleCollisions, plan.triangleCollisions, [&] { collideTriangles(model, state, work); });
         if (work.blowup)  // more pairs within reach than a sheet that is not flying apart has
             return stopped(state, work);
+
+        // the spins the contacts left turn the particles
+        turnParticles(model, state, h);
 
         // springs stretched past their breaking strain break, for good
         timed(profile, Stage::Breaks, plan.springBreaks, [&] { breakSprings(model, state, work); });

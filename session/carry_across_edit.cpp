@@ -32,6 +32,7 @@ bool carryAcrossEdit(const core::SceneDesc *previous, const core::SceneDesc &sce
         // the run goes on as it is; its broken springs follow the spring list
         if (sameCount) {
             carryBrokenSprings(*previous, scene, model, state);
+            core::fitSpin(model, state);
             return true;
         }
         [[fallthrough]];
@@ -39,6 +40,7 @@ bool carryAcrossEdit(const core::SceneDesc *previous, const core::SceneDesc &sce
         // same particles: the state stays valid as it is, broken springs included
         if (sameCount) {
             core::fitSpringBreaks(model, state);
+            core::fitSpin(model, state);
             return true;
         }
         [[fallthrough]];
@@ -81,6 +83,10 @@ core::State carryMotion(const core::SceneDesc &previous, const core::SceneDesc &
         const auto old = static_cast<Eigen::Index>(from);
         rebuilt.position.col(col) = state.position.col(old);
         rebuilt.velocity.col(col) = state.velocity.col(old);
+        if (rebuilt.angularVelocity.cols() > 0 && state.angularVelocity.cols() == state.position.cols()) {
+            rebuilt.angularVelocity.col(col) = state.angularVelocity.col(old);
+            rebuilt.orientation.col(col) = state.orientation.col(old);
+        }
     }
     // springs broken in the run stay broken while the spring list is the same
     const bool sameSprings = !state.springBroken.empty() && rebuilt.springBroken.size() == state.springBroken.size() &&

@@ -53,7 +53,8 @@ QByteArray vector(const Eigen::Vector3d &v)
     return '[' + io::formatNumber(v.x()) + ", " + io::formatNumber(v.y()) + ", " + io::formatNumber(v.z()) + ']';
 }
 
-QByteArray matrix(const Eigen::Matrix3Xd &m)
+template <int Rows>
+QByteArray matrix(const Eigen::Matrix<double, Rows, Eigen::Dynamic> &m)
 {
     QByteArray out = "[";
     for (Eigen::Index i = 0; i < m.size(); ++i)
@@ -68,6 +69,10 @@ QByteArray stateJson(const core::State &state)
     QByteArray out = "{\"time\": " + io::formatNumber(state.time) + ", \"step\": " + QByteArray::number(state.step) +
                      ", \"adaptiveStep\": " + io::formatNumber(state.adaptiveStep) +
                      ",\n        \"positions\": " + matrix(state.position) + ",\n        \"velocities\": " + matrix(state.velocity);
+    // the spins, where the scene can turn
+    if (state.angularVelocity.cols() > 0)
+        out += ",\n        \"angularVelocities\": " + matrix(state.angularVelocity) +
+               ",\n        \"orientations\": " + matrix(state.orientation);
     if (state.appliedCount > 0) {
         out += ",\n        \"applied\": [";
         bool first = true;
@@ -292,11 +297,12 @@ public:
             return fail(path, u"expected 3 numbers"_s);
         return numbers(value, path, out.data());
     }
-    bool matrix(const Value &value, const QString &path, qsizetype columns, Eigen::Matrix3Xd &out)
+    template <int Rows>
+    bool matrix(const Value &value, const QString &path, qsizetype columns, Eigen::Matrix<double, Rows, Eigen::Dynamic> &out)
     {
-        if (!value.isArray() || sizeOf(value) != 3 * columns)
-            return fail(path, u"expected %1 numbers (3 per particle)"_s.arg(3 * columns));
-        out.resize(3, columns);
+        if (!value.isArray() || sizeOf(value) != Rows * columns)
+            return fail(path, u"expected %1 numbers (%2 per particle)"_s.arg(Rows * columns).arg(Rows));
+        out.resize(Rows, columns);
         return numbers(value, path, out.data());
     }
     // a core::State of the scene, as stateJson() writes it
@@ -311,6 +317,10 @@ public:
             !number(o.value("adaptiveStep"_L1), path + u".adaptiveStep"_s, out.adaptiveStep) ||
             !matrix(o.value("positions"_L1), path + u".positions"_s, particles, out.position) ||
             !matrix(o.value("velocities"_L1), path + u".velocities"_s, particles, out.velocity))
+            return false;
+        if (o.value("angularVelocities"_L1).isArray() &&
+            (!matrix(o.value("angularVelocities"_L1), path + u".angularVelocities"_s, particles, out.angularVelocity) ||
+             !matrix(o.value("orientations"_L1), path + u".orientations"_s, particles, out.orientation)))
             return false;
         const bool applied = forEachElement(o.value("applied"_L1), [&](qsizetype i, const Value &element) {
             const QString at = path + u".applied[%1]"_s.arg(i);

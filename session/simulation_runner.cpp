@@ -521,6 +521,7 @@ bool SimulationRunner::restoreRecordedStart(const SessionRecording &recording)
         return false;
     m_state = start;
     core::fitSpringBreaks(*m_model, m_state);  // the capacity for every break
+    core::fitSpin(*m_model, m_state);
     m_stepsTaken = 0;
     m_diagnostics.stateChanged();
     m_scrubber.clear();

@@ -24,6 +24,8 @@ Collider makeCollider(const PlaneDesc &plane, const Settings &settings)
     c.twoSided = plane.twoSided || c.bounded;
     c.friction = plane.friction.value_or(settings.friction);
     c.staticFriction = plane.friction ? *plane.friction : settings.staticFriction.value_or(settings.friction);
+    c.rollingFriction = plane.rollingFriction.value_or(settings.rollingFriction);
+    c.spinningFriction = plane.spinningFriction.value_or(settings.spinningFriction);
     if (c.bounded) {
         // the given axis projected onto the plane; along the normal (or zero) it says nothing
         const Eigen::Vector3d along = plane.axis - plane.axis.dot(c.normal) * c.normal;

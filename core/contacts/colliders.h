@@ -22,6 +22,8 @@ struct Collider {
     double halfHeight = 0.0;                            // m
     double friction = 0.0;                              // μk of its contacts
     double staticFriction = 0.0;                        // μs of its contacts
+    double rollingFriction = 0.0;                       // μr of its contacts
+    double spinningFriction = 0.0;                      // about the normal
 };
 
 // the collider a plane compiles to, with the settings' friction where the plane has none

@@ -11,6 +11,7 @@
 // elastic balls) leaves the rest to the resting contacts, which brake them, and counts them.
 
 #include "core/contacts/broad_phase.h"
+#include "core/contacts/contact_spin.h"
 #include "core/contacts/particle_path.h"
 #include "core/geometry.h"
 #include "core/parallel.h"
@@ -335,24 +336,60 @@ void impactsOfPairs(const Model &model, const State &state, Workspace &work, dou
 
 // the impulse of one impact at its time: restitution along the normal, Coulomb friction across it
 // (sticking while μs times the normal impulse can stop the sliding, else μk times it)
+// With spin (`turn`: the levers and both sides' spins), the sliding is that of the points of
+// contact, and the friction turns both sides as well (contact_spin.h)
+struct ImpactSpin {
+    ContactLevers levers;
+    Eigen::Vector3d *omegaI = nullptr;
+    Eigen::Vector3d *omegaJ = nullptr;
+};
+
 void impulseAt(const Model &model, const Eigen::Vector3d &normal, double friction, double staticFriction, double wi,
-               double wj, Eigen::Vector3d &vi, Eigen::Vector3d &vj)
+               double wj, Eigen::Vector3d &vi, Eigen::Vector3d &vj, const ImpactSpin *turn = nullptr)
 {
     const double w = wi + wj;
     const Eigen::Vector3d relative = vi - vj;
     const double approach = normal.dot(relative);
     const double jn = -(1.0 + model.restitution) * approach / w;
-    const Eigen::Vector3d slip = relative - approach * normal;
+    Eigen::Vector3d slip = relative - approach * normal;
+    double sliding = w;
+    if (turn) {
+        slip += spinSlip(turn->levers, *turn->omegaI, *turn->omegaJ, normal);
+        sliding += turn->levers.turning();
+    }
     const double slipSpeed = slip.norm();
     double jt = 0.0;
     if (slipSpeed > 0.0) {
-        const double stop = slipSpeed / w;
+        const double stop = slipSpeed / sliding;
         jt = stop <= staticFriction * jn ? stop : std::min(stop, friction * jn);
     }
-    const Eigen::Vector3d impulse = jn * normal - (slipSpeed > 0.0 ? Eigen::Vector3d(jt / slipSpeed * slip)
-                                                                  : Eigen::Vector3d::Zero());
+    const Eigen::Vector3d surface = slipSpeed > 0.0 ? Eigen::Vector3d(-jt / slipSpeed * slip) : Eigen::Vector3d::Zero();
+    const Eigen::Vector3d impulse = jn * normal + surface;
     vi += wi * impulse;
     vj -= wj * impulse;
+    if (turn)
+        turnBy(turn->levers, normal, surface, *turn->omegaI, *turn->omegaJ);
+}
+
+// the spin of an impact of particle i with particle j (j < 0: a collider), where the plan has it
+std::optional<ImpactSpin> impactSpin(const Model &model, const State &state, int i, int j, Eigen::Vector3d &omegaI,
+                                     Eigen::Vector3d &omegaJ)
+{
+    if (!model.plan.spin)
+        return std::nullopt;
+    ImpactSpin turn;
+    turn.levers.ri = model.radius[i];
+    turn.levers.ai = model.invInertia[i];
+    omegaI = state.angularVelocity.col(i);
+    omegaJ.setZero();
+    if (j >= 0) {
+        turn.levers.rj = model.radius[j];
+        turn.levers.aj = model.invInertia[j];
+        omegaJ = state.angularVelocity.col(j);
+    }
+    turn.omegaI = &omegaI;
+    turn.omegaJ = &omegaJ;
+    return turn;
 }
 
 // the speed an Euler scheme's particle leaves a collider with. Under gravity alone the Euler
@@ -412,7 +449,11 @@ void resolve(const Model &model, State &state, ContactScratch &scratch, const Im
         const Separation s = separation(c, a.position(impact.time), side);
         const double approach = -s.normal.dot(vi);
         Eigen::Vector3d still = Eigen::Vector3d::Zero();
-        impulseAt(model, s.normal, c.friction, c.staticFriction, model.invMass[i], 0.0, vi, still);
+        Eigen::Vector3d omegaI, omegaJ;
+        const std::optional<ImpactSpin> turn = impactSpin(model, state, i, -1, omegaI, omegaJ);
+        impulseAt(model, s.normal, c.friction, c.staticFriction, model.invMass[i], 0.0, vi, still, turn ? &*turn : nullptr);
+        if (turn)
+            state.angularVelocity.col(i) = omegaI;
         if (a.path.shape != PathShape::Hermite)
             vi += (eulerRebound(model, s.normal, approach, impact.time, h) - s.normal.dot(vi)) * s.normal;
         redirect(scratch, state, i, a, impact.time, vi);
@@ -424,7 +465,14 @@ void resolve(const Model &model, State &state, ContactScratch &scratch, const Im
     const Eigen::Vector3d d = a.position(impact.time) - b.position(impact.time);
     const double distance = d.norm();
     const Eigen::Vector3d normal = apart(distance) ? Eigen::Vector3d(d / distance) : coincidentAxis(i, j);
-    impulseAt(model, normal, model.friction, model.staticFriction, model.invMass[i], model.invMass[j], vi, vj);
+    Eigen::Vector3d omegaI, omegaJ;
+    const std::optional<ImpactSpin> turn = impactSpin(model, state, i, j, omegaI, omegaJ);
+    impulseAt(model, normal, model.friction, model.staticFriction, model.invMass[i], model.invMass[j], vi, vj,
+              turn ? &*turn : nullptr);
+    if (turn) {
+        state.angularVelocity.col(i) = omegaI;
+        state.angularVelocity.col(j) = omegaJ;
+    }
     redirect(scratch, state, i, a, impact.time, vi);
     if (model.invMass[j] != 0.0)
         redirect(scratch, state, j, b, impact.time, vj);

@@ -6,16 +6,24 @@
 // over, the impulses the next sub-step starts from, is in the State (State::contactImpulses), so
 // that a resumed run solves exactly as the run it continues.
 
+#include "core/contacts/contact_spin.h"
+
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
 
 namespace core {
 
-// the inverse masses of a contact's two sides, 1/kg (0 for a side that stands still)
+// the inverse masses of a contact's two sides, 1/kg (0 for a side that stands still), and with
+// spin their inverse moments of inertia
 struct Weights {
     double i = 0.0, j = 0.0;
     double mass = 0.0;  // kg, 1 / (i + j): the contact's effective mass (0 when neither side moves)
+    // with spin (contact_spin.h): the levers and inverse inertias, the effective mass of sliding
+    // along the surface, and of turning one side against the other (0 when neither turns)
+    ContactLevers levers;
+    double tangentMass = 0.0;  // kg
+    double angularMass = 0.0;  // kg m²
     double sum() const { return i + j; }
 };
 
@@ -30,8 +38,14 @@ struct Contact {
     double drift = 0.0;             // s: how far its impulses move the sub-step's end, per m/s they add
     double friction = 0.0;          // μk
     double staticFriction = 0.0;    // μs
+    double rollingFriction = 0.0;   // μr
+    double spinningFriction = 0.0;  // about the normal
     double normalImpulse = 0.0;     // per unit inverse mass: N·s, accumulated over the iterations
     Eigen::Vector3d frictionImpulse = Eigen::Vector3d::Zero();  // N·s, accumulated
+    // with spin: the angular impulses of rolling resistance (along the surface) and spinning
+    // friction (about the normal), N·m·s, accumulated
+    Eigen::Vector3d rollingImpulse = Eigen::Vector3d::Zero();
+    double spinningImpulse = 0.0;
     double pushed = 0.0;            // m·kg, the position correction along the normal, accumulated
     Eigen::Vector3d heldBack = Eigen::Vector3d::Zero();  // m·kg, friction's correction along the surface
     Weights weights;       // in the solves' iterations
@@ -96,6 +110,8 @@ struct ContactScratch {
     std::vector<std::uint8_t> isStray;
 
     double drift = 0.0;  // s: β h, how far the velocity solve's changes move the sub-step's end, per m/s
+    double subStep = 0.0;  // s, h
+    bool spin = false;     // the plan's spin: contacts act at the particles' surfaces and turn them
 
     std::vector<Contact> contacts;  // as found, then in the order they are solved (sorted by level)
     std::vector<int> place;         // while sorting: where each contact goes

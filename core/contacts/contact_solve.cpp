@@ -71,7 +71,7 @@ void gather(const Model &model, State &state, Workspace &work, double h)
     // gathered in parallel shares, each into its own list, joined in share order: the order one
     // thread gathers them in, whatever the count
     const auto add = [&](std::vector<Contact> &out, int i, int j, double side, const Eigen::Vector3d &normal, double gap,
-                         double friction, double staticFriction) {
+                         double friction, double staticFriction, double rollingFriction, double spinningFriction) {
         const Eigen::Vector3d vj = j >= 0 ? Eigen::Vector3d(state.velocity.col(j)) : Eigen::Vector3d::Zero();
         const double approach = normal.dot(state.velocity.col(i) - vj);
         const bool fast = -approach > restingThreshold(model, normal);
@@ -84,6 +84,8 @@ void gather(const Model &model, State &state, Workspace &work, double h)
         c.normal = normal;
         c.friction = friction;
         c.staticFriction = staticFriction;
+        c.rollingFriction = rollingFriction;
+        c.spinningFriction = spinningFriction;
         // restitution once, after the compression; a contact slower than gravity makes it in a
         // sub-step along its normal is resting, and stays put (a bounce moves nothing: the particle may have been in an impact earlier in the
         // sub-step, or come in partway through it, and moving it as if the bounce had been at the
@@ -122,7 +124,7 @@ void gather(const Model &model, State &state, Workspace &work, double h)
                     const double gap = s.distance - model.radius[i];
                     if (gap < std::min(reach, model.radius[i]))
                         add(scratch.contactShares[std::size_t(share)], i, -1 - k, side, s.normal, gap, collider.friction,
-                            collider.staticFriction);
+                            collider.staticFriction, collider.rollingFriction, collider.spinningFriction);
                 }
             }
         });
@@ -152,7 +154,8 @@ void gather(const Model &model, State &state, Workspace &work, double h)
                 const Eigen::Vector3d normal =
                     apart(distance) ? Eigen::Vector3d(d / distance) : coincidentAxis(pair.i, pair.j);
                 add(scratch.contactShares[std::size_t(share)], i, j, 1.0, normal,
-                    distance - model.radius[i] - model.radius[j], model.friction, model.staticFriction);
+                    distance - model.radius[i] - model.radius[j], model.friction, model.staticFriction,
+                    model.rollingFriction, model.spinningFriction);
             }
         });
         joinShares(shares);
@@ -267,7 +270,9 @@ void sortByLevel(const Model &model, ContactScratch &scratch)
 void setWeights(const Model &model, ContactScratch &scratch)
 {
     for (Contact &c : scratch.contacts) {
-        c.weights = {model.invMass[c.i], c.withCollider() ? 0.0 : model.invMass[c.j]};
+        c.weights = Weights{};
+        c.weights.i = model.invMass[c.i];
+        c.weights.j = c.withCollider() ? 0.0 : model.invMass[c.j];
         c.shockWeights = c.weights;
         if (c.weights.j != 0.0) {
             const int li = scratch.level[std::size_t(c.i)];
@@ -277,8 +282,21 @@ void setWeights(const Model &model, ContactScratch &scratch)
             else if (lj < li)
                 c.shockWeights.j = 0.0;
         }
-        for (Weights *w : {&c.weights, &c.shockWeights})
+        for (Weights *w : {&c.weights, &c.shockWeights}) {
             w->mass = w->sum() > 0.0 ? 1.0 / w->sum() : 0.0;
+            w->tangentMass = w->mass;
+            if (!scratch.spin)
+                continue;
+            // a side that stands still does not turn either
+            ContactLevers &l = w->levers;
+            l.ri = model.radius[c.i];
+            l.rj = c.withCollider() ? 0.0 : model.radius[c.j];
+            l.ai = w->i > 0.0 ? model.invInertia[c.i] : 0.0;
+            l.aj = w->j > 0.0 ? model.invInertia[c.j] : 0.0;
+            const double sliding = w->sum() + l.turning();
+            w->tangentMass = sliding > 0.0 ? 1.0 / sliding : 0.0;
+            w->angularMass = l.ai + l.aj > 0.0 ? 1.0 / (l.ai + l.aj) : 0.0;
+        }
     }
 }
 
@@ -311,6 +329,72 @@ Eigen::Vector3d relativeVelocity(const State &state, const Contact &c)
                             : Eigen::Vector3d(state.velocity.col(c.i) - state.velocity.col(c.j));
 }
 
+// the other side's spin: a collider's is none
+Eigen::Vector3d spinOfJ(const State &state, const Contact &c)
+{
+    return c.withCollider() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(state.angularVelocity.col(c.j));
+}
+
+// how the contact's surfaces slide over each other: the relative velocity along the surface, and
+// with spin what the turning of each adds at the point of contact
+Eigen::Vector3d slipOf(const State &state, const Contact &c, bool spin)
+{
+    const Eigen::Vector3d v = relativeVelocity(state, c);
+    Eigen::Vector3d slip = v - c.normal.dot(v) * c.normal;
+    if (spin)
+        slip += spinSlip(c.weights.levers, state.angularVelocity.col(c.i), spinOfJ(state, c), c.normal);
+    return slip;
+}
+
+// a friction impulse along the surface: the speeds (and the sub-step's end, by drift), and with
+// spin the turn it gives each side
+void turnByFriction(State &state, const Contact &c, const Weights &w, const Eigen::Vector3d &impulse)
+{
+    Eigen::Vector3d still = Eigen::Vector3d::Zero();
+    if (c.withCollider())
+        turnBy(w.levers, c.normal, impulse, state.angularVelocity.col(c.i), still);
+    else
+        turnBy(w.levers, c.normal, impulse, state.angularVelocity.col(c.i), state.angularVelocity.col(c.j));
+}
+
+void applyFriction(State &state, const Contact &c, const Weights &w, const Eigen::Vector3d &impulse, double drift,
+                   bool spin)
+{
+    applyImpulse(state, c, w, impulse, drift);
+    if (spin)
+        turnByFriction(state, c, w, impulse);
+}
+
+// rolling resistance and spinning friction: angular impulses against the two sides turning one
+// against the other, across the contact (rolling) and about its normal (spinning), each bounded by
+// its coefficient times the normal impulse times the rolling radius
+void resistTurning(State &state, Contact &c, const Weights &w)
+{
+    if (!(w.angularMass > 0.0) || !(c.rollingFriction > 0.0 || c.spinningFriction > 0.0))
+        return;
+    const double reach = rollingRadius(c.weights.levers) * c.normalImpulse;
+    const Eigen::Vector3d turning = state.angularVelocity.col(c.i) - spinOfJ(state, c);
+    const double about = c.normal.dot(turning);
+    Eigen::Vector3d change = Eigen::Vector3d::Zero();
+    if (c.rollingFriction > 0.0) {
+        Eigen::Vector3d rolling = c.rollingImpulse - (turning - about * c.normal) * w.angularMass;
+        const double most = c.rollingFriction * reach;
+        if (rolling.squaredNorm() > most * most)
+            rolling *= most / rolling.norm();
+        change += rolling - c.rollingImpulse;
+        c.rollingImpulse = rolling;
+    }
+    if (c.spinningFriction > 0.0) {
+        const double most = c.spinningFriction * reach;
+        const double spinning = std::clamp(c.spinningImpulse - about * w.angularMass, -most, most);
+        change += (spinning - c.spinningImpulse) * c.normal;
+        c.spinningImpulse = spinning;
+    }
+    state.angularVelocity.col(c.i) += w.levers.ai * change;
+    if (!c.withCollider())
+        state.angularVelocity.col(c.j) -= w.levers.aj * change;
+}
+
 // warm starting: each contact starts from the impulses it ended the last sub-step with, applied
 // at once, so that the iterations go on converging where the last sub-step's left off instead of
 // from nothing (a pile's weight takes many more than 8 iterations to reach the ground from
@@ -339,6 +423,8 @@ void warmStart(State &state, ContactScratch &scratch)
             friction *= c.friction * c.normalImpulse / size;
         c.frictionImpulse = friction;
         applyImpulse(state, c, w, c.normalImpulse * c.normal + c.frictionImpulse, c.drift);
+        if (scratch.spin)  // the friction's turn too
+            turnByFriction(state, c, w, c.frictionImpulse);
     }
 }
 
@@ -480,15 +566,16 @@ void solveVelocities(State &state, ContactScratch &scratch, double restitution)
             applyImpulse(state, c, w, (total - c.normalImpulse) * c.normal, c.drift);
             c.normalImpulse = total;
 
-            const Eigen::Vector3d v = relativeVelocity(state, c);
-            const Eigen::Vector3d slip = v - c.normal.dot(v) * c.normal;
-            Eigen::Vector3d accumulated = c.frictionImpulse - slip * w.mass;
+            const Eigen::Vector3d slip = slipOf(state, c, scratch.spin);
+            Eigen::Vector3d accumulated = c.frictionImpulse - slip * w.tangentMass;
             // (squared: most contacts stick, and then no square root is taken)
             const double hold = c.staticFriction * c.normalImpulse;
             if (accumulated.squaredNorm() > hold * hold)
                 accumulated *= c.friction * c.normalImpulse / accumulated.norm();  // sliding: kinetic friction
-            applyImpulse(state, c, w, accumulated - c.frictionImpulse, c.drift);
+            applyFriction(state, c, w, accumulated - c.frictionImpulse, c.drift, scratch.spin);
             c.frictionImpulse = accumulated;
+            if (scratch.spin)
+                resistTurning(state, c, w);
         }
     }
     rebound(state, scratch, restitution);
@@ -534,7 +621,11 @@ void solvePositions(const Model &model, State &state, ContactScratch &scratch)
             Eigen::Vector3d moved = state.position.col(c.i) - scratch.startPosition.col(c.i);
             if (!c.withCollider())
                 moved -= state.position.col(c.j) - scratch.startPosition.col(c.j);
-            const Eigen::Vector3d slide = moved - c.normal.dot(moved) * c.normal;
+            Eigen::Vector3d slide = moved - c.normal.dot(moved) * c.normal;
+            // with spin, the points of contact's: a ball rolling along does not slide
+            if (scratch.spin)
+                slide += scratch.subStep * spinSlip(c.weights.levers, state.angularVelocity.col(c.i),
+                                                    spinOfJ(state, c), c.normal);
             Eigen::Vector3d held = c.heldBack + slide * w.mass;
             const double hold = c.staticFriction * c.pushed;
             c.stuck = !(held.squaredNorm() > hold * hold);
@@ -572,6 +663,49 @@ void keepOutOfColliders(const Model &model, State &state, ContactScratch &scratc
 // a contact whose position stuck moves as one along its surface: the slip left in the velocities
 // (the velocity solve's cone is set by the impulses, which a pile's weight need not reach) is taken
 // out, so that what stays put also stands still
+// With spin, a stuck contact whose rolling resistance held (short of its bound) stops rolling too:
+// both the slip s and the two sides' turning across it ρ are taken out at once, by a surface impulse
+// J and an angular one L. With T the sliding's inverse mass, A = a_i + a_j and c = a_i r_i − a_j r_j,
+// they change s by T J + c n × L and ρ by A L − c n × J, so J = (−s + (c/A) n × ρ) / (T − c²/A)
+// and L = (−ρ + c n × J) / A (for a ball on a floor T − c²/A = 1/m: it stands as if welded).
+// Taking them out one after the other left a ball on a slope creeping 2.4 mm/s.
+bool stopRolling(State &state, const Contact &c, const Weights &w)
+{
+    const ContactLevers &l = w.levers;
+    const double bound = c.rollingFriction * c.normalImpulse * rollingRadius(c.weights.levers);
+    const double a = l.ai + l.aj;
+    if (!(c.rollingFriction > 0.0) || !(a > 0.0) || !(c.rollingImpulse.norm() < bound))
+        return false;
+    const double coupling = l.ai * l.ri - l.aj * l.rj;
+    const double mass = w.sum() + l.turning() - coupling * coupling / a;
+    if (!(mass > 1e-12 * (w.sum() + l.turning())))
+        return false;
+    const Eigen::Vector3d slip = slipOf(state, c, true);
+    const Eigen::Vector3d turning = state.angularVelocity.col(c.i) - spinOfJ(state, c);
+    const Eigen::Vector3d rolling = turning - c.normal.dot(turning) * c.normal;
+    const Eigen::Vector3d impulse = (-slip + (coupling / a) * c.normal.cross(rolling)) / mass;
+    const Eigen::Vector3d angular = (-rolling + coupling * c.normal.cross(impulse)) / a;
+    // only while both stay within their bounds: else it slides or rolls, as the iterations left it
+    const double hold = c.staticFriction * c.normalImpulse;
+    if (!((c.frictionImpulse + impulse).squaredNorm() <= hold * hold) ||
+        !((c.rollingImpulse + angular).squaredNorm() <= bound * bound))
+        return false;
+    applyFriction(state, c, w, impulse, c.drift, true);  // (the sub-step's end too, as every impulse of the solve)
+    state.angularVelocity.col(c.i) += l.ai * angular;
+    if (!c.withCollider())
+        state.angularVelocity.col(c.j) -= l.aj * angular;
+    return true;
+}
+
+// with spin, after the velocity iterations: each resting contact that rolling resistance holds stops
+// rolling and slipping at once (stopRolling), which 8 iterations from a cold start leave creeping
+void holdRolling(State &state, ContactScratch &scratch)
+{
+    for (const Contact &c : scratch.contacts)
+        if (!c.bounce && c.normalImpulse > 0.0 && c.rollingFriction > 0.0)
+            stopRolling(state, c, weights(c, false));
+}
+
 void stopStuckSlip(State &state, ContactScratch &scratch)
 {
     for (const Contact &c : scratch.contacts) {
@@ -580,9 +714,9 @@ void stopStuckSlip(State &state, ContactScratch &scratch)
         const Weights &w = weights(c, false);
         if (!(w.sum() > 0.0))
             continue;
-        const Eigen::Vector3d v = relativeVelocity(state, c);
-        const Eigen::Vector3d slip = v - c.normal.dot(v) * c.normal;
-        applyImpulse(state, c, w, -slip * w.mass);
+        if (scratch.spin && stopRolling(state, c, w))
+            continue;
+        applyFriction(state, c, w, -slipOf(state, c, scratch.spin) * w.tangentMass, 0.0, scratch.spin);
     }
 }
 
@@ -592,6 +726,8 @@ void solveRestingContacts(const Model &model, State &state, Workspace &work, dou
 {
     ContactScratch &scratch = work.contactSolver;
     scratch.drift = driftWeight(pathShape(model.integrator)) * h;
+    scratch.subStep = h;
+    scratch.spin = model.plan.spin;
     // (the stages of 10⁶ particles take tens of milliseconds each: a waiting Pause stops between
     // them, and inside gather around its broad phase)
     gather(model, state, work, h);
@@ -608,6 +744,8 @@ void solveRestingContacts(const Model &model, State &state, Workspace &work, dou
     if (stopsHere(work))
         return;
     solveVelocities(state, scratch, model.restitution);
+    if (scratch.spin)
+        holdRolling(state, scratch);
     stopClosingContacts(model, state, scratch, h);
     keepImpulses(state, scratch);
     if (stopsHere(work))

@@ -208,6 +208,10 @@ void appendPlane(QByteArray &out, const core::PlaneDesc &plane)
         out += ", \"twoSided\": true";
     if (plane.friction)
         out += ", \"friction\": " + formatNumber(*plane.friction);
+    if (plane.rollingFriction)
+        out += ", \"rollingFriction\": " + formatNumber(*plane.rollingFriction);
+    if (plane.spinningFriction)
+        out += ", \"spinningFriction\": " + formatNumber(*plane.spinningFriction);
     const bool bounded = plane.bounded();
     if (bounded || !isPositiveZero(plane.size))
         out += ", \"size\": [" + formatNumber(plane.size[0]) + ", " + formatNumber(plane.size[1]) + ']';
@@ -457,6 +461,13 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
         out += ",\n        \"selfCollision\": false";
     if (s.thickness > 0.0)
         out += ",\n        \"thickness\": " + formatNumber(s.thickness);
+    // rolling resistance and spinning friction likewise
+    if (s.rollingFriction != 0.0)
+        out += ",\n        \"rollingFriction\": " + formatNumber(s.rollingFriction);
+    if (s.spinningFriction != 0.0)
+        out += ",\n        \"spinningFriction\": " + formatNumber(s.spinningFriction);
+    if (!s.spin)
+        out += ",\n        \"spin\": false";
     out += "\n    },\n";
 
     // particles, springs and planes, one per line
@@ -466,7 +477,17 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
         out += ", \"velocity\": ";
         appendVector(out, p.velocity);
         out += ", \"mass\": " + formatNumber(p.mass) + ", \"radius\": " + formatNumber(p.radius) +
-               ", \"pinned\": " + flag(p.pinned) + '}';
+               ", \"pinned\": " + flag(p.pinned);
+        // the spin and orientation only where a particle has them, so that other files stay as they were
+        if (!isPositiveZero(p.angularVelocity)) {
+            out += ", \"angularVelocity\": ";
+            appendVector(out, p.angularVelocity);
+        }
+        if (p.orientation != Eigen::Vector4d(1.0, 0.0, 0.0, 0.0)) {
+            out += ", \"orientation\": [" + formatNumber(p.orientation[0]) + ", " + formatNumber(p.orientation[1]) +
+                   ", " + formatNumber(p.orientation[2]) + ", " + formatNumber(p.orientation[3]) + ']';
+        }
+        out += '}';
     });
     appendList(out, "springs", scene.springs, false, [&](const core::SpringDesc &spring) {
         out += "{\"particles\": [" + QByteArray::number(spring.a) + ", " + QByteArray::number(spring.b) +

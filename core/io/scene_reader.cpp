@@ -36,8 +36,8 @@ struct Item {
     double number = 0.0;
     QString text;                     // a string's
     qsizetype size = 0;               // an array's length, and its first elements
-    std::array<JsonToken, 3> itemKinds{};
-    std::array<double, 3> items{};
+    std::array<JsonToken, 4> itemKinds{};  // (4: a quaternion's)
+    std::array<double, 4> items{};
     bool present() const { return kind != JsonToken::End; }
 };
 
@@ -73,11 +73,12 @@ constexpr std::array kSettingsKeys{"timeStep"_L1,      "substeps"_L1,        "au
                                    "xpbdIterations"_L1, "tolerance"_L1,     "adaptiveStep"_L1,    "gravity"_L1,       "viscosity"_L1,
                                    "restitution"_L1,   "contactSolver"_L1,   "friction"_L1,      "staticFriction"_L1,
                                    "planeCollisions"_L1, "particleCollisions"_L1, "triangleCollisions"_L1,
-                                   "selfCollision"_L1, "thickness"_L1};
-constexpr std::array kParticleKeys{"position"_L1, "velocity"_L1, "mass"_L1, "radius"_L1, "pinned"_L1};
+                                   "selfCollision"_L1, "thickness"_L1, "rollingFriction"_L1, "spinningFriction"_L1, "spin"_L1};
+constexpr std::array kParticleKeys{"position"_L1, "velocity"_L1,        "mass"_L1,       "radius"_L1,
+                                   "pinned"_L1,   "angularVelocity"_L1, "orientation"_L1};
 constexpr std::array kSpringKeys{"particles"_L1, "stiffness"_L1, "damping"_L1, "restLength"_L1, "breakStrain"_L1};
-constexpr std::array kPlaneKeys{"normal"_L1, "offset"_L1,  "twoSided"_L1, "friction"_L1,
-                                "size"_L1,   "centre"_L1,  "axis"_L1};
+constexpr std::array kPlaneKeys{"normal"_L1, "offset"_L1, "twoSided"_L1, "friction"_L1,        "size"_L1,
+                                "centre"_L1, "axis"_L1,   "rollingFriction"_L1, "spinningFriction"_L1};
 constexpr std::array kImpulseKeys{"particle"_L1, "other"_L1, "plane"_L1, "normal"_L1, "friction"_L1};
 constexpr std::array kRootKeys{"format"_L1, "version"_L1, "name"_L1,     "settings"_L1,       "particles"_L1,
                                "springs"_L1, "planes"_L1, "steerable"_L1, "contactImpulses"_L1, "triangles"_L1};
@@ -325,7 +326,10 @@ void SceneTextReader::checkSettings(std::array<Item, kSettingsKeys.size()> &item
         !member(at("particleCollisions"_L1), path, "particleCollisions"_L1, optional, settings.particleCollisions) ||
         !member(at("triangleCollisions"_L1), path, "triangleCollisions"_L1, optional, settings.triangleCollisions) ||
         !member(at("selfCollision"_L1), path, "selfCollision"_L1, optional, settings.selfCollision) ||
-        !member(at("thickness"_L1), path, "thickness"_L1, optional, settings.thickness))
+        !member(at("thickness"_L1), path, "thickness"_L1, optional, settings.thickness) ||
+        !member(at("rollingFriction"_L1), path, "rollingFriction"_L1, optional, settings.rollingFriction) ||
+        !member(at("spinningFriction"_L1), path, "spinningFriction"_L1, optional, settings.spinningFriction) ||
+        !member(at("spin"_L1), path, "spin"_L1, optional, settings.spin))
         return;
 
     // the integrator and the contact solver by name; the static coefficient only when given
@@ -426,7 +430,9 @@ bool SceneTextReader::checkParticle(std::array<Item, kParticleKeys.size()> &item
         !member(items[1], path, kParticleKeys[1], Need::Optional, particle.velocity) ||
         !member(items[2], path, kParticleKeys[2], Need::Required, particle.mass) ||
         !member(items[3], path, kParticleKeys[3], Need::Required, particle.radius) ||
-        !member(items[4], path, kParticleKeys[4], Need::Optional, particle.pinned))
+        !member(items[4], path, kParticleKeys[4], Need::Optional, particle.pinned) ||
+        !member(items[5], path, kParticleKeys[5], Need::Optional, particle.angularVelocity) ||
+        !member(items[6], path, kParticleKeys[6], Need::Optional, particle.orientation))
         return false;
     m_scene.particles.push_back(particle);
     return true;
@@ -474,9 +480,18 @@ bool SceneTextReader::checkPlane(std::array<Item, kPlaneKeys.size()> &items, qsi
         !member(items[5], path, kPlaneKeys[5], Need::Optional, plane.centre) ||
         !member(items[6], path, kPlaneKeys[6], Need::Optional, plane.axis))
         return false;
+    double rolling = 0.0, spinning = 0.0;
+    bool hasRolling = false, hasSpinning = false;
+    if (!member(items[7], path, kPlaneKeys[7], Need::Optional, rolling, &hasRolling) ||
+        !member(items[8], path, kPlaneKeys[8], Need::Optional, spinning, &hasSpinning))
+        return false;
     // a plane without friction of its own takes the settings'
     if (hasFriction)
         plane.friction = friction;
+    if (hasRolling)
+        plane.rollingFriction = rolling;
+    if (hasSpinning)
+        plane.spinningFriction = spinning;
     m_scene.planes.push_back(plane);
     return true;
 }

@@ -8,6 +8,11 @@ Energies energies(const Model &model, const State &state)
     // kinetic: free particles only (pinned ones are at rest)
     for (int i : model.freeParticles)
         e.kinetic += 0.5 * model.mass[i] * state.velocity.col(i).squaredNorm();
+    // and turning, where the scene can: ½ I ω² (I = m / (m / I), 0 for a particle of no radius)
+    if (model.plan.spin && state.angularVelocity.cols() == model.particleCount())
+        for (int i : model.freeParticles)
+            if (model.invInertia[i] > 0.0)
+                e.kinetic += 0.5 / model.invInertia[i] * state.angularVelocity.col(i).squaredNorm();
 
     // gravitational: -m g·x, zero at the origin
     for (int i = 0; i < model.particleCount(); ++i)

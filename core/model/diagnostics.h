@@ -9,7 +9,7 @@
 namespace core {
 
 struct Energies {
-    double kinetic = 0.0;        // J, ½ m v² of the free particles
+    double kinetic = 0.0;        // J, ½ m v² (and ½ I ω² where they turn) of the free particles
     double gravitational = 0.0;  // J, -m g·x, zero at the origin
     double spring = 0.0;         // J, ½ k (l - l0)²
     double total() const { return kinetic + gravitational + spring; }

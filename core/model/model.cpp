@@ -47,6 +47,8 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *b
     model->contactSolver = s.contactSolver;
     model->friction = s.friction;
     model->staticFriction = s.staticFriction.value_or(s.friction);
+    model->rollingFriction = s.rollingFriction;
+    model->spinningFriction = s.spinningFriction;
 
     // particles, structure of arrays
     const auto n = static_cast<Eigen::Index>(scene.particles.size());
@@ -125,6 +127,24 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *b
     plan.planeCollisions = anythingFree && s.planeCollisions && planes > 0;
     plan.particleCollisions = anythingFree && s.particleCollisions && n >= 2;
     plan.contactSolver = s.contactSolver == ContactSolver::Iterative && (plan.planeCollisions || plan.particleCollisions);
+    // the particles turn where a contact can turn them, or one is given a spin
+    const auto turns = [](double friction, double staticFriction, double rolling, double spinning) {
+        return friction > 0.0 || staticFriction > 0.0 || rolling > 0.0 || spinning > 0.0;
+    };
+    bool turned = plan.particleCollisions && turns(model->friction, model->staticFriction, model->rollingFriction,
+                                                   model->spinningFriction);
+    if (plan.planeCollisions)
+        for (const Collider &c : model->colliders)
+            turned = turned || turns(c.friction, c.staticFriction, c.rollingFriction, c.spinningFriction);
+    for (const ParticleDesc &p : scene.particles)
+        turned = turned || !p.angularVelocity.isZero(0.0);
+    plan.spin = s.spin && turned;
+    if (plan.spin) {
+        model->invInertia.setZero(n);
+        for (Eigen::Index i = 0; i < n; ++i)
+            if (model->invMass[i] > 0.0 && model->radius[i] > 0.0)
+                model->invInertia[i] = model->invMass[i] / (kSolidSphereInertia * model->radius[i] * model->radius[i]);
+    }
 
     // the list as the kernels walk it, and the pass it takes
     model->springLayout = makeSpringLayout(SpringList{model->springA, model->springB, model->restLength,

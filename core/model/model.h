@@ -18,6 +18,9 @@ namespace core {
 
 struct State;
 
+// a solid sphere's moment of inertia over m r²
+inline constexpr double kSolidSphereInertia = 0.4;
+
 // how a sub-step forces and integrates (step.cpp branches on it)
 enum class SubStepPath {
     Stages,        // the force passes one after another, inside the model's integrator
@@ -39,6 +42,10 @@ struct StepPlan {
     // the contacts go through the iterative solver (contacts.cpp) rather than the handout's passes:
     // its choice, and a contact pass planned
     bool contactSolver = false;
+    // the particles turn (State::angularVelocity, orientation): a contact can have friction,
+    // rolling resistance or spinning friction, or a particle is given a spin. Without it a contact
+    // acts at the centre and nothing turns, as in the handout
+    bool spin = false;
     SubStepPath subStep = SubStepPath::Stages;
 
     bool operator==(const StepPlan &) const = default;
@@ -60,11 +67,16 @@ struct Model {
     ContactSolver contactSolver = ContactSolver::Iterative;
     double friction = 0.0;        // μk of particle pairs
     double staticFriction = 0.0;  // μs of particle pairs
+    double rollingFriction = 0.0;   // μr of particle pairs
+    double spinningFriction = 0.0;  // about the normal, of particle pairs
 
     // particles; a pinned particle has inverse mass 0 (infinite mass)
     Eigen::VectorXd mass;     // kg
     Eigen::VectorXd invMass;  // 1/kg, 0 when pinned
     Eigen::VectorXd radius;   // m
+    // 1/(kg m²), a solid sphere's 1 / (2/5 m r²); 0 when pinned or of no radius. Set while the
+    // plan has spin
+    Eigen::VectorXd invInertia;
     std::vector<int> freeParticles;  // indices of the particles that are not pinned, ascending
     // the same as stretches of consecutive indices, [freeRanges[2 r], freeRanges[2 r + 1]): the
     // integrators' loops read and write them with unit stride

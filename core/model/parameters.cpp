@@ -52,6 +52,8 @@ constexpr ParameterInfo kTable[] = {
      "How far apart a sheet keeps from itself, other sheets and particles in a triangle collision; "
      "0: each sheet's own, from its particles' radii and its shortest side",
      0.0, 0.1},
+    {Parameter::AngularSpeed, "angularVelocity", "Spin", "rad/s", -kStateLimit, kStateLimit, false, Scale::Linear,
+     0.0, "A component of the particle's angular velocity", -100.0, 100.0},
 };
 
 }  // namespace

@@ -33,8 +33,9 @@ enum class Parameter {
     Extent,       // a side of a rectangle
     XpbdIterations,  // xpbd's passes over the springs a sub-step
     Thickness,       // how far apart sheets stay; 0: each sheet's own
+    AngularSpeed,    // a spin component
 };
-inline constexpr int kParameterCount = static_cast<int>(Parameter::Thickness) + 1;
+inline constexpr int kParameterCount = static_cast<int>(Parameter::AngularSpeed) + 1;
 
 enum class Scale { Linear, Log };
 

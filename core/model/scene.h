@@ -39,6 +39,15 @@ struct Settings {
     // static coefficient μs: a contact sticks while its friction stays within μs times its normal
     // force; unset, it equals friction
     std::optional<double> staticFriction{};
+    // rolling resistance μr: a contact's torque against rolling is at most μr times its normal
+    // force times the radius (a force μr N at the centre, as a rolling tyre's); spinning friction
+    // likewise about the contact's normal. A plane may override either
+    double rollingFriction = 0.0;
+    double spinningFriction = 0.0;
+    // the balls turn: contacts act at their surfaces, so that friction makes them roll
+    // (docs/physics.md, "Spin and rolling"); off, contacts act at the centres and nothing turns, as in
+    // the handout and as the stacking benchmarks measure
+    bool spin = true;
     bool planeCollisions = true;
     bool particleCollisions = true;
     // the sheets' triangles (SceneDesc::triangles, or those the springs span) as surfaces that
@@ -59,6 +68,10 @@ struct ParticleDesc {
     double mass = 1.0;                                   // kg, > 0
     double radius = 0.1;                                 // m, > 0
     bool pinned = false;                                 // infinite mass: never moves
+    // rad/s, its spin (a pinned particle keeps the spin it is given: a turning wheel)
+    Eigen::Vector3d angularVelocity = Eigen::Vector3d::Zero();
+    // its orientation, a unit quaternion (w, x, y, z): what turns the pattern drawn on it
+    Eigen::Vector4d orientation{1.0, 0.0, 0.0, 0.0};
 
     bool operator==(const ParticleDesc &) const = default;
 };
@@ -90,6 +103,9 @@ struct PlaneDesc {
     // the direction of the width, projected onto the plane; zero (or along the normal): the
     // direction the viewport uses, normal × y (normal × x when the normal is near y)
     Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+    // this plane's rolling resistance and spinning friction; unset: the settings'
+    std::optional<double> rollingFriction{};
+    std::optional<double> spinningFriction{};
 
     bool bounded() const { return size[0] > 0.0 && size[1] > 0.0; }
 

@@ -24,6 +24,18 @@ std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &st
         snapshot->pinned[at] = model.isPinned(i) ? 1 : 0;
     }
 
+    if (state.orientation.cols() == n) {
+        snapshot->orientations.resize(4 * static_cast<std::size_t>(n));
+        snapshot->angularVelocities.resize(3 * static_cast<std::size_t>(n));
+        for (int i = 0; i < n; ++i)
+            for (int k = 0; k < 4; ++k) {
+                snapshot->orientations[4 * std::size_t(i) + std::size_t(k)] = static_cast<float>(state.orientation(k, i));
+                if (k < 3)
+                    snapshot->angularVelocities[3 * std::size_t(i) + std::size_t(k)] =
+                        static_cast<float>(state.angularVelocity(k, i));
+            }
+    }
+
     // springs: both ends, and the strain that colours them
     const int springs = model.springCount();
     snapshot->springEnds.resize(6 * static_cast<std::size_t>(springs));

@@ -21,6 +21,9 @@ struct Snapshot {
 
     std::vector<float> positions;   // xyz per particle, m
     std::vector<float> velocities;  // xyz per particle, m/s
+    // wxyz per particle, unit quaternions; empty where the scene cannot turn
+    std::vector<float> orientations;
+    std::vector<float> angularVelocities;  // xyz per particle, rad/s; empty likewise
     std::vector<float> radii;      // per particle, m
     std::vector<std::uint8_t> pinned;  // 1 per pinned particle
     std::vector<float> springEnds;     // xyz of end a, then xyz of end b, per spring

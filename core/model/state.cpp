@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <limits>
 
 namespace core {
 
@@ -18,6 +20,21 @@ State makeState(const Model &model, const SceneDesc &scene)
         state.position.col(i) = p.position;
         // a pinned particle has infinite mass: it is at rest, whatever the file says
         state.velocity.col(i) = p.pinned ? Eigen::Vector3d::Zero() : p.velocity;
+    }
+    if (model.plan.spin) {
+        state.angularVelocity.resize(3, n);
+        state.orientation.resize(4, n);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const ParticleDesc &p = scene.particles[static_cast<std::size_t>(i)];
+            state.angularVelocity.col(i) = p.angularVelocity;
+            // a unit quaternion as it is, to the bit (a run saved and resumed goes on the same);
+            // one that is not (typed by hand) made unit
+            const double squared = p.orientation.squaredNorm();
+            state.orientation.col(i) =
+                std::abs(squared - 1.0) <= 8.0 * std::numeric_limits<double>::epsilon() ? p.orientation
+                : squared > 0.0 ? Eigen::Vector4d(p.orientation / std::sqrt(squared))
+                                : Eigen::Vector4d(1, 0, 0, 0);
+        }
     }
     state.adaptiveStep = scene.settings.adaptiveStep.value_or(0.0);
     state.contactImpulses = scene.contactImpulses;
@@ -42,6 +59,17 @@ void fitSpringBreaks(const Model &model, State &state)
     state.breaks.reserve(springs);
 }
 
+void fitSpin(const Model &model, State &state)
+{
+    const Eigen::Index n = model.particleCount();
+    if (!model.plan.spin || (state.angularVelocity.cols() == n && state.orientation.cols() == n))
+        return;
+    state.angularVelocity.setZero(3, n);
+    state.orientation.resize(4, n);
+    state.orientation.row(0).setOnes();
+    state.orientation.bottomRows(3).setZero();
+}
+
 void setAppliedForce(State &state, int particle, const Eigen::Vector3d &force)
 {
     assert(particle >= 0 && particle < state.particleCount());
@@ -62,6 +90,10 @@ void storeState(const State &state, SceneDesc &scene)
         const auto column = static_cast<Eigen::Index>(i);
         scene.particles[i].position = state.position.col(column);
         scene.particles[i].velocity = state.velocity.col(column);
+        if (state.angularVelocity.cols() == state.position.cols()) {
+            scene.particles[i].angularVelocity = state.angularVelocity.col(column);
+            scene.particles[i].orientation = state.orientation.col(column);
+        }
     }
     // the adaptive step size goes with the state it was chosen for
     scene.settings.adaptiveStep.reset();

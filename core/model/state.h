@@ -24,6 +24,10 @@ struct SpringBreak {
 struct State {
     Eigen::Matrix3Xd position;  // m, one column per particle
     Eigen::Matrix3Xd velocity;  // m/s
+    // while the plan has spin (else empty, so that a copy of a scene that cannot turn costs
+    // nothing more): rad/s, and unit quaternions (w, x, y, z), one column per particle
+    Eigen::Matrix3Xd angularVelocity;
+    Eigen::Matrix4Xd orientation;
 
     double time = 0.0;          // s
     std::uint64_t step = 0;     // steps taken since the initial conditions
@@ -58,10 +62,14 @@ State makeState(const Model &model, const SceneDesc &scene);
 // are for the same number of springs (a parameter change), all whole again for another number
 void fitSpringBreaks(const Model &model, State &state);
 
+// sizes the spin to the model: every particle at rest and unturned when the plan has spin and the
+// state has none for it (a scene edited to have friction); left as it is otherwise
+void fitSpin(const Model &model, State &state);
+
 // sets (or, with a zero force, clears) the force applied from outside to one particle
 void setAppliedForce(State &state, int particle, const Eigen::Vector3d &force);
 
-// writes the state's positions and velocities into the scene as its new initial conditions, and
+// writes the state's positions, velocities and spins into the scene as its new initial conditions, and
 // leaves out the springs that broke, so that a run from it goes on as this one would
 void storeState(const State &state, SceneDesc &scene);
 

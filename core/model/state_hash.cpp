@@ -18,6 +18,12 @@ std::uint64_t stateHash(const State &state)
         add(state.position.data()[i]);
     for (Eigen::Index i = 0; i < state.velocity.size(); ++i)
         add(state.velocity.data()[i]);
+    // the spins, where the plan has them (empty otherwise: the hash of a state that cannot turn is
+    // as it was)
+    for (Eigen::Index i = 0; i < state.angularVelocity.size(); ++i)
+        add(state.angularVelocity.data()[i]);
+    for (Eigen::Index i = 0; i < state.orientation.size(); ++i)
+        add(state.orientation.data()[i]);
     return hash;
 }
 

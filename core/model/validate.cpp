@@ -54,8 +54,14 @@ std::optional<SceneProblem> findParticleProblem(const SceneDesc &scene, std::siz
     if (!checkVector(Parameter::Coordinate, p.position, indexed("particles", i, "position"), problem) ||
         !checkVector(Parameter::Speed, p.velocity, indexed("particles", i, "velocity"), problem) ||
         !check(Parameter::Mass, p.mass, indexed("particles", i, "mass"), problem) ||
-        !check(Parameter::Radius, p.radius, indexed("particles", i, "radius"), problem))
+        !check(Parameter::Radius, p.radius, indexed("particles", i, "radius"), problem) ||
+        !checkVector(Parameter::AngularSpeed, p.angularVelocity, indexed("particles", i, "angularVelocity"), problem))
         return problem;
+    // an orientation is a rotation: any finite quaternion but zero (it is normalised when loaded)
+    if (!p.orientation.allFinite() || !(p.orientation.squaredNorm() > 1e-200) ||
+        !(p.orientation.cwiseAbs().maxCoeff() <= kStateLimit))
+        return SceneProblem{indexed("particles", i, "orientation"),
+                            "must be a rotation, a quaternion [w, x, y, z] of finite numbers, not all 0"};
     return std::nullopt;
 }
 
@@ -75,6 +81,8 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
         !check(Parameter::Restitution, s.restitution, "settings.restitution", problem) ||
         !check(Parameter::Friction, s.friction, "settings.friction", problem) ||
         !check(Parameter::Thickness, s.thickness, "settings.thickness", problem) ||
+        !check(Parameter::Friction, s.rollingFriction, "settings.rollingFriction", problem) ||
+        !check(Parameter::Friction, s.spinningFriction, "settings.spinningFriction", problem) ||
         (s.staticFriction && !check(Parameter::Friction, *s.staticFriction, "settings.staticFriction", problem)))
         return problem;
 
@@ -117,6 +125,10 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
         if (!(plane.normal.cwiseAbs().maxCoeff() > 0.0))
             return SceneProblem{indexed("planes", i, "normal"), "is zero: a plane needs a direction"};
         if ((plane.friction && !check(Parameter::Friction, *plane.friction, indexed("planes", i, "friction"), problem)) ||
+            (plane.rollingFriction &&
+             !check(Parameter::Friction, *plane.rollingFriction, indexed("planes", i, "rollingFriction"), problem)) ||
+            (plane.spinningFriction &&
+             !check(Parameter::Friction, *plane.spinningFriction, indexed("planes", i, "spinningFriction"), problem)) ||
             !check(Parameter::Extent, plane.size[0], indexed("planes", i, "size") + "[0]", problem) ||
             !check(Parameter::Extent, plane.size[1], indexed("planes", i, "size") + "[1]", problem) ||
             !checkVector(Parameter::Coordinate, plane.centre, indexed("planes", i, "centre"), problem) ||
