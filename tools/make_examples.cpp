@@ -69,12 +69,49 @@ core::SceneDesc poolScene()
     return scene;
 }
 
+// a pool break on felt, at a real table's sizes: the playing area of a 9-foot table (2.54 × 1.27 m)
+// inside four cushions, fifteen balls (57.15 mm, 170 g) racked in a triangle, the cue ball struck
+// at 8 m/s from the head string. The felt's friction (μ = 0.2) turns the balls' sliding into
+// rolling, its rolling resistance (μr = 0.01) stops them after metres; the balls' own friction is
+// small (0.05), the cushions have none. The cue ball is steered with the arrow keys
+core::SceneDesc poolBreakScene()
+{
+    core::SceneDesc scene;
+    scene.name = "pool-break";
+    scene.settings.restitution = 0.93;
+    scene.settings.friction = 0.05;
+    scene.settings.substeps = 4;
+    const double r = 0.028575, m = 0.17, halfLength = 1.27, halfWidth = 0.635;
+    scene.particles.push_back(ParticleDesc{Vector3d(-0.635, r, 0.0), Vector3d(8.0, 0.0, 0.0), m, r, false});
+    // the rack: its apex on the foot spot, a hair apart so that the balls start untouched
+    const double gap = 2.0 * r + 1e-4;
+    for (int row = 0; row < 5; ++row)
+        for (int k = 0; k <= row; ++k)
+            scene.particles.push_back(ParticleDesc{
+                Vector3d(0.635 + row * gap * std::sqrt(3.0) / 2.0, r, (k - 0.5 * row) * gap), Vector3d::Zero(), m, r,
+                false});
+    PlaneDesc felt{Vector3d(0.0, 1.0, 0.0), 0.0};
+    felt.friction = 0.2;
+    felt.rollingFriction = 0.01;
+    scene.planes = {felt,
+                    PlaneDesc{Vector3d(1.0, 0.0, 0.0), -halfLength},
+                    PlaneDesc{Vector3d(-1.0, 0.0, 0.0), -halfLength},
+                    PlaneDesc{Vector3d(0.0, 0.0, 1.0), -halfWidth},
+                    PlaneDesc{Vector3d(0.0, 0.0, -1.0), -halfWidth}};
+    for (std::size_t k = 1; k < scene.planes.size(); ++k)
+        scene.planes[k].friction = 0.0;
+    scene.steerable = 0;
+    return scene;
+}
+
 // a granular heap: 400 grains (μ = 0.5, e = 0.2) poured from a narrow column onto an open floor
 // pile into a cone at their angle of repose
 core::SceneDesc heapScene()
 {
     core::SceneDesc scene;
     scene.name = "heap";
+    // grains, not balls: they do not roll (balls that turn roll apart instead of heaping)
+    scene.settings.spin = false;
     scene.settings.substeps = 2;
     scene.settings.restitution = 0.2;
     scene.settings.friction = 0.5;
@@ -96,6 +133,8 @@ core::SceneDesc stackScene()
 {
     core::SceneDesc scene;
     scene.name = "stack";
+    // the stacks stand as the contacts benchmark measures them, on balls that do not turn
+    scene.settings.spin = false;
     scene.settings.restitution = 0.5;
     scene.settings.friction = 0.5;
     scene.particles = core::ballColumn(12, 0.1, 1.0, Vector3d(-1.5, 0.0, 0.0));
@@ -264,5 +303,5 @@ int main(int argc, char **argv)
     return tools::writeScenes(argc, argv,
                               {particlesScene(), springsScene(), collisionsScene(), poolScene(), clothScene(), tearableClothScene(),
                                heapScene(), stackScene(), clothOnTableScene(), stiffClothScene(), stiffChainScene(),
-                               clothCrumpleScene(), clothOverPostScene()});
+                               clothCrumpleScene(), clothOverPostScene(), poolBreakScene()});
 }

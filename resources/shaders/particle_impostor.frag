@@ -10,8 +10,11 @@ flat in vec3 vCentre;
 flat in float vRadius;
 flat in vec3 vColour;
 flat in vec2 vMarks;
+flat in vec4 vOrientation;
 
 uniform mat4 projection;
+uniform mat4 view;
+uniform bool patterned;  // the balls turn: their pattern is drawn
 uniform bool smoothEdges;  // with alpha to coverage
 
 out vec4 fragColour;
@@ -41,5 +44,6 @@ void main()
     vec4 clip = projection * vec4(hit, 1.0);
     gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
     vec3 towardEye = orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vCentre);
-    fragColour = vec4(shadeParticle(normal, towardEye, vColour, vMarks), coverage);
+    vec3 base = patterned ? patternOn(vColour, normal, vOrientation, mat3(view)) : vColour;
+    fragColour = vec4(shadeParticle(normal, towardEye, base, vMarks), coverage);
 }

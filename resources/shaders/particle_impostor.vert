@@ -8,6 +8,7 @@ layout(location = 1) in vec3 centre;  // per particle, world, m
 layout(location = 2) in float radius; // per particle, m
 layout(location = 3) in vec3 colour;
 layout(location = 4) in vec2 marks;   // pinned, selected
+layout(location = 5) in vec4 orientation;  // per particle, (w, x, y, z); identity where nothing turns
 
 uniform mat4 view;
 uniform mat4 projection;
@@ -17,6 +18,7 @@ flat out vec3 vCentre;
 flat out float vRadius;
 flat out vec3 vColour;
 flat out vec2 vMarks;
+flat out vec4 vOrientation;
 
 void main()
 {
@@ -26,6 +28,7 @@ void main()
     vRadius = radius;
     vColour = colour;
     vMarks = marks;
+    vOrientation = orientation;
 
     // nothing to draw when the eye is inside the sphere: a point outside the clip volume
     bool orthographic = projection[3][3] == 1.0;

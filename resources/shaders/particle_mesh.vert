@@ -6,6 +6,7 @@ layout(location = 1) in vec3 centre;  // per particle, world, m
 layout(location = 2) in float radius; // per particle, m
 layout(location = 3) in vec3 colour;
 layout(location = 4) in vec2 marks;   // pinned, selected
+layout(location = 5) in vec4 orientation;  // per particle, (w, x, y, z); identity where nothing turns
 
 uniform mat4 view;
 uniform mat4 projection;
@@ -14,6 +15,7 @@ out vec3 vNormal;  // view space
 flat out vec3 vTowardEye;
 flat out vec3 vColour;
 flat out vec2 vMarks;
+flat out vec4 vOrientation;
 
 void main()
 {
@@ -24,5 +26,6 @@ void main()
     vTowardEye = projection[3][3] == 1.0 ? vec3(0.0, 0.0, 1.0) : normalize(-c);
     vColour = colour;
     vMarks = marks;
+    vOrientation = orientation;
     gl_Position = projection * vec4(c + vNormal * radius, 1.0);
 }

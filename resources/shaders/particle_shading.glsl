@@ -30,3 +30,20 @@ vec3 shadeParticle(vec3 normal, vec3 towardEye, vec3 base, vec2 marks)
         colour = mix(colour, vec3(1.0), smoothstep(0.80, 0.96, rim));
     return colour;
 }
+
+// a turning ball's pattern (the scene can turn: the orientations are drawn): white caps about the
+// body's y axis with the ball's own colour as a band between them, as a striped pool ball, and a
+// dark spot where the body's x axis comes out, so that rolling and sliding look different.
+// viewNormal: unit, view space; q: the ball's orientation (w, x, y, z); viewRotation: the view's
+vec3 patternOn(vec3 base, vec3 viewNormal, vec4 q, mat3 viewRotation)
+{
+    vec3 world = transpose(viewRotation) * viewNormal;
+    // into the body: rotated by q's conjugate, v + 2 u × (u × v + w v) with u = -q.xyz
+    vec3 u = -q.yzw;
+    vec3 body = world + 2.0 * cross(u, cross(u, world) + q.x * world);
+    float blur = max(fwidth(body.y), 1.0e-4);
+    float cap = smoothstep(0.45 - blur, 0.45 + blur, abs(body.y));
+    vec3 colour = mix(base, vec3(0.92), cap);
+    float spot = smoothstep(0.93 - blur, 0.93 + blur, body.x);
+    return mix(colour, vec3(0.08), spot);
+}

@@ -93,6 +93,7 @@ private slots:
     void enterOnAMixedFieldChangesNothing();
     void pinnedIsTriState();
     void pinnedParticlesStayAtRest();
+    void spinIsEditedPinnedOrFree();
     void springFieldsEditTheSelectedSpringsOnly();
     void labelsGiveUnitsOnlyWhereThereAreSome();
     void badValueIsRefused_data();
@@ -291,6 +292,25 @@ void TestInspectorPanel::pinnedParticlesStayAtRest()
     QCOMPARE(m_document->scene().particles[1].velocity.x(), 3.0);
     QCOMPARE(m_document->scene().particles[2].velocity.x(), 0.0);
     QCOMPARE(commands(), count + 1);
+}
+
+void TestInspectorPanel::spinIsEditedPinnedOrFree()
+{
+    // ω: a free particle's and a pinned one's alike (a pinned ball turns in place, a wheel), one undo
+    // step, and the file's value afterwards
+    select({1, 2});
+    QVERIFY(field("spin.z")->isEnabled());
+    const int count = commands();
+    type(field("spin.z"), QStringLiteral("-40"));
+    QCOMPARE(m_document->scene().particles[1].angularVelocity, Eigen::Vector3d(0.0, 0.0, -40.0));
+    QCOMPARE(m_document->scene().particles[2].angularVelocity, Eigen::Vector3d(0.0, 0.0, -40.0));
+    QCOMPARE(commands(), count + 1);
+    QCOMPARE(field("spin.z")->value(), -40.0);
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->scene().particles[1].angularVelocity, Eigen::Vector3d::Zero().eval());
+    // a spin beyond the state's bound is refused, as a speed is
+    type(field("spin.x"), QStringLiteral("2e9"));
+    QCOMPARE(m_document->scene().particles[1].angularVelocity, Eigen::Vector3d::Zero().eval());
 }
 
 void TestInspectorPanel::labelsGiveUnitsOnlyWhereThereAreSome()

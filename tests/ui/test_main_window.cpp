@@ -750,7 +750,7 @@ void TestMainWindow::badFileLeavesTheSceneOpen()
 void TestMainWindow::examplesAreAllListed()
 {
     const QStringList names = ui::DocumentFiles::exampleNames();
-    QCOMPARE(names.mid(0, 5), (QStringList{"particles", "springs", "collisions", "pool", "cloth"}));
+    QCOMPARE(names.mid(0, 6), (QStringList{"particles", "springs", "collisions", "pool", "pool-break", "cloth"}));
     for (const QString &name : names) {
         QString error;
         QVERIFY2(m_window->files()->openExample(name, &error), qPrintable(error));

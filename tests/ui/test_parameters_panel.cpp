@@ -249,6 +249,18 @@ void TestParametersPanel::collisionSwitchesEditTheSettings()
     // and they follow the document
     m_document->undoStack()->undo();
     QCOMPARE(m_panel->particleCollisionsBox()->isChecked(), m_document->scene().settings.particleCollisions);
+
+    // spin: on by default, off and back by its box, one undo step each
+    auto *spin = m_panel->findChild<QCheckBox *>(QStringLiteral("parameter-spin"));
+    QVERIFY(spin);
+    QVERIFY(spin->isChecked() && m_document->scene().settings.spin);
+    spin->click();
+    QVERIFY(!m_document->scene().settings.spin);
+    m_document->undoStack()->undo();
+    QVERIFY(m_document->scene().settings.spin && spin->isChecked());
+    // rolling resistance and spinning friction are rows of the contacts group
+    QVERIFY(m_panel->row(QStringLiteral("rollingFriction")));
+    QVERIFY(m_panel->row(QStringLiteral("spinningFriction")));
 }
 
 void TestParametersPanel::springsGroupSaysWhatItAppliesTo()

@@ -31,7 +31,7 @@ constexpr int kFileMessageMs = 5000;
 constexpr int kAutosaveChoices[] = {0, 30, 60, 120, 300, 600};
 
 // the examples in the handout's order; any others found in the resources follow
-constexpr const char *kExampleOrder[] = {"particles", "springs", "collisions", "pool",          "cloth",
+constexpr const char *kExampleOrder[] = {"particles", "springs", "collisions", "pool", "pool-break", "cloth",
                                          "tearable-cloth", "stack", "heap",     "cloth-on-table", "stiff-cloth",
                                          "stiff-chain", "cloth-crumple", "cloth-over-post"};
 

@@ -52,6 +52,13 @@ const ParticleField kParticleFields[] = {
      &core::ParticleDesc::velocity, 1},
     {"velocity.z", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Velocity z"), core::Parameter::Speed, nullptr,
      &core::ParticleDesc::velocity, 2},
+    // ω: a pinned particle may be given one too (it turns in place, a wheel that drives what it touches)
+    {"spin.x", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Spin x"), core::Parameter::AngularSpeed, nullptr,
+     &core::ParticleDesc::angularVelocity, 0},
+    {"spin.y", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Spin y"), core::Parameter::AngularSpeed, nullptr,
+     &core::ParticleDesc::angularVelocity, 1},
+    {"spin.z", QT_TRANSLATE_NOOP("ui::InspectorPanel", "Spin z"), core::Parameter::AngularSpeed, nullptr,
+     &core::ParticleDesc::angularVelocity, 2},
 };
 
 struct SpringField {
@@ -161,8 +168,9 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
         }
         if (field.axis == 0) {
             vectorRow = new QHBoxLayout;
-            const QString name =
-                field.vector == &core::ParticleDesc::position ? tr("Initial position") : tr("Initial velocity");
+            const QString name = field.vector == &core::ParticleDesc::position   ? tr("Initial position")
+                                 : field.vector == &core::ParticleDesc::velocity ? tr("Initial velocity")
+                                                                                 : tr("Initial spin");
             particleForm->addRow(withUnit(name, unit), vectorRow);
         }
         vectorRow->addWidget(box);
@@ -176,20 +184,25 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
     const QString currentTip = tr("The running simulation's, at the time the status bar shows: it changes as "
                                   "the run goes on and is not for editing (the initial conditions above are)");
     for (std::size_t c = 0; c < m_currentFields.size(); ++c) {
-        const bool position = c < 3;
+        const std::size_t vector = c / 3;  // 0 position, 1 velocity, 2 spin
         const char axis = "xyz"[c % 3];
         auto *value = new QLabel(m_particlesGroup);
-        value->setObjectName(QStringLiteral("inspector-current-%1.%2")
-                                 .arg(position ? QStringLiteral("position") : QStringLiteral("velocity"))
-                                 .arg(QLatin1Char(axis)));
+        const QString key = vector == 0 ? QStringLiteral("position")
+                            : vector == 1 ? QStringLiteral("velocity")
+                                          : QStringLiteral("spin");
+        value->setObjectName(QStringLiteral("inspector-current-%1.%2").arg(key).arg(QLatin1Char(axis)));
         value->setToolTip(currentTip);
         value->setTextInteractionFlags(Qt::TextSelectableByMouse);
         m_currentFields[c] = value;
         if (c % 3 == 0) {
             vectorRow = new QHBoxLayout;
-            particleForm->addRow(withUnit(position ? tr("Current position") : tr("Current velocity"),
-                                          unitOf(position ? core::Parameter::Coordinate : core::Parameter::Speed)),
-                                 vectorRow);
+            const QString name = vector == 0 ? tr("Current position")
+                                 : vector == 1 ? tr("Current velocity")
+                                               : tr("Current spin");
+            const core::Parameter parameter = vector == 0   ? core::Parameter::Coordinate
+                                              : vector == 1 ? core::Parameter::Speed
+                                                            : core::Parameter::AngularSpeed;
+            particleForm->addRow(withUnit(name, unitOf(parameter)), vectorRow);
         }
         vectorRow->addWidget(value, 1);
     }
@@ -336,9 +349,12 @@ void InspectorPanel::refreshCurrent()
             m_currentFields[c]->setText(QStringLiteral("—"));
             continue;
         }
-        const std::vector<float> &values = c < 3 ? snapshot->positions : snapshot->velocities;
-        const std::optional<double> shared =
-            sharedValue(particles, [&](std::size_t i) { return double(values[3 * i + c % 3]); });
+        const std::vector<float> &values = c < 3 ? snapshot->positions
+                                           : c < 6 ? snapshot->velocities
+                                                   : snapshot->angularVelocities;
+        // a scene that cannot turn has no spins: none turns
+        const std::optional<double> shared = sharedValue(
+            particles, [&](std::size_t i) { return values.empty() ? 0.0 : double(values[3 * i + c % 3]); });
         m_currentFields[c]->setText(shared ? QString::number(*shared, 'g', 6) : tr("mixed"));
     }
 

@@ -90,7 +90,7 @@ private:
     QGroupBox *m_springsGroup = nullptr;
     std::vector<InspectorSpinBox *> m_particleFields;  // in kParticleFields order
     std::vector<InspectorSpinBox *> m_springFields;    // in kSpringFields order
-    std::array<QLabel *, 6> m_currentFields{};  // position x, y, z, then velocity x, y, z
+    std::array<QLabel *, 9> m_currentFields{};  // position x, y, z, then velocity, then spin
     std::shared_ptr<const core::Snapshot> m_snapshot;
     QGroupBox *m_distanceGroup = nullptr;
     QLabel *m_currentDistance = nullptr;

@@ -79,6 +79,12 @@ const Binding kBindings[] = {
     {"staticFriction", core::Parameter::Friction, Group::Contacts, "",
      [](const core::SceneDesc &s) { return s.settings.staticFriction.value_or(s.settings.friction); },
      [](core::Settings &s, double v) { s.staticFriction = v; }, nullptr},
+    {"rollingFriction", core::Parameter::Friction, Group::Contacts, "",
+     [](const core::SceneDesc &s) { return s.settings.rollingFriction; },
+     [](core::Settings &s, double v) { s.rollingFriction = v; }, nullptr},
+    {"spinningFriction", core::Parameter::Friction, Group::Contacts, "",
+     [](const core::SceneDesc &s) { return s.settings.spinningFriction; },
+     [](core::Settings &s, double v) { s.spinningFriction = v; }, nullptr},
     // 0: each sheet's own thickness, from its particles' radii
     {"thickness", core::Parameter::Thickness, Group::Contacts, "",
      [](const core::SceneDesc &s) { return s.settings.thickness; },
@@ -225,6 +231,13 @@ ParametersPanel::ParametersPanel(SceneDocument &document, QWidget *parent)
     staticFriction->label()->setText(tr("Static friction"));
     staticFriction->setToolTip(tr("Static Coulomb coefficient μs: a contact sticks while the friction it needs stays "
                                   "within μs times the force pressing it; follows Friction until set here"));
+    ParameterRow *rolling = row(QStringLiteral("rollingFriction"));
+    rolling->label()->setText(tr("Rolling resistance"));
+    rolling->setToolTip(tr("μr: a rolling ball is held back as by a force of μr times the force pressing it, so "
+                           "that it rolls to a stop; a plane may have its own (scene file)"));
+    ParameterRow *spinning = row(QStringLiteral("spinningFriction"));
+    spinning->label()->setText(tr("Spinning friction"));
+    spinning->setToolTip(tr("The same against a ball spinning about the contact's normal, like a top on a table"));
     QFormLayout *contacts = forms[std::size_t(Group::Contacts)];
     int staticRow = 0;
     contacts->getWidgetPosition(staticFriction, &staticRow, nullptr);
@@ -248,6 +261,17 @@ ParametersPanel::ParametersPanel(SceneDocument &document, QWidget *parent)
             [this](bool on) { setCollisions(on, m_document.scene().settings.particleCollisions); });
     connect(m_particleCollisions, &QCheckBox::toggled, this,
             [this](bool on) { setCollisions(m_document.scene().settings.planeCollisions, on); });
+    // the balls turn, so that friction rolls them
+    m_spin = new QCheckBox(tr("Spin (balls roll)"), this);
+    m_spin->setObjectName(QStringLiteral("parameter-spin"));
+    m_spin->setToolTip(tr("Contacts act at the balls' surfaces: friction turns them, so a struck ball slides, then "
+                          "rolls. Off: contacts act at the centres and nothing turns, as in the handout"));
+    forms[std::size_t(Group::Contacts)]->addRow(m_spin);
+    connect(m_spin, &QCheckBox::toggled, this, [this](bool on) {
+        core::Settings settings = m_document.scene().settings;
+        settings.spin = on;
+        pushSettings(settings, tr("Switch spin"));
+    });
     // the sheets' triangles as surfaces, and a sheet against itself
     m_triangleCollisions = new QCheckBox(tr("Sheet collisions"), this);
     m_triangleCollisions->setObjectName(QStringLiteral("parameter-triangleCollisions"));
@@ -327,6 +351,8 @@ void ParametersPanel::refresh()
         m_triangleCollisions->setChecked(scene.settings.triangleCollisions);
         m_selfCollision->setChecked(scene.settings.selfCollision);
         m_selfCollision->setEnabled(scene.settings.triangleCollisions);
+        const QSignalBlocker blockSpin(m_spin);
+        m_spin->setChecked(scene.settings.spin);
     }
 
     // spring values apply to every spring; say so, and say when they differ now

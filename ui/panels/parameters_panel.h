@@ -78,6 +78,7 @@ private:
     QLabel *m_springsNote = nullptr;
     QComboBox *m_integrator = nullptr;
     QCheckBox *m_planeCollisions = nullptr;
+    QCheckBox *m_spin = nullptr;
     QCheckBox *m_particleCollisions = nullptr;
     QCheckBox *m_triangleCollisions = nullptr;
     QCheckBox *m_selfCollision = nullptr;

@@ -29,6 +29,7 @@ constexpr int kPositionLocation = 1;        // the per-particle attributes, as t
 constexpr int kRadiusLocation = 2;
 constexpr int kColourLocation = 3;
 constexpr int kMarksLocation = 4;
+constexpr int kOrientationLocation = 5;  // only while the balls turn (Gpu::turning)
 constexpr int kSurfacePositionLocation = 0;  // the sheet's attributes (surface.vert)
 constexpr int kSurfaceNormalLocation = 1;
 // the corners of a line's quad as line.vert takes them: (end, side)
@@ -85,6 +86,11 @@ struct Viewport::Gpu {
     // theirs alone); the particles' VAOs read their positions from here while `compacted`
     QOpenGLBuffer drawnPositions{QOpenGLBuffer::VertexBuffer};
     bool compacted = false;
+    // the drawn particles' orientations, while the scene turns (the particles' VAOs read them then)
+    QOpenGLBuffer orientations{QOpenGLBuffer::VertexBuffer};
+    bool turning = false;
+    // one identity quaternion, which every instance reads while nothing turns
+    QOpenGLBuffer unturned{QOpenGLBuffer::VertexBuffer};
 
     // lines, a pair of vertices each, drawn as instances of the line program's quad
     QOpenGLBuffer lineCorners{QOpenGLBuffer::VertexBuffer};
@@ -149,6 +155,15 @@ QSurfaceFormat Viewport::requestedFormat()
     format.setDepthBufferSize(24);
     format.setSamples(4);
     return format;
+}
+
+void Viewport::pointOrientations(QOpenGLBuffer &buffer, bool perInstance)
+{
+    buffer.bind();
+    glEnableVertexAttribArray(kOrientationLocation);
+    glVertexAttribPointer(kOrientationLocation, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+    // (a divisor past any instance count: every instance reads the first)
+    glVertexAttribDivisor(kOrientationLocation, perInstance ? 1 : 0x40000000);
 }
 
 void Viewport::setSnapshot(std::shared_ptr<const core::Snapshot> snapshot)
@@ -402,8 +417,14 @@ void Viewport::initializeGL()
     gpu->lineCorners.bind();
     gpu->lineCorners.allocate(kLineCorners, int(sizeof(kLineCorners)));
 
+    const float identity[] = {1.0f, 0.0f, 0.0f, 0.0f};
+    gpu->unturned.create();
+    gpu->unturned.bind();
+    gpu->unturned.allocate(identity, int(sizeof(identity)));
+
     // dynamic buffers, empty for now
-    for (QOpenGLBuffer *buffer : {&gpu->positions, &gpu->drawnPositions, &gpu->springs, &gpu->normals, &gpu->arrow}) {
+    for (QOpenGLBuffer *buffer :
+         {&gpu->positions, &gpu->drawnPositions, &gpu->orientations, &gpu->springs, &gpu->normals, &gpu->arrow}) {
         buffer->setUsagePattern(QOpenGLBuffer::StreamDraw);
         buffer->create();
     }
@@ -428,6 +449,7 @@ void Viewport::initializeGL()
                                   reinterpret_cast<const void *>(std::uintptr_t(a.offset * sizeof(float))));
             glVertexAttribDivisor(a.location, 1);
         }
+        pointOrientations(gpu->unturned, false);
     };
 
     // impostors: a 2D corner per vertex
@@ -588,6 +610,25 @@ void Viewport::uploadSnapshot()
             gpu.drawnPositions.bind();
             gpu.drawnPositions.allocate(m_gathered.data(), int(m_gathered.size() * sizeof(float)));
             gpu.particleCount = int(m_drawn.rows.size());
+        }
+        // the orientations of the same particles, where the scene turns
+        const bool turning = n > 0 && s.orientations.size() == 4 * std::size_t(n);
+        if (turning) {
+            gpu.orientations.bind();
+            if (m_drawn.all) {
+                gpu.orientations.allocate(s.orientations.data(), int(4 * n * sizeof(float)));
+            } else {
+                gatherRows(s.orientations.data(), 4, m_drawn.rows, m_gathered);
+                gpu.orientations.allocate(m_gathered.data(), int(m_gathered.size() * sizeof(float)));
+            }
+        }
+        if (gpu.turning != turning) {
+            gpu.turning = turning;
+            for (QOpenGLVertexArrayObject *vao : {&gpu.impostorVao, &gpu.meshVao}) {
+                vao->bind();
+                pointOrientations(turning ? gpu.orientations : gpu.unturned, turning);
+                vao->release();
+            }
         }
         if (gpu.compacted != !m_drawn.all) {
             gpu.compacted = !m_drawn.all;
@@ -768,6 +809,7 @@ void Viewport::drawScene(const Camera &camera, int samples, QSize pixels)
         gpu.impostorProgram.setUniformValue("view", view);
         gpu.impostorProgram.setUniformValue("projection", projection);
         gpu.impostorProgram.setUniformValue("smoothEdges", smooth);
+        gpu.impostorProgram.setUniformValue("patterned", gpu.turning);
         gpu.impostorVao.bind();
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, particles);
         glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
@@ -777,6 +819,7 @@ void Viewport::drawScene(const Camera &camera, int samples, QSize pixels)
         gpu.meshProgram.bind();
         gpu.meshProgram.setUniformValue("view", view);
         gpu.meshProgram.setUniformValue("projection", projection);
+        gpu.meshProgram.setUniformValue("patterned", gpu.turning);
         gpu.meshVao.bind();
         glDrawElementsInstanced(GL_TRIANGLES, gpu.sphereIndexCount, GL_UNSIGNED_INT, nullptr, particles);
         glDisable(GL_CULL_FACE);

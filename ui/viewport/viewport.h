@@ -24,6 +24,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QOpenGLFunctions_3_3_Core>
+#include <QOpenGLBuffer>
 #include <QOpenGLWidget>
 #include <QPoint>
 
@@ -158,6 +159,9 @@ protected:
     void keyPressEvent(QKeyEvent *event) override;
 
 private:
+    // the particles' orientation attribute (in the bound VAO) read from `buffer`: one per instance,
+    // or, while nothing turns, its one identity for every instance
+    void pointOrientations(QOpenGLBuffer &buffer, bool perInstance);
     struct Gpu;  // programs, buffers and vertex arrays; exists only while GL is initialised
     enum class Drag { None, Orbit, Pan };
 
