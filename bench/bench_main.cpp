@@ -6,6 +6,8 @@
 //   springlab-bench contacts [--out DIR] [--quick]   stacks, piles and a heap beside Bullet's rigid
 //                                                    spheres: what stands, what settles, the cost
 //   springlab-bench cloth-contacts [--out DIR] [--quick] [--size N]... [--seconds S]
+//   springlab-bench rolling [--out DIR]              single balls against their closed forms, and
+//                                                    as Bullet's rotating spheres
 //                                                    a sheet crumpling and one draping, with the
 //                                                    core's triangle collisions, without them and
 //                                                    as Bullet's soft-body cloth: crossings, cost
@@ -27,6 +29,7 @@
 
 #include "accuracy.h"
 #include "cloth_contacts.h"
+#include "rolling.h"
 #include "contacts.h"
 #include "pause_latency.h"
 #include "reference_problems.h"
@@ -56,6 +59,7 @@ const char *const kUsage =
     "       springlab-bench throughput [--out DIR] [--quick]\n"
     "       springlab-bench contacts [--out DIR] [--quick]\n"
     "       springlab-bench cloth-contacts [--out DIR] [--quick] [--size N]... [--seconds S]\n"
+    "       springlab-bench rolling [--out DIR]\n"
     "       springlab-bench stiff [--out DIR] [--quick] [--size N]... [--stiffness K]...\n"
     "       springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]\n"
     "       springlab-bench pause --scene FILE [--runs R] [--timeline-mb M]\n"
@@ -136,6 +140,21 @@ int contacts(const QStringList &arguments, QTextStream &out, QTextStream &err)
         QStringLiteral("Folder for the CSV and plot (default: .)."),
         QStringLiteral("Short runs and a small heap: a smoke test only."),
         [&](const QString &dir, bool quick) { return bench::runContacts({dir, quick}, out); });
+}
+
+int rolling(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("Single balls struck on felt, rolling and sliding down slopes and struck with backspin: the "
+                       "core and Bullet's rotating spheres beside the closed forms."));
+    parser.addHelpOption();
+    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Folder for the CSV (default: .)."),
+                                       QStringLiteral("DIR"), QStringLiteral("."));
+    parser.addOptions({outOption});
+    if (const std::optional<int> done = parseMode(parser, arguments, out, err, QStringLiteral("rolling")))
+        return *done;
+    return bench::runRolling(parser.value(outOption), out);
 }
 
 int clothContacts(const QStringList &arguments, QTextStream &out, QTextStream &err)
@@ -331,6 +350,8 @@ int main(int argc, char *argv[])
         return contacts(arguments, out, err);
     if (name == QStringLiteral("cloth-contacts"))
         return clothContacts(arguments, out, err);
+    if (name == QStringLiteral("rolling"))
+        return rolling(arguments, out, err);
     if (name == QStringLiteral("stiff"))
         return stiff(arguments, out, err);
     if (name == QStringLiteral("xpbd-substep"))

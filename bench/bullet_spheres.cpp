@@ -113,6 +113,7 @@ void BulletSpheres::enter(int count)
         w.spheres.push_back(std::make_unique<btRigidBody>(info));
         btRigidBody &body = *w.spheres.back();
         body.setLinearVelocity(toBullet(p.velocity));
+        body.setAngularVelocity(toBullet(p.angularVelocity));
         body.setRestitution(w.restitution);
         body.setFriction(w.friction);
         if (!w.rotates)
@@ -144,6 +145,11 @@ Eigen::Vector3d BulletSpheres::position(int particle) const
 Eigen::Vector3d BulletSpheres::velocity(int particle) const
 {
     return fromBullet(m_world->spheres[static_cast<std::size_t>(particle)]->getLinearVelocity());
+}
+
+Eigen::Vector3d BulletSpheres::angularVelocity(int particle) const
+{
+    return fromBullet(m_world->spheres[static_cast<std::size_t>(particle)]->getAngularVelocity());
 }
 
 std::string BulletSpheres::description()

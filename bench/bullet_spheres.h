@@ -40,6 +40,7 @@ public:
     int particleCount() const;
     Eigen::Vector3d position(int particle) const;
     Eigen::Vector3d velocity(int particle) const;
+    Eigen::Vector3d angularVelocity(int particle) const;  // rad/s
 
     // Bullet's version, precision and solver settings, for the run's output
     static std::string description();

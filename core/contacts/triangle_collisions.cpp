@@ -289,6 +289,32 @@ bool edgeEdgeAllowed(const Model &model, const ClothSurface &surface, int e, int
              model.invMass[b1] == 0.0);
 }
 
+// particle i's path from start to end, grown by its bound (the swept box), and by its radius too
+// (the box it is looked up by); whether that is finite
+void pointBox(TriangleScratch &s, int i, const Vec &start, const Vec &end, double bound)
+{
+    s.sweptLow.col(i) = start.cwiseMin(end).array() - bound;
+    s.sweptHigh.col(i) = start.cwiseMax(end).array() + bound;
+    const double pad = s.pointRadius[std::size_t(i)];
+    s.pointLow.col(i) = s.sweptLow.col(i).array() - pad;
+    s.pointHigh.col(i) = s.sweptHigh.col(i).array() + pad;
+    s.finite[std::size_t(i)] = s.pointLow.col(i).allFinite() && s.pointHigh.col(i).allFinite();
+}
+
+// a triangle's or an edge's box: its corners' swept boxes, grown by half its thickness
+void cornerBox(const TriangleScratch &s, const int *v, int count, double half, Eigen::Ref<Vec> low,
+               Eigen::Ref<Vec> high)
+{
+    low = s.sweptLow.col(v[0]);
+    high = s.sweptHigh.col(v[0]);
+    for (int k = 1; k < count; ++k) {
+        low = low.cwiseMin(s.sweptLow.col(v[k]));
+        high = high.cwiseMax(s.sweptHigh.col(v[k]));
+    }
+    low.array() -= half;
+    high.array() += half;
+}
+
 std::size_t mostCandidates(int particles, int edges)
 {
     return kMostPairsPerItem * std::size_t(particles + edges);
@@ -334,22 +360,10 @@ bool findCandidates(const Model &model, const ClothSurface &surface, const Eigen
         const Vec start = x0.col(i) - s.shiftStart;
         const double bound = kBoundThickness * s.margin;
         s.bound[std::size_t(i)] = bound;
-        s.sweptLow.col(i) = start.cwiseMin(x1.col(i)).array() - bound;
-        s.sweptHigh.col(i) = start.cwiseMax(x1.col(i)).array() + bound;
-        const double pad = s.pointRadius[std::size_t(i)];
-        s.pointLow.col(i) = s.sweptLow.col(i).array() - pad;
-        s.pointHigh.col(i) = s.sweptHigh.col(i).array() + pad;
-        finite[std::size_t(i)] = s.pointLow.col(i).allFinite() && s.pointHigh.col(i).allFinite();
+        pointBox(s, i, start, x1.col(i), bound);
     }
     auto featureBox = [&](const int *v, int count, double half, Eigen::Ref<Vec> low, Eigen::Ref<Vec> high) {
-        low = s.sweptLow.col(v[0]);
-        high = s.sweptHigh.col(v[0]);
-        for (int k = 1; k < count; ++k) {
-            low = low.cwiseMin(s.sweptLow.col(v[k]));
-            high = high.cwiseMax(s.sweptHigh.col(v[k]));
-        }
-        low.array() -= half;
-        high.array() += half;
+        cornerBox(s, v, count, half, low, high);
     };
     double extent = 0.0;
     int counted = 0;
@@ -515,22 +529,10 @@ bool updateCandidates(const Model &model, const ClothSurface &surface, const Eig
         const Vec start = x0.col(i) - s.shiftStart;
         const Vec end = x1.col(i) - s.shiftEnd;
         s.built.col(i) = end;
-        s.sweptLow.col(i) = start.cwiseMin(end).array() - bound;
-        s.sweptHigh.col(i) = start.cwiseMax(end).array() + bound;
-        const double pad = s.pointRadius[std::size_t(i)];
-        s.pointLow.col(i) = s.sweptLow.col(i).array() - pad;
-        s.pointHigh.col(i) = s.sweptHigh.col(i).array() + pad;
-        s.finite[std::size_t(i)] = s.pointLow.col(i).allFinite() && s.pointHigh.col(i).allFinite();
+        pointBox(s, i, start, end, bound);
     }
     auto featureBox = [&](const int *v, int count, double half, Eigen::Ref<Vec> low, Eigen::Ref<Vec> high) {
-        low = s.sweptLow.col(v[0]);
-        high = s.sweptHigh.col(v[0]);
-        for (int k = 1; k < count; ++k) {
-            low = low.cwiseMin(s.sweptLow.col(v[k]));
-            high = high.cwiseMax(s.sweptHigh.col(v[k]));
-        }
-        low.array() -= half;
-        high.array() += half;
+        cornerBox(s, v, count, half, low, high);
     };
     // the items with a moved corner: fresh (their pairs are found again), and loose from now on
     s.freshTriangle.assign(std::size_t(triangles), 0);
