@@ -153,6 +153,7 @@ private slots:
     void springsAreColouredByStrain();
     void planesAreTranslucent();
     void drawsASnapshotOfTheCore();
+    void turningBallsCarryTheirPattern();
     void leftDragOnEmptySpaceOrbits();
     void leftPressOnAParticleDoesNotOrbit();
     void middleAndShiftDragPan_data();
@@ -365,6 +366,42 @@ void TestViewport::planesAreTranslucent()
 
     // the corner is outside the wall's square and stays background
     QVERIFY2(isBackground(colourAt(image, *m_viewport, QPointF(2, 2)), &why), qPrintable(why));
+}
+
+void TestViewport::turningBallsCarryTheirPattern()
+{
+    // a ball of a scene that turns is drawn with white caps about its own y axis and its colour as a
+    // band between them: unturned, the top of the ball (in the world) is a cap; turned a quarter
+    // about x, the band; in a scene that cannot turn, its plain colour
+    core::SceneDesc scene;
+    scene.name = "pattern";
+    core::ParticleDesc ball;
+    ball.position = {0.0, 0.0, 0.0};
+    ball.radius = 0.5;
+    ball.angularVelocity = {0.0, 0.0, 1.0};  // the scene turns
+    scene.particles = {ball};
+    const auto model = core::compileModel(scene);
+    QVERIFY(model->plan.spin);
+    core::State state = core::makeState(*model, scene);
+    const auto colourOnTop = [&](const core::State &drawn, const core::Model &of) {
+        m_snapshot = std::make_shared<core::Snapshot>(*core::makeSnapshot(of, drawn));
+        m_viewport->setSnapshot(m_snapshot);
+        m_viewport->frameAll();
+        const QImage image = grab();
+        const QPointF top = m_viewport->camera().project(QVector3D(0.0f, 0.42f, 0.0f)).value();
+        return colourAt(image, *m_viewport, top);
+    };
+    QString why;
+    const QColor cap = colourOnTop(state, *model);
+    QCOMPARE_LT(cap.saturationF(), 0.15);  // white, shaded
+    state.orientation.col(0) = Eigen::Vector4d(std::sqrt(0.5), std::sqrt(0.5), 0.0, 0.0);  // 90° about x
+    const QColor band = colourOnTop(state, *model);
+    QVERIFY2(sameHue(band, ui::kFreeColour, &why), qPrintable(why));
+    // without spin nothing is patterned
+    scene.particles[0].angularVelocity.setZero();
+    const auto still = core::compileModel(scene);
+    QVERIFY(!still->plan.spin);
+    QVERIFY2(sameHue(colourOnTop(core::makeState(*still, scene), *still), ui::kFreeColour, &why), qPrintable(why));
 }
 
 void TestViewport::drawsASnapshotOfTheCore()
