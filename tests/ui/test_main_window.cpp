@@ -74,6 +74,7 @@ private slots:
     void undoReachesTheWorkerToo();
     void undoKeysWorkWhileAFieldHasTheFocus();
     void selectAllSaysWhatItSelected();
+    void openingAnotherSceneClearsTheSelection();
     void warningsGoWhenStale();
     void blowupPausesAndShowsInTheStatusBar();
     void arrowKeysSteerThePoolBall();
@@ -362,6 +363,26 @@ void TestMainWindow::selectAllSaysWhatItSelected()
              QStringLiteral("%1 particles and %2 springs selected").arg(scene.particles.size()).arg(scene.springs.size()));
     press(Qt::Key_Escape);
     QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("Nothing selected"));
+}
+
+void TestMainWindow::openingAnotherSceneClearsTheSelection()
+{
+    // Examples › springs, Ctrl+A, Examples › collisions: nothing of the new scene is selected, and
+    // Delete leaves it whole (it used to keep the old selection by index and empty the new scene)
+    QString error;
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("springs"), &error), qPrintable(error));
+    m_window->viewport()->setFocus();
+    press(Qt::Key_A, Qt::ControlModifier);
+    QVERIFY(!m_window->editTools()->selection().particles.empty());
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("collisions"), &error), qPrintable(error));
+    const std::size_t count = m_window->document()->scene().particles.size();
+    QVERIFY(count > 0);
+    QVERIFY(m_window->editTools()->selection().particles.empty());
+    QVERIFY(m_window->editTools()->selection().springs.empty());
+    QVERIFY(!m_window->editTools()->measurement());
+    m_window->viewport()->setFocus();
+    press(Qt::Key_Delete);
+    QCOMPARE(m_window->document()->scene().particles.size(), count);
 }
 
 void TestMainWindow::warningsGoWhenStale()

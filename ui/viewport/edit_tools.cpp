@@ -167,9 +167,18 @@ void EditTools::setSelection(Selection selection)
     emit selectionChanged();
 }
 
-void EditTools::sceneChanged()
+void EditTools::sceneChanged(SceneChange change)
 {
-    // undo or another scene can leave indices that are no longer there
+    // another scene (opened, reverted, recovered): nothing of the old one's selection or measure
+    // means anything in it, though its indices may exist there (Delete would hit them)
+    if (change == SceneChange::Replace) {
+        setSelection(Selection{});
+        setBandStart(-1);
+        setMeasured(-1, -1);
+        m_particleCount = int(m_document->scene().particles.size());
+        return;
+    }
+    // undo can leave indices that are no longer there
     Selection kept = m_selection;
     kept.clamp(m_document->scene());
     setSelection(kept);

@@ -37,6 +37,8 @@ class SceneDocument;
 class SimulationController;
 class Viewport;
 
+enum class SceneChange;
+
 enum class Tool { Select, AddParticle, Pin, Spring, Drag, Measure };
 
 // what new particles and springs get
@@ -136,7 +138,7 @@ private:
     void setMeasured(int from, int to);
     // the measured pair's line on screen now, with their distance
     std::optional<QLineF> lineBetween(int a, int b) const;
-    void sceneChanged();
+    void sceneChanged(ui::SceneChange change);
 
     // pushes one command that replaces the scene with an edited copy
     void apply(const QString &text, const std::function<void(core::SceneDesc &)> &edit, const QString &mergeKey = {});
