@@ -57,6 +57,10 @@ struct BulletSheet::World {
 
 namespace {
 
+// the most clusters a sheet's self-collision gets, and the k-means passes that make them
+constexpr int kMostClusters = 8192;
+constexpr int kClusterIterations = 8;
+
 // a pinned particle that is no triangle's corner: a ball the sheet falls on, not a node of it
 std::vector<bool> sheetParticles(const core::SceneDesc &scene)
 {
@@ -124,13 +128,18 @@ BulletSheet::BulletSheet(const core::SceneDesc &scene) : m_world(std::make_uniqu
         sheet.appendFace(w.nodeOf[std::size_t(t[0])], w.nodeOf[std::size_t(t[1])], w.nodeOf[std::size_t(t[2])]);
 
     // collisions: nodes against the rigid bodies by their distance fields, faces against faces by
-    // a cluster per face; the margin the beads' radius, Bullet's friction the scene's
+    // a cluster per face, up to kMostClusters faces (Bullet keeps a clusters² table of which
+    // clusters touch: a 200 x 200 sheet's 79 202 faces overflow its int size and crash it), else
+    // that many clusters by Bullet's k-means; the margin the beads' radius, Bullet's friction the scene's
     sheet.m_cfg.piterations = 4;
     sheet.m_cfg.kDF = static_cast<btScalar>(scene.settings.friction);
     sheet.m_cfg.collisions = btSoftBody::fCollision::SDF_RS | btSoftBody::fCollision::CL_SS |
                              btSoftBody::fCollision::CL_SELF;
     sheet.getCollisionShape()->setMargin(static_cast<btScalar>(radius));
-    sheet.generateClusters(0);
+    if (sheet.m_faces.size() <= kMostClusters)
+        sheet.generateClusters(0);
+    else
+        sheet.generateClusters(kMostClusters, kClusterIterations);
     sheet.setActivationState(DISABLE_DEACTIVATION);
     w.world.addSoftBody(&sheet);
 
@@ -168,7 +177,9 @@ std::string BulletSheet::description()
     return "Bullet " + std::to_string(BT_BULLET_VERSION / 100) + "." + std::to_string(BT_BULLET_VERSION % 100) +
            (sizeof(btScalar) == sizeof(double) ? " (double precision)" : " (single precision)") +
            ", one btSoftBody in a btSoftRigidDynamicsWorld, stepSimulation(h, 0): 4 position iterations, "
-           "collisions SDF_RS | CL_SS | CL_SELF with a cluster per face, margin the beads' radius";
+           "collisions SDF_RS | CL_SS | CL_SELF with a cluster per face (" + std::to_string(kMostClusters) +
+           " clusters by k-means, " + std::to_string(kClusterIterations) +
+           " iterations, for more faces), margin the beads' radius";
 }
 
 }  // namespace bench
