@@ -2,6 +2,7 @@
 
 #include <QByteArray>
 #include <QFile>
+#include <QSaveFile>
 #include <QThread>
 
 #include <algorithm>
@@ -82,6 +83,17 @@ std::optional<QDir> outputFolder(const QString &path, QTextStream &out)
         return dir;
     out << "springlab-bench: cannot create the folder " << path << '\n';
     return std::nullopt;
+}
+
+bool writeLines(const QDir &dir, const QString &name, const QStringList &lines, QTextStream &out)
+{
+    QSaveFile file(dir.filePath(name));
+    if (!file.open(QIODevice::WriteOnly) || file.write((lines.join('\n') + '\n').toUtf8()) < 0 || !file.commit()) {
+        out << "cannot write " << file.fileName() << '\n';
+        return false;
+    }
+    out << "wrote " << file.fileName() << '\n';
+    return true;
 }
 
 }  // namespace bench

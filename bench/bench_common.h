@@ -7,6 +7,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QString>
+#include <QStringList>
 #include <QTextStream>
 
 #include <optional>
@@ -41,5 +42,7 @@ QString loadText();
 // the folder a mode writes its CSV and PNG to, made if missing; nullopt (and a line on out) if it
 // cannot be made
 std::optional<QDir> outputFolder(const QString &path, QTextStream &out);
+// writes the lines (a CSV's) to dir/name whole or not at all, and says which on out
+bool writeLines(const QDir &dir, const QString &name, const QStringList &lines, QTextStream &out);
 
 }  // namespace bench

@@ -38,7 +38,6 @@
 #include "core/threads.h"
 
 #include <QElapsedTimer>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -270,12 +269,9 @@ int runClothContacts(const ClothContactsOptions &options, QTextStream &out)
             }
         }
     }
-    QSaveFile csv(dir->filePath(QStringLiteral("cloth-contacts.csv")));
-    if (!csv.open(QIODevice::WriteOnly) || csv.write((lines.join('\n') + '\n').toUtf8()) < 0 || !csv.commit()) {
-        out << "cannot write " << csv.fileName() << '\n';
+    if (!writeLines(*dir, QStringLiteral("cloth-contacts.csv"), lines, out))
         return 1;
-    }
-    out << "wrote " << csv.fileName() << "\n" << loadText() << ", " << clock.text() << '\n';
+    out << loadText() << ", " << clock.text() << '\n';
     return failed ? 1 : 0;
 }
 

@@ -25,7 +25,6 @@
 #include "core/model/workspace.h"
 #include "core/step.h"
 
-#include <QSaveFile>
 
 #include <cmath>
 #include <functional>
@@ -195,12 +194,9 @@ int runRolling(const QString &outDir, QTextStream &out)
                        .arg(number(bullet[k]), 12);
         }
     }
-    QSaveFile csv(dir->filePath(QStringLiteral("rolling.csv")));
-    if (!csv.open(QIODevice::WriteOnly) || csv.write((lines.join('\n') + '\n').toUtf8()) < 0 || !csv.commit()) {
-        out << "cannot write " << csv.fileName() << '\n';
+    if (!writeLines(*dir, QStringLiteral("rolling.csv"), lines, out))
         return 1;
-    }
-    out << "wrote " << csv.fileName() << "\n" << loadText() << ", " << clock.text() << '\n';
+    out << loadText() << ", " << clock.text() << '\n';
     return failed ? 1 : 0;
 }
 
