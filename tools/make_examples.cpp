@@ -4,6 +4,7 @@
 #include "tools/scene_writer.h"
 
 #include <cmath>
+#include <vector>
 
 namespace {
 
@@ -49,6 +50,24 @@ core::SceneDesc collisionsScene()
     return scene;
 }
 
+// a pool table: the felt (μ = 0.2, its rolling resistance as given) and four frictionless
+// cushions around the playing area, 2 halfLength along x by 2 halfWidth along z
+std::vector<PlaneDesc> poolTable(double halfLength, double halfWidth, double feltRolling)
+{
+    PlaneDesc felt{Vector3d(0.0, 1.0, 0.0), 0.0};
+    felt.friction = 0.2;
+    if (feltRolling > 0.0)
+        felt.rollingFriction = feltRolling;
+    std::vector<PlaneDesc> planes{felt,
+                                  PlaneDesc{Vector3d(1.0, 0.0, 0.0), -halfLength},
+                                  PlaneDesc{Vector3d(-1.0, 0.0, 0.0), -halfLength},
+                                  PlaneDesc{Vector3d(0.0, 0.0, 1.0), -halfWidth},
+                                  PlaneDesc{Vector3d(0.0, 0.0, -1.0), -halfWidth}};
+    for (std::size_t k = 1; k < planes.size(); ++k)
+        planes[k].friction = 0.0;
+    return planes;
+}
+
 // the handout's pool: a 10 × 10 table with four cushions and two balls; the first is steered with
 // the arrow keys (two presses overcome the felt). The felt is the floor's friction, μ = 0.2: a ball
 // slides to a stop within a second or two instead of coasting forever; the cushions have none
@@ -59,12 +78,7 @@ core::SceneDesc poolScene()
     scene.settings.restitution = 0.9;
     scene.particles = {ParticleDesc{Vector3d(-2.0, 0.5, 0.0), Vector3d::Zero(), 1.0, 0.5, false},
                        ParticleDesc{Vector3d(2.0, 0.5, 0.5), Vector3d::Zero(), 1.0, 0.5, false}};
-    PlaneDesc felt{Vector3d(0.0, 1.0, 0.0), 0.0};
-    felt.friction = 0.2;
-    scene.planes = {felt, PlaneDesc{Vector3d(1.0, 0.0, 0.0), -5.0}, PlaneDesc{Vector3d(-1.0, 0.0, 0.0), -5.0},
-                    PlaneDesc{Vector3d(0.0, 0.0, 1.0), -5.0}, PlaneDesc{Vector3d(0.0, 0.0, -1.0), -5.0}};
-    for (std::size_t k = 1; k < scene.planes.size(); ++k)
-        scene.planes[k].friction = 0.0;
+    scene.planes = poolTable(5.0, 5.0, 0.0);
     scene.steerable = 0;
     return scene;
 }
@@ -90,16 +104,7 @@ core::SceneDesc poolBreakScene()
             scene.particles.push_back(ParticleDesc{
                 Vector3d(0.635 + row * gap * std::sqrt(3.0) / 2.0, r, (k - 0.5 * row) * gap), Vector3d::Zero(), m, r,
                 false});
-    PlaneDesc felt{Vector3d(0.0, 1.0, 0.0), 0.0};
-    felt.friction = 0.2;
-    felt.rollingFriction = 0.01;
-    scene.planes = {felt,
-                    PlaneDesc{Vector3d(1.0, 0.0, 0.0), -halfLength},
-                    PlaneDesc{Vector3d(-1.0, 0.0, 0.0), -halfLength},
-                    PlaneDesc{Vector3d(0.0, 0.0, 1.0), -halfWidth},
-                    PlaneDesc{Vector3d(0.0, 0.0, -1.0), -halfWidth}};
-    for (std::size_t k = 1; k < scene.planes.size(); ++k)
-        scene.planes[k].friction = 0.0;
+    scene.planes = poolTable(halfLength, halfWidth, 0.01);
     scene.steerable = 0;
     return scene;
 }

@@ -11,8 +11,7 @@ namespace core {
 void turnParticles(const Model &model, State &state, double h)
 {
     if (!model.plan.spin)
-        return;
-    fitSpin(model, state);
+        return;  // (step() has fitted the state's spin to the model)
     for (int i = 0; i < model.particleCount(); ++i)
         state.orientation.col(i) = turned(state.orientation.col(i), state.angularVelocity.col(i), h);
 }
