@@ -15,6 +15,8 @@
 #include "sim_render.h"
 #include "sim_summary.h"
 
+#include "core/integrators/solver_report.h"
+
 #include "core/model/diagnostics.h"
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
@@ -281,6 +283,7 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
     const auto model = core::compileModel(scene);
     core::State state = core::makeState(*model, scene);
     const core::Energies start = core::energies(*model, state);
+    core::Workspace work;
 
     // what the run did, as far as it went, for --summary-json and --summary-csv
     qint64 nanoseconds = 0;
@@ -298,6 +301,12 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
         summary.start = start;
         summary.end = end;
         summary.springBreaks = state.breaks.size();
+        const core::Profile &profile = work.profile;
+        summary.solved = profile.solves > 0;
+        summary.solverIterations = summary.solved ? double(profile.solverIterationsTotal) / double(profile.solves) : 0.0;
+        summary.solverIterationsMost = profile.mostSolverIterations;
+        summary.solverResidual = profile.worstSolverResidual;
+        summary.solverCapHits = profile.solverCapHits;
         summary.warnings = loaded.warnings;
     };
 
@@ -326,7 +335,6 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
     // the run, in chunks between trace rows (every K steps, not the last step unless K divides it)
     // and frames; only stepping is timed
     const core::State initial = state;  // to explain a blow-up, should one happen
-    core::Workspace work;
     QElapsedTimer timer;
     bool blewUp = false;
     while (state.step < *steps && !blewUp) {
@@ -388,6 +396,8 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
                            .arg(end.total(), 0, 'g', 4)
                            .arg(QString::fromUtf8(core::integratorName(scene.settings.integrator).data(),
                                                   qsizetype(core::integratorName(scene.settings.integrator).size())));
+    if (const std::string unsolved = core::solverWarning(model->integrator, work.profile); !unsolved.empty())
+        runWarnings << QString::fromStdString(unsolved);
     if (!options.quiet)
         for (const QString &warning : runWarnings)
             QTextStream(stderr) << "springlab-sim: warning: " << warning << '\n';

@@ -39,6 +39,8 @@ constexpr Field<core::Settings> kSettingsFields[] = {
     {"timeStep", Kind::Number, [](core::Settings &s, const OverrideValue &v) { s.timeStep = v.number; }},
     {"substeps", Kind::Integer, [](core::Settings &s, const OverrideValue &v) { s.substeps = v.integer; }},
     {"xpbdIterations", Kind::Integer, [](core::Settings &s, const OverrideValue &v) { s.xpbdIterations = v.integer; }},
+    {"solverIterations", Kind::Integer,
+     [](core::Settings &s, const OverrideValue &v) { s.solverIterations = v.integer; }},
     {"autoSubsteps", Kind::Boolean, [](core::Settings &s, const OverrideValue &v) { s.autoSubsteps = v.flag; }},
     {"integrator", Kind::IntegratorName, [](core::Settings &s, const OverrideValue &v) { s.integrator = v.integrator; }},
     {"tolerance", Kind::Number, [](core::Settings &s, const OverrideValue &v) { s.tolerance = v.number; }},

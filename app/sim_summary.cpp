@@ -46,6 +46,12 @@ constexpr SummaryField kFields[] = {
     {"springEnd", true, [](const RunSummary &s) { return QJsonValue(s.end.spring); }},
     {"totalEnd", true, [](const RunSummary &s) { return QJsonValue(s.end.total()); }},
     {"springBreaks", true, [](const RunSummary &s) { return QJsonValue(double(s.springBreaks)); }},
+    {"solverIterations", true, [](const RunSummary &s) { return s.solved ? QJsonValue(s.solverIterations) : QJsonValue(); }},
+    {"solverIterationsMost", true,
+     [](const RunSummary &s) { return s.solved ? QJsonValue(s.solverIterationsMost) : QJsonValue(); }},
+    {"solverResidual", true, [](const RunSummary &s) { return s.solved ? QJsonValue(s.solverResidual) : QJsonValue(); }},
+    {"solverCapHits", true,
+     [](const RunSummary &s) { return s.solved ? QJsonValue(double(s.solverCapHits)) : QJsonValue(); }},
     {"warnings", false, [](const RunSummary &s) { return QJsonValue(QJsonArray::fromStringList(s.warnings)); }},
     {"error", false, [](const RunSummary &s) { return QJsonValue(s.error); }},
 };

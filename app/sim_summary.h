@@ -51,6 +51,15 @@ struct RunSummary {
     core::Energies start;        // J
     core::Energies end;          // J
     std::size_t springBreaks = 0;
+    // implicit-euler's, projective's and vbd's solves (null in the summary for the others): the
+    // mean and most iterations of a sub-step (0 for implicit-euler's direct solve), the largest
+    // residual left (relative: ‖r‖/‖b‖, or ‖∇E‖ after the iterations over before), and the
+    // sub-steps whose solve stopped at its cap
+    bool solved = false;
+    double solverIterations = 0.0;
+    int solverIterationsMost = 0;
+    double solverResidual = 0.0;
+    std::uint64_t solverCapHits = 0;
 };
 
 // the status in a word: "ok", "bad-input", "out-of-memory", "write-failed", "blew-up",

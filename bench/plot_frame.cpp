@@ -24,6 +24,8 @@ QColor integratorColour(core::Integrator integrator)
     case core::Integrator::ImplicitEuler: return QColor(0xE6, 0x9F, 0x00);
     case core::Integrator::AdaptiveRk45: return QColor(0x00, 0x00, 0x00);
     case core::Integrator::Xpbd: return QColor(0x56, 0xB4, 0xE9);
+    case core::Integrator::Projective: return QColor(0x88, 0x22, 0x55);
+    case core::Integrator::Vbd: return QColor(0x11, 0x77, 0x33);
     }
     return Qt::gray;
 }

@@ -36,6 +36,8 @@ CurveStyle styleOf(core::Integrator integrator)
     case core::Integrator::ImplicitEuler: return {colour, Marker::TriangleDown};
     case core::Integrator::AdaptiveRk45: return {colour, Marker::Cross};
     case core::Integrator::Xpbd: return {colour, Marker::Plus};
+    case core::Integrator::Projective: return {colour, Marker::Square};
+    case core::Integrator::Vbd: return {colour, Marker::Diamond};
     }
     return {colour, Marker::Circle};
 }

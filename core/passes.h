@@ -37,6 +37,8 @@ void rk4(const Model &model, State &state, Workspace &work, double h);
 void implicitEuler(const Model &model, State &state, Workspace &work, double h);
 void adaptiveRk45(const Model &model, State &state, Workspace &work, double h);
 void xpbd(const Model &model, State &state, Workspace &work, double h);  // xpbd.cpp
+void projective(const Model &model, State &state, Workspace &work, double h);  // projective.cpp
+void vbd(const Model &model, State &state, Workspace &work, double h);         // vbd.cpp
 // the plan's fused path (SubStepPath::FusedLattice): the symplectic or explicit Euler sub-step of a
 // lattice, forces and update fused block by block, the same bits as computeForces() and the
 // update; returns whether every new value of the free particles is finite and bounded

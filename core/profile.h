@@ -41,10 +41,36 @@ struct Profile {
     // work done, for cost estimates: force evaluations, and the adaptive and implicit schemes' own
     std::uint64_t forceEvaluations = 0;
     std::uint64_t rejectedSteps = 0;  // adaptive-rk45: trial steps thrown away
-    int solverIterations = 0;         // implicit-euler: conjugate-gradient iterations of the last solve
+    // implicit-euler: conjugate-gradient iterations of the last solve (0 for the direct solve);
+    // projective and vbd: the iterations of their last sub-step
+    int solverIterations = 0;
+    // the last solve's residual relative to its start: implicit-euler's ‖r‖/‖b‖, projective's and
+    // vbd's ‖∇E‖ after their iterations over ‖∇E‖ before them (the energy's gradient, in N)
+    double solverResidual = 0.0;
+    // sub-steps whose conjugate-gradient solve stopped at its cap before converging
+    std::uint64_t solverCapHits = 0;
+    // over the run: the solves, their iterations, the most in one and the largest residual
+    std::uint64_t solves = 0;
+    std::uint64_t solverIterationsTotal = 0;
+    int mostSolverIterations = 0;
+    double worstSolverResidual = 0.0;
+    // the factorisations made: implicit-euler's each sub-step, projective's once per topology,
+    // step and stiffness
+    std::uint64_t factorisations = 0;
 
     // seconds spent in the stages running now, for the stage around them (timed.h)
     double nestedSeconds = 0.0;
+
+    // the last solve's figures, and the run's
+    void recordSolve(int iterations, double residual)
+    {
+        solverIterations = iterations;
+        solverResidual = residual;
+        solves += 1;
+        solverIterationsTotal += static_cast<std::uint64_t>(iterations);
+        mostSolverIterations = iterations > mostSolverIterations ? iterations : mostSolverIterations;
+        worstSolverResidual = residual > worstSolverResidual ? residual : worstSolverResidual;
+    }
 };
 
 }  // namespace core

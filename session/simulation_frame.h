@@ -69,6 +69,9 @@ struct SimulationFrame {
     std::optional<core::StabilityLimit> stability;
     // particles faster than the pair speed limit allows (core::explainPairSpeed); empty when not
     std::string pairSpeedWarning;
+    // implicit-euler's, projective's and vbd's last sub-step: its iterations and the residual they
+    // left (core::solverSummary's words); empty for the other integrators and before a step
+    std::string solverSummary;
 
     TimelineInfo timeline;
 

@@ -123,6 +123,7 @@ public:
 
     // the live accuracy figures, the stability limit and the pair speed warning
     const RunDiagnostics &diagnostics() const { return m_diagnostics; }
+    const core::Profile &profile() const { return m_work.profile; }
     // estimates the local error now if a message or a blow-up changed the model or the state since
     // the last estimate; the worker calls it once a tick, after the messages and the steps
     void updateEstimate() { m_diagnostics.updateEstimate(m_model, m_state); }

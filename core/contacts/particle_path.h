@@ -26,6 +26,8 @@ inline PathShape pathShape(Integrator integrator)
     case Integrator::SymplecticEuler:
     case Integrator::ImplicitEuler:
     case Integrator::Xpbd:  // its velocity is the move it made: (x1 - x0) / h
+    case Integrator::Projective:
+    case Integrator::Vbd:
         return PathShape::KickDrift;
     case Integrator::ExplicitEuler:
         return PathShape::DriftKick;

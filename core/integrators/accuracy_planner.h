@@ -26,9 +26,9 @@
 //
 // Cost per simulated second = substeps × force evaluations per sub-step × seconds per evaluation
 // / timeStep. Evaluations are counted on a trial sub-step: 1 for the Euler schemes, 2 for velocity
-// Verlet, 4 for RK4; implicit Euler counts its one force evaluation, the Jacobian product of its
-// right-hand side and one per conjugate-gradient iteration (State::solverIterations of the trial),
-// each a pass over the springs like a force evaluation. The vector updates, contacts and checks of
+// Verlet, 4 for RK4. implicit-euler, projective and vbd do their work in a factorisation,
+// back-substitutions or sweeps rather than evaluations: their sub-step is timed against a force
+// evaluation on the same state and counted as that many evaluations (at least 1). The vector updates, contacts and checks of
 // a sub-step are not counted: the figure is a lower bound on the whole cost, and the comparison
 // between integrators is what it is for. adaptive-rk45 chooses its own steps and is not planned.
 //

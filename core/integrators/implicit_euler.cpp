@@ -1,15 +1,22 @@
 // Backward Euler, linearised once per step (Baraff and Witkin, "Large steps in cloth simulation",
 // 1998): solve (M - h ∂f/∂v - h² ∂f/∂x) Δv = h (f + h ∂f/∂x v), then v += Δv, x += h v.
 //
-// The system matrix is never built: a conjugate-gradient solve needs only its product with a
-// vector, which one pass over the springs gives. That keeps the step free of allocation (every
-// vector lives in the state's scratch) and its cost linear in the number of springs. A spring's
-// stiffness Jacobian is -k [(1 - l0/l)(I - u uᵀ) + u uᵀ]; the transverse term is clamped at zero
-// when the spring is compressed (l < l0) so that the matrix stays symmetric positive definite
-// and conjugate gradients converge. Pinned particles are handled exactly: their rows are the
-// identity with a zero right-hand side, so their Δv is 0.
+// A spring's stiffness Jacobian is -k [(1 - l0/l)(I - u uᵀ) + u uᵀ]; the transverse term is
+// clamped at zero when the spring is compressed (l < l0) so that the matrix stays symmetric
+// positive definite. Pinned particles are not unknowns: their Δv is 0. Two solves:
+//   - direct (the default): the matrix assembled over the free particles' coordinates and factored
+//     by a sparse Cholesky (Eigen's SimplicialLDLT), its ordering and symbolic analysis made once
+//     per topology, the numbers each sub-step. Exact to rounding whatever the stiffness;
+//   - conjugate gradients, never building the matrix (one pass over the springs per product),
+//     preconditioned by the inverse of each particle's 3 × 3 diagonal block, stopped at a relative
+//     residual of 1e-10 or 1000 iterations (a cap hit is counted in the profile and reported).
+// The benchmarks compare the two (docs/benchmarks.md, "Stiff materials").
 #include "core/passes.h"
 #include "core/springs/spring_jacobian.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <Eigen/Dense>
 
 
 namespace core {
@@ -30,48 +37,145 @@ void applySystem(const Model &model, const State &state, double h, const Eigen::
             out.col(i) = y.col(i);
 }
 
+
+// each free particle's 3 × 3 diagonal block of the system: (m + h c) I plus its springs'
+// h² K + h D blocks, by the same Jacobian as applySystem
+void addDiagonalBlock(const Model &model, const State &state, double h, int k, Eigen::Matrix3d &block)
+{
+    const int a = model.springA[static_cast<std::size_t>(k)];
+    const int b = model.springB[static_cast<std::size_t>(k)];
+    const Eigen::Vector3d d = state.position.col(a) - state.position.col(b);
+    const double length = d.norm();
+    if (!(length > 0.0))
+        return;  // no direction: the spring adds nothing, as in applySystem
+    const Eigen::Vector3d u = d / length;
+    const double transverse = std::max(0.0, 1.0 - model.restLength[k] / length);
+    const Eigen::Matrix3d uu = u * u.transpose();
+    block += h * h * model.stiffness[k] * (transverse * (Eigen::Matrix3d::Identity() - uu) + uu) +
+             h * model.damping[k] * uu;
+}
+
 }  // namespace
 
-void implicitEuler(const Model &model, State &state, Workspace &work, double h)
+struct ImplicitSolver {
+    std::vector<int> row;  // each particle's first coordinate's row, −1 when pinned
+    int springCount = -1;
+    std::vector<std::uint8_t> broken;  // the broken flags the pattern was made for
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::SparseMatrix<double> matrix;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+    Eigen::VectorXd rhs, solution;
+    std::vector<Eigen::Matrix3d> blocks;  // the conjugate gradients' preconditioner, inverted
+};
+
+namespace {
+
+// the 3 × 3 blocks of spring k: +B on (a, a) and (b, b), −B on (a, b) and (b, a)
+void springBlock(const Model &model, const State &state, double h, int k, Eigen::Matrix3d &block)
 {
-    Eigen::Matrix3Xd &b = scratch(state, work, 0);
-    Eigen::Matrix3Xd &dv = scratch(state, work, 1);
+    block.setZero();
+    addDiagonalBlock(model, state, h, k, block);
+}
+
+void solveDirectly(const Model &model, const State &state, Workspace &work, double h, const Eigen::Matrix3Xd &b,
+                   Eigen::Matrix3Xd &dv)
+{
+    if (!work.implicitSolver)
+        work.implicitSolver = std::make_shared<ImplicitSolver>();
+    ImplicitSolver &s = *work.implicitSolver;
+    const int n = model.particleCount();
+    s.row.assign(static_cast<std::size_t>(n), -1);
+    int rows = 0;
+    for (int i : model.freeParticles) {
+        s.row[static_cast<std::size_t>(i)] = rows;
+        rows += 3;
+    }
+    // every entry of the pattern, zeros included, so that the pattern stays that of the analysis
+    s.entries.clear();
+    for (int i : model.freeParticles)
+        for (int axis = 0; axis < 3; ++axis)
+            s.entries.emplace_back(s.row[std::size_t(i)] + axis, s.row[std::size_t(i)] + axis,
+                                   model.mass[i] + h * model.viscosity);
+    Eigen::Matrix3d block;
+    for (int k = 0; k < model.springCount(); ++k) {
+        if (state.isBroken(k))
+            continue;
+        springBlock(model, state, h, k, block);
+        const int ra = s.row[std::size_t(model.springA[std::size_t(k)])];
+        const int rb = s.row[std::size_t(model.springB[std::size_t(k)])];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                if (ra >= 0)
+                    s.entries.emplace_back(ra + r, ra + c, block(r, c));
+                if (rb >= 0)
+                    s.entries.emplace_back(rb + r, rb + c, block(r, c));
+                if (ra >= 0 && rb >= 0) {
+                    s.entries.emplace_back(ra + r, rb + c, -block(r, c));
+                    s.entries.emplace_back(rb + r, ra + c, -block(r, c));
+                }
+            }
+    }
+    s.matrix.resize(rows, rows);
+    s.matrix.setFromTriplets(s.entries.begin(), s.entries.end());
+    // the ordering and symbolic factorisation once per topology (a broken spring changes it)
+    if (s.springCount != model.springCount() || s.broken != state.springBroken || s.ldlt.rows() != rows) {
+        s.ldlt.analyzePattern(s.matrix);
+        s.springCount = model.springCount();
+        s.broken = state.springBroken;
+    }
+    s.ldlt.factorize(s.matrix);
+    work.profile.factorisations += 1;
+    s.rhs.resize(rows);
+    for (int i : model.freeParticles)
+        s.rhs.segment<3>(s.row[std::size_t(i)]) = b.col(i);
+    dv.setZero();
+    if (s.ldlt.info() != Eigen::Success) {
+        work.profile.recordSolve(0, 1.0);  // nothing solved: Δv stays 0
+        return;
+    }
+    s.solution = s.ldlt.solve(s.rhs);
+    for (int i : model.freeParticles)
+        dv.col(i) = s.solution.segment<3>(s.row[std::size_t(i)]);
+    const double bNorm = s.rhs.norm();
+    work.profile.recordSolve(0, bNorm > 0.0 ? (s.matrix * s.solution - s.rhs).norm() / bNorm : 0.0);
+}
+
+void solveByConjugateGradients(const Model &model, const State &state, Workspace &work, double h,
+                               const Eigen::Matrix3Xd &b, Eigen::Matrix3Xd &dv)
+{
     Eigen::Matrix3Xd &r = scratch(state, work, 2);
     Eigen::Matrix3Xd &p = scratch(state, work, 3);
     Eigen::Matrix3Xd &ap = scratch(state, work, 4);
     Eigen::Matrix3Xd &z = scratch(state, work, 5);
-    Eigen::Matrix3Xd &diagonal = scratch(state, work, 6);
+    if (!work.implicitSolver)
+        work.implicitSolver = std::make_shared<ImplicitSolver>();
+    std::vector<Eigen::Matrix3d> &blocks = work.implicitSolver->blocks;
+    const int n = model.particleCount();
 
-    // right-hand side h (f + h ∂f/∂x v); pinned rows 0
-    computeForces(model, state, work);
-    b = work.force;
-    if (model.plan.springs) {
-        Eigen::Matrix3Xd &kv = z;  // borrowed before the solve needs it
-        kv.setZero();
-        addSpringJacobians(model, state, state.velocity, 1.0, 0.0, kv);  // -∂f/∂x v
-        b -= h * kv;
-    }
-    b *= h;
-    for (int i = 0; i < model.particleCount(); ++i)
-        if (model.isPinned(i))
-            b.col(i).setZero();
-
-    // Jacobi preconditioner: the mass, the drag and each spring's share on the diagonal
-    for (int i = 0; i < model.particleCount(); ++i)
-        diagonal.col(i).setConstant(model.isPinned(i) ? 1.0 : model.mass[i] + h * model.viscosity);
+    // block-Jacobi preconditioner: each particle's 3 × 3 diagonal block, inverted
+    blocks.assign(static_cast<std::size_t>(n), Eigen::Matrix3d::Zero());
+    for (int i = 0; i < n; ++i)
+        blocks[std::size_t(i)].diagonal().setConstant(model.isPinned(i) ? 1.0 : model.mass[i] + h * model.viscosity);
+    Eigen::Matrix3d block;
     for (int k = 0; k < model.springCount(); ++k) {
         if (state.isBroken(k))
             continue;
-        const double share = h * h * model.stiffness[k] + h * model.damping[k];
+        springBlock(model, state, h, k, block);
         for (int end : {model.springA[static_cast<std::size_t>(k)], model.springB[static_cast<std::size_t>(k)]})
             if (!model.isPinned(end))
-                diagonal.col(end).array() += share;
+                blocks[std::size_t(end)] += block;
     }
+    for (Eigen::Matrix3d &m : blocks)
+        m = m.inverse().eval();
+    const auto precondition = [&](const Eigen::Matrix3Xd &in, Eigen::Matrix3Xd &out) {
+        for (int i = 0; i < n; ++i)
+            out.col(i) = blocks[std::size_t(i)] * in.col(i);
+    };
 
     // preconditioned conjugate gradients from Δv = 0
     dv.setZero();
     r = b;
-    z = r.cwiseQuotient(diagonal);
+    precondition(r, z);
     p = z;
     double rz = r.cwiseProduct(z).sum();
     const double stop = kRelativeResidual * kRelativeResidual * b.squaredNorm();
@@ -84,13 +188,43 @@ void implicitEuler(const Model &model, State &state, Workspace &work, double h)
         const double alpha = rz / pap;
         dv += alpha * p;
         r -= alpha * ap;
-        z = r.cwiseQuotient(diagonal);
+        precondition(r, z);
         const double rzNext = r.cwiseProduct(z).sum();
         p = z + (rzNext / rz) * p;
         rz = rzNext;
         ++iteration;
     }
-    work.profile.solverIterations = iteration;
+    const double bNorm = b.norm();
+    work.profile.recordSolve(iteration, bNorm > 0.0 ? r.norm() / bNorm : 0.0);
+    if (iteration == kMaxIterations && r.squaredNorm() > stop)
+        work.profile.solverCapHits += 1;
+}
+
+}  // namespace
+
+void implicitEuler(const Model &model, State &state, Workspace &work, double h)
+{
+    Eigen::Matrix3Xd &b = scratch(state, work, 0);
+    Eigen::Matrix3Xd &dv = scratch(state, work, 1);
+    Eigen::Matrix3Xd &kv = scratch(state, work, 2);
+
+    // right-hand side h (f + h ∂f/∂x v); pinned rows 0
+    computeForces(model, state, work);
+    b = work.force;
+    if (model.plan.springs) {
+        kv.setZero();
+        addSpringJacobians(model, state, state.velocity, 1.0, 0.0, kv);  // -∂f/∂x v
+        b -= h * kv;
+    }
+    b *= h;
+    for (int i = 0; i < model.particleCount(); ++i)
+        if (model.isPinned(i))
+            b.col(i).setZero();
+
+    if (work.implicitConjugateGradients)
+        solveByConjugateGradients(model, state, work, h, b, dv);
+    else
+        solveDirectly(model, state, work, h, b, dv);
 
     // v += Δv, then x += h v (pinned: Δv = 0 and v = 0)
     state.velocity += dv;

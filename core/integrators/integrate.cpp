@@ -105,6 +105,8 @@ bool integrate(const Model &model, State &state, Workspace &work, double h)
     case Integrator::ImplicitEuler: implicitEuler(model, state, work, h); return false;
     case Integrator::AdaptiveRk45: adaptiveRk45(model, state, work, h); return false;
     case Integrator::Xpbd: xpbd(model, state, work, h); return false;
+    case Integrator::Projective: projective(model, state, work, h); return false;
+    case Integrator::Vbd: vbd(model, state, work, h); return false;
     }
     return false;
 }

@@ -12,6 +12,8 @@ std::string_view integratorName(Integrator integrator)
     case Integrator::ImplicitEuler: return "implicit-euler";
     case Integrator::AdaptiveRk45: return "adaptive-rk45";
     case Integrator::Xpbd: return "xpbd";
+    case Integrator::Projective: return "projective";
+    case Integrator::Vbd: return "vbd";
     }
     return "unknown";
 }
@@ -26,6 +28,8 @@ int integratorOrder(Integrator integrator)
     case Integrator::ImplicitEuler: return 1;
     case Integrator::AdaptiveRk45: return 5;
     case Integrator::Xpbd: return 1;
+    case Integrator::Projective: return 1;
+    case Integrator::Vbd: return 1;
     }
     return 1;
 }

@@ -83,7 +83,9 @@ double dragStepLimit(const Model &model)
     case Integrator::Rk4: return 2.785 / rate;
     case Integrator::ImplicitEuler:
     case Integrator::AdaptiveRk45:
-    case Integrator::Xpbd: return infinity;  // xpbd: the drag is an external force on its kick alone
+    case Integrator::Xpbd:  // xpbd: the drag is an external force on its kick alone
+    case Integrator::Projective:
+    case Integrator::Vbd: return infinity;
     }
     return infinity;
 }
@@ -106,7 +108,9 @@ double stepLimit(double omegaMax, double dampingRate, Integrator integrator)
         return dampingRate / (omegaMax * omegaMax);
     case Integrator::ImplicitEuler:
     case Integrator::AdaptiveRk45:
-    case Integrator::Xpbd: return infinity;  // springs are constraints with compliance 1/k: no explicit limit
+    case Integrator::Xpbd:  // springs are constraints with compliance 1/k: no explicit limit
+    case Integrator::Projective:
+    case Integrator::Vbd: return infinity;  // implicit Euler solved as a minimisation
     }
     return infinity;
 }

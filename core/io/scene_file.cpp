@@ -437,6 +437,8 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
     // only when not the default, so that files written before it existed read back byte for byte
     if (s.xpbdIterations != 1)
         out += ",\n        \"xpbdIterations\": " + QByteArray::number(s.xpbdIterations);
+    if (s.solverIterations != core::Settings{}.solverIterations)
+        out += ",\n        \"solverIterations\": " + QByteArray::number(s.solverIterations);
     out += ",\n        \"tolerance\": " + formatNumber(s.tolerance);
     // only with a state that adaptive-rk45 stepped: the step size it was about to try
     if (s.adaptiveStep)

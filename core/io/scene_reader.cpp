@@ -70,7 +70,7 @@ constexpr qsizetype kListedWarnings = 100;
 
 // the keys of each kind of element, in the order their checks run
 constexpr std::array kSettingsKeys{"timeStep"_L1,      "substeps"_L1,        "autoSubsteps"_L1,  "integrator"_L1,
-                                   "xpbdIterations"_L1, "tolerance"_L1,     "adaptiveStep"_L1,    "gravity"_L1,       "viscosity"_L1,
+                                   "xpbdIterations"_L1, "solverIterations"_L1, "tolerance"_L1,     "adaptiveStep"_L1,    "gravity"_L1,       "viscosity"_L1,
                                    "restitution"_L1,   "contactSolver"_L1,   "friction"_L1,      "staticFriction"_L1,
                                    "planeCollisions"_L1, "particleCollisions"_L1, "triangleCollisions"_L1,
                                    "selfCollision"_L1, "thickness"_L1, "rollingFriction"_L1, "spinningFriction"_L1, "spin"_L1};
@@ -314,6 +314,7 @@ void SceneTextReader::checkSettings(std::array<Item, kSettingsKeys.size()> &item
         !member(at("autoSubsteps"_L1), path, "autoSubsteps"_L1, optional, settings.autoSubsteps) ||
         !member(at("integrator"_L1), path, "integrator"_L1, optional, integrator) ||
         !member(at("xpbdIterations"_L1), path, "xpbdIterations"_L1, optional, settings.xpbdIterations) ||
+        !member(at("solverIterations"_L1), path, "solverIterations"_L1, optional, settings.solverIterations) ||
         !member(at("tolerance"_L1), path, "tolerance"_L1, optional, settings.tolerance) ||
         !member(at("adaptiveStep"_L1), path, "adaptiveStep"_L1, optional, adaptiveStep, &hasAdaptiveStep) ||
         !member(at("gravity"_L1), path, "gravity"_L1, optional, settings.gravity) ||

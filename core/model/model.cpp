@@ -4,6 +4,7 @@
 #include "core/integrators/stability.h"
 #include "core/model/state.h"
 #include "core/model/validate.h"
+#include "core/integrators/vertex_colours.h"
 #include "core/integrators/xpbd_layout.h"
 
 #include <cassert>
@@ -39,6 +40,7 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *b
     model->timeStep = s.timeStep;
     model->substeps = s.substeps;
     model->xpbdIterations = s.xpbdIterations;
+    model->solverIterations = s.solverIterations;
     model->integrator = s.integrator;
     model->tolerance = s.tolerance;
     model->gravity = s.gravity;
@@ -214,6 +216,11 @@ void setIntegrator(Model &model, Integrator integrator)
     } else {
         model.xpbdLayout = XpbdLayout{};
     }
+    // vbd's vertex colours, likewise
+    model.vbdOrder.clear();
+    model.vbdColours.clear();
+    if (integrator == Integrator::Vbd)
+        colourVertices(model, model.vbdOrder, model.vbdColours);
 }
 
 }  // namespace core

@@ -56,6 +56,7 @@ struct Model {
     double timeStep = 0.01;  // s
     int substeps = 1;
     int xpbdIterations = 1;  // xpbd's passes over the springs a sub-step
+    int solverIterations = 10;  // projective's and vbd's iterations a sub-step
     Integrator integrator = Integrator::SymplecticEuler;
     double tolerance = 1e-6;  // adaptive-rk45's error target per step
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // m/s²
@@ -99,6 +100,10 @@ struct Model {
     // for xpbd, set only while it is the integrator: the order it projects the springs in, and their
     // data in that order (xpbd_layout.h)
     XpbdLayout xpbdLayout;
+    // for vbd, set only while it is the integrator: the particles in colour order, no two of a colour
+    // joined by a spring, colour c's being vbdOrder[vbdColours[c] .. vbdColours[c + 1]) (vbd.cpp)
+    std::vector<int> vbdOrder;
+    std::vector<int> vbdColours;
     // the spring mesh's triangles, for drawing it as a sheet (spring_triangles.h); found once, here,
     // and shared by every snapshot of the model
     std::shared_ptr<const SpringTriangles> triangles;

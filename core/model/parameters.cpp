@@ -54,6 +54,10 @@ constexpr ParameterInfo kTable[] = {
      0.0, 0.1},
     {Parameter::AngularSpeed, "angularVelocity", "Spin", "rad/s", -kStateLimit, kStateLimit, false, Scale::Linear,
      0.0, "A component of the particle's angular velocity", -100.0, 100.0},
+    {Parameter::SolverIterations, "solverIterations", "Solver iterations", "", 1.0, 200.0, false, Scale::Linear, 10.0,
+     "projective's and vbd's iterations of the implicit Euler solve in each sub-step: more hold stiff springs "
+     "closer to their rest length, at that many times the cost of an iteration",
+     1.0, 50.0},
 };
 
 }  // namespace

@@ -34,8 +34,9 @@ enum class Parameter {
     XpbdIterations,  // xpbd's passes over the springs a sub-step
     Thickness,       // how far apart sheets stay; 0: each sheet's own
     AngularSpeed,    // a spin component
+    SolverIterations,  // projective's and vbd's iterations a sub-step
 };
-inline constexpr int kParameterCount = static_cast<int>(Parameter::AngularSpeed) + 1;
+inline constexpr int kParameterCount = static_cast<int>(Parameter::SolverIterations) + 1;
 
 enum class Scale { Linear, Log };
 

@@ -27,6 +27,8 @@ struct Settings {
     bool autoSubsteps = false;
     Integrator integrator = Integrator::SymplecticEuler;
     int xpbdIterations = 1;  // xpbd's passes over the springs in each sub-step (the others ignore it)
+    // projective and vbd: iterations of their implicit Euler solve in each sub-step (the others ignore it)
+    int solverIterations = 10;
     double tolerance = 1e-6;  // m and m/s, the local error per step adaptive-rk45 aims for
     // adaptive-rk45: the step size a run saved from was about to try (s), so that the run resumed
     // from its file goes on as it would have; unset, the first step chooses (State::adaptiveStep)

@@ -74,6 +74,7 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
     if (!check(Parameter::TimeStep, s.timeStep, "settings.timeStep", problem) ||
         !check(Parameter::Substeps, s.substeps, "settings.substeps", problem) ||
         !check(Parameter::XpbdIterations, s.xpbdIterations, "settings.xpbdIterations", problem) ||
+        !check(Parameter::SolverIterations, s.solverIterations, "settings.solverIterations", problem) ||
         !check(Parameter::Tolerance, s.tolerance, "settings.tolerance", problem) ||
         (s.adaptiveStep && !check(Parameter::TimeStep, *s.adaptiveStep, "settings.adaptiveStep", problem)) ||
         !checkVector(Parameter::Gravity, s.gravity, "settings.gravity", problem) ||

@@ -15,10 +15,15 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 namespace core {
+
+struct ProjectiveSolver;  // projective.cpp
+struct ImplicitSolver;    // implicit_euler.cpp
+struct VbdTornColours;    // vbd.cpp
 
 struct Workspace {
     Eigen::Matrix3Xd force;  // N: the forces of the current sub-step at (x, v)
@@ -39,6 +44,16 @@ struct Workspace {
     XpbdLayoutScratch xpbdTornScratch;
     std::uint64_t xpbdTornFrom = 0;
     std::vector<std::uint8_t> xpbdTornFlags;
+    // projective's factorisation and implicit-euler's direct solver, made on first use and kept
+    // while what they were made for holds (projective.cpp, implicit_euler.cpp)
+    std::shared_ptr<ProjectiveSolver> projective;
+    std::shared_ptr<ImplicitSolver> implicitSolver;
+    // implicit-euler's linear solve: the sparse Cholesky (LDLᵀ) of the system, or block-Jacobi
+    // preconditioned conjugate gradients (the benchmarks compare the two)
+    bool implicitConjugateGradients = false;
+    std::vector<double> springLengths;  // vbd's: each spring's length at the sub-step's start
+    // vbd's colours without the springs that broke, so that a torn run colours as its resumed file does
+    std::shared_ptr<VbdTornColours> vbdTorn;
     ContactGrid contacts;  // the particle-pair pass's grid and pairs (broad_phase.cpp)
     ContactScratch contactSolver;  // the iterative contact solver's (contacts.cpp)
     TriangleScratch triangles;     // the triangle collisions' (triangle_collisions.cpp)

@@ -27,7 +27,8 @@ using test::readAll;
 
 const QStringList kProblems{u"oscillator"_s, u"bounce"_s, u"head-on"_s, u"chain"_s, u"cloth"_s};
 const QStringList kIntegrators{u"symplectic-euler"_s, u"explicit-euler"_s, u"velocity-verlet"_s,
-                               u"rk4"_s,              u"implicit-euler"_s, u"adaptive-rk45"_s, u"xpbd"_s};
+                               u"rk4"_s,              u"implicit-euler"_s, u"adaptive-rk45"_s, u"xpbd"_s,
+                               u"projective"_s,       u"vbd"_s};
 
 using Run = test::ProgramRun;
 

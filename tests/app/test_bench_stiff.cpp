@@ -32,7 +32,7 @@ const QByteArray kHeader =
     "size,particles,springs,stiffness,integrator,criterion,status,substeps,substeps_below,cost_s_per_s,"
     "cost_estimated_s_per_s,cost_2threads_wall_s_per_s,runs,simulated_s,max_stretch,energy_rise_J,kinetic_end_J,"
     "kinetic_ratio,reference";
-const QStringList kIntegrators{u"symplectic-euler"_s, u"implicit-euler"_s, u"xpbd"_s};
+const QStringList kIntegrators{u"symplectic-euler"_s, u"implicit-euler"_s, u"xpbd"_s, u"projective"_s, u"vbd"_s};
 const QStringList kStatuses{u"met"_s, u"none"_s, u"capped"_s, u"soft"_s};
 
 enum Field {
@@ -140,8 +140,8 @@ void TestBenchStiff::initTestCase()
 
 void TestBenchStiff::csvShape()
 {
-    // the quick plan: one cloth, two stiffnesses, three integrators, two criteria
-    QCOMPARE(m_rows.size(), 1 * 2 * 3 * 2);
+    // the quick plan: one cloth, two stiffnesses, five integrators, two criteria
+    QCOMPARE(m_rows.size(), 1 * 2 * 5 * 2);
     QHash<QString, int> perIntegrator;
     for (const QList<QByteArray> &fields : m_rows) {
         const QByteArray line = fields.join(',');
@@ -235,6 +235,10 @@ void TestBenchStiff::summaryWritten()
     QVERIFY(summary.contains("target 1:"));
     QVERIFY(summary.contains("target 2:"));
     QCOMPARE(summary.count("\n  8x8    "), qsizetype(m_rows.size()));  // a table line a row
+    QVERIFY(summary.contains("target 4:"));
+    // implicit-euler's two linear solves side by side, with the conjugate gradients' iterations
+    QVERIFY(summary.contains("implicit-euler's linear solve"));
+    QVERIFY(summary.contains("block-Jacobi conjugate gradients"));
     QVERIFY(m_quick.out.contains("target 1:"));
 }
 

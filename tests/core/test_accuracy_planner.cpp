@@ -211,17 +211,17 @@ void TestAccuracyPlanner::countsTheForceEvaluations()
     for (std::size_t i = 0; i < std::size(expected); ++i)
         QCOMPARE(plan.candidates[i].evaluationsPerSubstep, expected[i]);
 
-    // implicit Euler: one evaluation, the right-hand side's product and its CG iterations
-    const core::PlanCandidate &implicit = plan.candidates[4];
-    core::SceneDesc scene = core::makeOscillator({});
-    scene.settings.integrator = core::Integrator::ImplicitEuler;
-    scene.settings.timeStep = plan.timeStep / implicit.substeps;
-    const auto model = core::compileModel(scene);
-    core::State state = sim.state;
-    core::Workspace work;
-    QVERIFY(core::step(*model, state, work));
-    QVERIFY(work.profile.solverIterations >= 1);
-    QCOMPARE(implicit.evaluationsPerSubstep, 2.0 + work.profile.solverIterations);
+    // the solvers (implicit Euler, projective, vbd): their sub-step timed against an evaluation,
+    // at least one
+    for (std::size_t i = 4; i < plan.candidates.size(); ++i) {
+        const core::PlanCandidate &candidate = plan.candidates[i];
+        if (candidate.integrator == core::Integrator::AdaptiveRk45)
+            continue;
+        if (candidate.integrator == core::Integrator::ImplicitEuler || core::isVariational(candidate.integrator)) {
+            QVERIFY2(candidate.evaluationsPerSubstep >= 1.0, core::integratorName(candidate.integrator).data());
+            QVERIFY(std::isfinite(candidate.evaluationsPerSubstep));
+        }
+    }
 }
 
 void TestAccuracyPlanner::measuresTheCostOfAnEvaluation()

@@ -150,7 +150,10 @@ void TestIntegrators::implicitEulerHoldsPinnedParticles()
         QVERIFY(sim.step());
     QCOMPARE(Eigen::Vector3d(sim.state.position.col(0)), corner);
     QVERIFY(sim.state.position(1, 63) < options.height - 0.1);  // the far corner fell
-    QVERIFY(sim.work.profile.solverIterations > 0);
+    // the direct solve: no iterations, a residual at rounding, a factorisation a sub-step
+    QCOMPARE(sim.work.profile.solverIterations, 0);
+    QVERIFY(sim.work.profile.solverResidual < 1e-12);
+    QCOMPARE(sim.work.profile.factorisations, std::uint64_t(200));
 }
 
 void TestIntegrators::adaptiveMeetsItsTolerance_data()

@@ -53,6 +53,8 @@ double evaluationsPerSubStep(const core::Model &model)
     case core::Integrator::SymplecticEuler:
     case core::Integrator::ExplicitEuler: return 1.0;
     case core::Integrator::Xpbd: return model.xpbdIterations;  // a pass over the springs each, as one evaluation
+    case core::Integrator::Projective:
+    case core::Integrator::Vbd: return 2.0 * model.solverIterations;  // a pass over the springs and a solve each
     case core::Integrator::VelocityVerlet: return 2.0;
     case core::Integrator::Rk4: return 4.0;
     case core::Integrator::ImplicitEuler: return 1000.0;  // its conjugate-gradient solve stops at 1000 iterations

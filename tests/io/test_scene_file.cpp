@@ -435,7 +435,7 @@ void TestSceneFile::badFile_data()
     QTest::newRow("unknown integrator") << QByteArray("\"symplectic-euler\"") << QByteArray("\"rk9\"")
                                         << QStringLiteral("settings.integrator")
                                         << QStringLiteral(
-                                               "unknown integrator \"rk9\" (known: symplectic-euler, explicit-euler, velocity-verlet, rk4, implicit-euler, adaptive-rk45, xpbd)");
+                                               "unknown integrator \"rk9\" (known: symplectic-euler, explicit-euler, velocity-verlet, rk4, implicit-euler, adaptive-rk45, xpbd, projective, vbd)");
 
     // the contact keys: names, types and shapes
     QTest::newRow("unknown contact solver")

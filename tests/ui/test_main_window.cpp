@@ -631,9 +631,9 @@ void TestMainWindow::integratorChoiceReachesTheWorker()
     ui::ParameterRow *tolerance = m_window->parametersPanel()->row(QStringLiteral("tolerance"));
     QVERIFY(!tolerance->isEnabled());
 
-    // the adaptive one (the one before xpbd, the last), and its tolerance typed in
-    QTest::keyClick(box, Qt::Key_End);
-    QTest::keyClick(box, Qt::Key_Up);
+    // the adaptive one (two below rk4), and its tolerance typed in
+    QTest::keyClick(box, Qt::Key_Down);
+    QTest::keyClick(box, Qt::Key_Down);
     QVERIFY(tolerance->isEnabled());
     tolerance->spinBox()->setFocus();
     tolerance->spinBox()->selectAll();
@@ -648,7 +648,7 @@ void TestMainWindow::integratorChoiceReachesTheWorker()
     press(Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(settledFrame(controller())->model->tolerance, 1e-6);
     press(Qt::Key_Z, Qt::ControlModifier);
-    QCOMPARE(settledFrame(controller())->model->integrator, core::Integrator::Xpbd);
+    QCOMPARE(settledFrame(controller())->model->integrator, core::Integrator::ImplicitEuler);
     press(Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(settledFrame(controller())->model->integrator, core::Integrator::Rk4);
     QCOMPARE(box->currentText(), QStringLiteral("rk4"));

@@ -128,6 +128,7 @@ void TestParametersPanel::rowsComeFromTheParameterTable()
         {"restitution", core::Parameter::Restitution, ""}, {"stiffness", core::Parameter::Stiffness, ""},
         {"damping", core::Parameter::Damping, ""},     {"tolerance", core::Parameter::Tolerance, ""},
         {"xpbdIterations", core::Parameter::XpbdIterations, ""},
+        {"solverIterations", core::Parameter::SolverIterations, ""},
     };
     for (const auto &e : expected) {
         ui::ParameterRow *row = m_panel->row(QString::fromLatin1(e.key));
@@ -330,10 +331,15 @@ void TestParametersPanel::toleranceRowIsForTheAdaptiveIntegratorOnly()
     QVERIFY(!row->isEnabled());
     QComboBox *box = m_panel->integratorBox();
     box->setFocus();
-    // the last entry is xpbd, which has no tolerance; the one before it the adaptive one
+    // the last entries are xpbd, projective and vbd, which have no tolerance; before them the
+    // adaptive one
     QTest::keyClick(box, Qt::Key_End);
+    QCOMPARE(m_document->scene().settings.integrator, core::Integrator::Vbd);
+    QCOMPARE(box->currentText(), QStringLiteral("vbd"));
+    QVERIFY(!row->isEnabled());
+    QTest::keyClick(box, Qt::Key_Up);
+    QTest::keyClick(box, Qt::Key_Up);
     QCOMPARE(m_document->scene().settings.integrator, core::Integrator::Xpbd);
-    QCOMPARE(box->currentText(), QStringLiteral("xpbd"));
     QVERIFY(!row->isEnabled());
     QTest::keyClick(box, Qt::Key_Up);
     QCOMPARE(m_document->scene().settings.integrator, core::Integrator::AdaptiveRk45);
@@ -353,12 +359,25 @@ void TestParametersPanel::toleranceRowIsForTheAdaptiveIntegratorOnly()
 void TestParametersPanel::iterationsRowIsForXpbdOnly()
 {
     ui::ParameterRow *row = m_panel->row(QStringLiteral("xpbdIterations"));
+    ui::ParameterRow *solver = m_panel->row(QStringLiteral("solverIterations"));
     QVERIFY(!row->isEnabled());
+    QVERIFY(!solver->isEnabled());
     QComboBox *box = m_panel->integratorBox();
     box->setFocus();
+    // vbd and projective (the last two) take the solver's iterations, xpbd its own
     QTest::keyClick(box, Qt::Key_End);
+    QCOMPARE(m_document->scene().settings.integrator, core::Integrator::Vbd);
+    QVERIFY(solver->isEnabled());
+    QVERIFY(!row->isEnabled());
+    type(solver->spinBox(), QStringLiteral("25"));
+    QCOMPARE(m_document->scene().settings.solverIterations, 25);
+    QTest::keyClick(box, Qt::Key_Up);
+    QCOMPARE(m_document->scene().settings.integrator, core::Integrator::Projective);
+    QVERIFY(solver->isEnabled());
+    QTest::keyClick(box, Qt::Key_Up);
     QCOMPARE(m_document->scene().settings.integrator, core::Integrator::Xpbd);
     QVERIFY(row->isEnabled());
+    QVERIFY(!solver->isEnabled());
 
     // a whole number, typed in, and refused out of the table's range
     type(row->spinBox(), QStringLiteral("4"));

@@ -117,8 +117,12 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
     addSection(tr("Accuracy"));
     addEntry(tr("Parameters › Integrator"),
              tr("How each sub-step is integrated: symplectic-euler, explicit-euler, velocity-verlet, rk4, "
-                "implicit-euler, adaptive-rk45 or xpbd (springs as constraints, for stiff materials) (undoable)"));
+                "implicit-euler, adaptive-rk45, xpbd (springs as constraints), or for stiff materials projective "
+                "(projective dynamics: a prefactored solve) and vbd (vertex block descent) (undoable)"));
     addEntry(tr("Parameters › Tolerance"), tr("The local error per step adaptive-rk45 keeps under (only for it)"));
+    addEntry(tr("Parameters › Solver iterations"),
+             tr("projective's and vbd's iterations of the implicit Euler solve in each sub-step; the stability "
+                "line says how far they converged"));
     addEntry(tr("Status bar: local error ≈"),
              tr("The local position error of one step of the integrator, by step doubling every few steps"));
     addEntry(tr("Status bar: ΔE"),

@@ -54,6 +54,9 @@ const Binding kBindings[] = {
     {"xpbdIterations", core::Parameter::XpbdIterations, Group::Time, "",
      [](const core::SceneDesc &s) { return double(s.settings.xpbdIterations); },
      [](core::Settings &s, double v) { s.xpbdIterations = int(v); }, nullptr},
+    {"solverIterations", core::Parameter::SolverIterations, Group::Time, "",
+     [](const core::SceneDesc &s) { return double(s.settings.solverIterations); },
+     [](core::Settings &s, double v) { s.solverIterations = int(v); }, nullptr},
     {"tolerance", core::Parameter::Tolerance, Group::Time, "",
      [](const core::SceneDesc &s) { return s.settings.tolerance; },
      [](core::Settings &s, double v) { s.tolerance = v; }, nullptr},
@@ -118,6 +121,12 @@ QString integratorTip(core::Integrator integrator)
     case core::Integrator::Xpbd:
         return ParametersPanel::tr("Springs as constraints with compliance 1/k: no stability limit, first order; "
                                    "use many sub-steps");
+    case core::Integrator::Projective:
+        return ParametersPanel::tr("Implicit Euler by projective dynamics: a prefactored solve, no stability limit, "
+                                   "damps like implicit Euler; set its iterations");
+    case core::Integrator::Vbd:
+        return ParametersPanel::tr("Implicit Euler by vertex block descent: a Newton step per particle, colour by "
+                                   "colour, no stability limit; set its iterations");
     }
     return QString();
 }
@@ -196,7 +205,8 @@ ParametersPanel::ParametersPanel(SceneDocument &document, QWidget *parent)
         const core::ParameterInfo &info = core::parameterInfo(binding.parameter);
         const QString label = fromView(info.label) + QString::fromLatin1(binding.suffix);
         const bool integral =
-            binding.parameter == core::Parameter::Substeps || binding.parameter == core::Parameter::XpbdIterations;
+            binding.parameter == core::Parameter::Substeps || binding.parameter == core::Parameter::XpbdIterations ||
+            binding.parameter == core::Parameter::SolverIterations;
         auto *row = new ParameterRow(info, label, integral, this);
         row->setObjectName(QStringLiteral("parameter-") + QString::fromLatin1(binding.key));
         forms[std::size_t(binding.group)]->addRow(row->label(), row);
@@ -330,6 +340,7 @@ void ParametersPanel::refresh()
             m_integrator->setCurrentIndex(int(i));
     row(QStringLiteral("tolerance"))->setEnabled(integrator == core::Integrator::AdaptiveRk45);
     row(QStringLiteral("xpbdIterations"))->setEnabled(integrator == core::Integrator::Xpbd);
+    row(QStringLiteral("solverIterations"))->setEnabled(core::isVariational(integrator));
     for (std::size_t i = 0; i < std::size(core::kContactSolvers); ++i)
         if (core::kContactSolvers[i] == scene.settings.contactSolver)
             m_contactSolver->setCurrentIndex(int(i));
@@ -447,11 +458,14 @@ void ParametersPanel::setAutoSubsteps(bool on)
         m_document, on ? tr("Switch auto substeps on") : tr("Switch auto substeps off"), QString(), settings));
 }
 
-void ParametersPanel::showStability(const core::StabilityLimit &limit, const core::Model &model)
+void ParametersPanel::showStability(const core::StabilityLimit &limit, const core::Model &model,
+                                    const QString &solver)
 {
     const StabilityNote note =
         stabilityNote(limit.maxSubStep(model.integrator), model.subStep(), model.timeStep, model.integrator);
     QString text = note.text;
+    if (!solver.isEmpty())
+        text += QStringLiteral("; ") + solver;
     if (m_document.scene().settings.autoSubsteps)
         text += tr("; auto: %n substep(s)", nullptr, model.substeps);
     m_stabilityNote->setText(text);

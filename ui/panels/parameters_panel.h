@@ -51,7 +51,8 @@ public:
 
     // shows the explicit integrators' limit against the sub-step the model runs with (its
     // substeps raised by auto substeps): amber near it, red past it
-    void showStability(const core::StabilityLimit &limit, const core::Model &model);
+    // the stability note, and the solver's last sub-step (core::lastSolveSummary) when there is one
+    void showStability(const core::StabilityLimit &limit, const core::Model &model, const QString &solver = QString());
 
     // the latest refusal, empty when the latest change was accepted
     QString message() const;

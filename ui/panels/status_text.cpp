@@ -220,7 +220,8 @@ StabilityNote stabilityNote(double maxSubStep, double subStep, double timeStep, 
     if (std::isinf(maxSubStep)) {
         if (integrator == core::Integrator::Xpbd)
             return {tr("xpbd has no explicit stability limit: its springs are constraints"), StabilityLevel::Safe};
-        const bool implicit = integrator == core::Integrator::ImplicitEuler || integrator == core::Integrator::AdaptiveRk45;
+        const bool implicit = integrator == core::Integrator::ImplicitEuler ||
+                              integrator == core::Integrator::AdaptiveRk45 || core::isVariational(integrator);
         return {implicit ? tr("%1 is stable at any time step").arg(integratorText)
                          : tr("No springs: no stability limit on the time step"),
                 StabilityLevel::Safe};

@@ -2,6 +2,8 @@
 
 #include "thread_handover.h"
 
+#include "core/integrators/solver_report.h"
+
 #include <QCoreApplication>
 #include <QEvent>
 #include <QTimer>
@@ -212,6 +214,8 @@ void SimulationWorker::publish(Frame kind)
     frame->estimateShare = diagnostics.estimateShare();
     frame->stability = diagnostics.stability();
     frame->pairSpeedWarning = diagnostics.pairSpeedWarning();
+    if (frame->model)
+        frame->solverSummary = core::lastSolveSummary(frame->model->integrator, m_runner.profile());
     m_shownPairSpeedWarning = frame->pairSpeedWarning;
     const Scrubber &scrubber = m_runner.scrubber();
     const Timeline &timeline = scrubber.timeline();

@@ -560,7 +560,7 @@ void MainWindow::frameChanged()
         return;
 
     if (frame->stability && frame->model)
-        m_parameters->showStability(*frame->stability, *frame->model);
+        m_parameters->showStability(*frame->stability, *frame->model, QString::fromStdString(frame->solverSummary));
     // particles too fast for the pair contacts: said once as it starts, not over every later warning
     const bool tooFast = !frame->pairSpeedWarning.empty();
     if (tooFast && !m_pairSpeedWarned)
