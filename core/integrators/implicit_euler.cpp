@@ -17,6 +17,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <Eigen/Dense>
+#include <algorithm>
 
 
 namespace core {
@@ -38,29 +39,28 @@ void applySystem(const Model &model, const State &state, double h, const Eigen::
 }
 
 
-// each free particle's 3 × 3 diagonal block of the system: (m + h c) I plus its springs'
-// h² K + h D blocks, by the same Jacobian as applySystem
-void addDiagonalBlock(const Model &model, const State &state, double h, int k, Eigen::Matrix3d &block)
+// spring k's 3 × 3 block of the system, h² K + h D by the same Jacobian as applySystem: it adds to
+// the (a, a) and (b, b) blocks and subtracts from (a, b) and (b, a)
+Eigen::Matrix3d springBlock(const Model &model, const State &state, double h, int k)
 {
-    const int a = model.springA[static_cast<std::size_t>(k)];
-    const int b = model.springB[static_cast<std::size_t>(k)];
-    const Eigen::Vector3d d = state.position.col(a) - state.position.col(b);
+    const Eigen::Vector3d d = state.position.col(model.springA[std::size_t(k)]) -
+                              state.position.col(model.springB[std::size_t(k)]);
     const double length = d.norm();
     if (!(length > 0.0))
-        return;  // no direction: the spring adds nothing, as in applySystem
+        return Eigen::Matrix3d::Zero();  // no direction: the spring adds nothing, as in applySystem
     const Eigen::Vector3d u = d / length;
     const double transverse = std::max(0.0, 1.0 - model.restLength[k] / length);
     const Eigen::Matrix3d uu = u * u.transpose();
-    block += h * h * model.stiffness[k] * (transverse * (Eigen::Matrix3d::Identity() - uu) + uu) +
-             h * model.damping[k] * uu;
+    return h * h * model.stiffness[k] * (transverse * (Eigen::Matrix3d::Identity() - uu) + uu) +
+           h * model.damping[k] * uu;
 }
 
 }  // namespace
 
 struct ImplicitSolver {
     std::vector<int> row;  // each particle's first coordinate's row, −1 when pinned
-    int springCount = -1;
-    std::vector<std::uint8_t> broken;  // the broken flags the pattern was made for
+    // the sparsity pattern the symbolic analysis was made for (a break, a pin or a new spring changes it)
+    std::vector<int> outer, inner;
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::SparseMatrix<double> matrix;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
@@ -70,11 +70,20 @@ struct ImplicitSolver {
 
 namespace {
 
-// the 3 × 3 blocks of spring k: +B on (a, a) and (b, b), −B on (a, b) and (b, a)
-void springBlock(const Model &model, const State &state, double h, int k, Eigen::Matrix3d &block)
+// whether the matrix's pattern is the one analysed; if not, it becomes it
+bool samePattern(ImplicitSolver &s)
 {
-    block.setZero();
-    addDiagonalBlock(model, state, h, k, block);
+    const Eigen::SparseMatrix<double> &m = s.matrix;
+    const int *outer = m.outerIndexPtr();
+    const int *inner = m.innerIndexPtr();
+    const auto nonZeros = static_cast<std::size_t>(m.nonZeros());
+    const auto columns = static_cast<std::size_t>(m.cols()) + 1;
+    if (s.outer.size() == columns && s.inner.size() == nonZeros && std::equal(s.outer.begin(), s.outer.end(), outer) &&
+        std::equal(s.inner.begin(), s.inner.end(), inner))
+        return true;
+    s.outer.assign(outer, outer + columns);
+    s.inner.assign(inner, inner + nonZeros);
+    return false;
 }
 
 void solveDirectly(const Model &model, const State &state, Workspace &work, double h, const Eigen::Matrix3Xd &b,
@@ -96,11 +105,10 @@ void solveDirectly(const Model &model, const State &state, Workspace &work, doub
         for (int axis = 0; axis < 3; ++axis)
             s.entries.emplace_back(s.row[std::size_t(i)] + axis, s.row[std::size_t(i)] + axis,
                                    model.mass[i] + h * model.viscosity);
-    Eigen::Matrix3d block;
     for (int k = 0; k < model.springCount(); ++k) {
         if (state.isBroken(k))
             continue;
-        springBlock(model, state, h, k, block);
+        const Eigen::Matrix3d block = springBlock(model, state, h, k);
         const int ra = s.row[std::size_t(model.springA[std::size_t(k)])];
         const int rb = s.row[std::size_t(model.springB[std::size_t(k)])];
         for (int r = 0; r < 3; ++r)
@@ -117,12 +125,10 @@ void solveDirectly(const Model &model, const State &state, Workspace &work, doub
     }
     s.matrix.resize(rows, rows);
     s.matrix.setFromTriplets(s.entries.begin(), s.entries.end());
-    // the ordering and symbolic factorisation once per topology (a broken spring changes it)
-    if (s.springCount != model.springCount() || s.broken != state.springBroken || s.ldlt.rows() != rows) {
+    // the ordering and symbolic factorisation once per pattern (a break, a pin or an edit changes it)
+    s.matrix.makeCompressed();
+    if (!samePattern(s))
         s.ldlt.analyzePattern(s.matrix);
-        s.springCount = model.springCount();
-        s.broken = state.springBroken;
-    }
     s.ldlt.factorize(s.matrix);
     work.profile.factorisations += 1;
     s.rhs.resize(rows);
@@ -156,11 +162,10 @@ void solveByConjugateGradients(const Model &model, const State &state, Workspace
     blocks.assign(static_cast<std::size_t>(n), Eigen::Matrix3d::Zero());
     for (int i = 0; i < n; ++i)
         blocks[std::size_t(i)].diagonal().setConstant(model.isPinned(i) ? 1.0 : model.mass[i] + h * model.viscosity);
-    Eigen::Matrix3d block;
     for (int k = 0; k < model.springCount(); ++k) {
         if (state.isBroken(k))
             continue;
-        springBlock(model, state, h, k, block);
+        const Eigen::Matrix3d block = springBlock(model, state, h, k);
         for (int end : {model.springA[static_cast<std::size_t>(k)], model.springB[static_cast<std::size_t>(k)]})
             if (!model.isPinned(end))
                 blocks[std::size_t(end)] += block;

@@ -12,9 +12,10 @@
 // coordinates. Pinned particles are not unknowns: their springs move to the right-hand side. The
 // matrix is made again only when a spring breaks, or the step, masses, pins, stiffnesses or
 // dampers change (a live edit), the new factorisation replacing the old within the sub-step.
-// Chebyshev acceleration (Wang, SIGGRAPH Asia 2015) over-relaxes the iterates as in vbd.cpp.
+// Chebyshev acceleration (Wang, SIGGRAPH Asia 2015) over-relaxes the iterates (variational.h).
 // The velocity is the move, v = (x − x0)/h; contacts are resolved after the solve.
 #include "core/integrators/integrator.h"
+#include "core/integrators/variational.h"
 #include "core/parallel.h"
 #include "core/passes.h"
 
@@ -155,20 +156,10 @@ void projective(const Model &model, State &state, Workspace &work, double h)
 {
     Eigen::Matrix3Xd &x0 = scratch(state, work, 0);
     Eigen::Matrix3Xd &y = scratch(state, work, 1);
-    Eigen::Matrix3Xd &before = scratch(state, work, 2);  // x⁽ⁿ⁻²⁾
-    Eigen::Matrix3Xd &last = scratch(state, work, 3);    // x⁽ⁿ⁻¹⁾
-
-    computeExternalForces(model, state, work);
-    work.profile.forceEvaluations += 1;
-    x0 = state.position;
-    for (int i : model.freeParticles)
-        y.col(i) = x0.col(i) + h * state.velocity.col(i) + (h * h * model.invMass[i]) * work.force.col(i);
-    for (int i : model.freeParticles)
-        state.position.col(i) = y.col(i);
+    startVariationalStep(model, state, work, h, x0, y);
     const int iterations = model.plan.springs ? model.solverIterations : 0;
     if (iterations == 0) {
-        for (int i : model.freeParticles)
-            state.velocity.col(i) = (state.position.col(i) - x0.col(i)) / h;
+        velocityFromMove(model, state, x0, h);
         return;
     }
 
@@ -182,20 +173,21 @@ void projective(const Model &model, State &state, Workspace &work, double h)
         factor(model, s, work);
     }
     if (!s.ok) {  // cannot happen with positive masses; kept as the inertial move rather than garbage
-        for (int i : model.freeParticles)
-            state.velocity.col(i) = (state.position.col(i) - x0.col(i)) / h;
+        velocityFromMove(model, state, x0, h);
         return;
     }
     // each spring's length to pull to, from its length at the sub-step's start
+    startLengths(model, x0, work.springLengths);
     for (int k = 0; k < model.springCount(); ++k) {
         const double w = s.weight[std::size_t(k)];
         const double damper = model.damping[k] / h;
-        const double lStart = (x0.col(model.springA[std::size_t(k)]) - x0.col(model.springB[std::size_t(k)])).norm();
-        s.restTarget[std::size_t(k)] = w > 0.0 ? (model.stiffness[k] * model.restLength[k] + damper * lStart) / w : 0.0;
+        s.restTarget[std::size_t(k)] =
+            w > 0.0 ? (model.stiffness[k] * model.restLength[k] + damper * work.springLengths[std::size_t(k)]) / w : 0.0;
     }
 
-    double first = 0.0, gradient = 0.0, omega = 1.0;
-    last = state.position;  // x⁽⁰⁾
+    ChebyshevAcceleration chebyshev(kProjectiveChebyshevRho, state.position, scratch(state, work, 2),
+                                    scratch(state, work, 3));
+    double first = 0.0;
     for (int n = 1; n <= iterations; ++n) {
         localStep(model, state, y, x0, h, s);
         if (n == 1)
@@ -203,22 +195,12 @@ void projective(const Model &model, State &state, Workspace &work, double h)
         s.solution = s.llt.solve(s.rhs);
         for (int i : model.freeParticles)
             state.position.col(i) = s.solution.row(s.row[std::size_t(i)]).transpose();
-        omega = n == 1 ? 1.0 : n == 2 ? 2.0 / (2.0 - kProjectiveChebyshevRho * kProjectiveChebyshevRho)
-                                      : 4.0 / (4.0 - kProjectiveChebyshevRho * kProjectiveChebyshevRho * omega);
-        // the last iterate is left plain: the over-relaxation would carry a converged iterate off its
-        // minimum again, and the static equilibrium with it
-        if (n >= 2 && n < iterations)
-            for (int i : model.freeParticles)
-                state.position.col(i) = omega * (state.position.col(i) - before.col(i)) + before.col(i);
-        before = last;
-        last = state.position;
+        chebyshev.afterIteration(model, n, iterations, state.position);
     }
     localStep(model, state, y, x0, h, s);
-    gradient = gradientNorm(model, state, s);
+    const double gradient = gradientNorm(model, state, s);
     work.profile.recordSolve(iterations, first > 0.0 ? gradient / first : 0.0);
-
-    for (int i : model.freeParticles)
-        state.velocity.col(i) = (state.position.col(i) - x0.col(i)) / h;
+    velocityFromMove(model, state, x0, h);
 }
 
 }  // namespace core

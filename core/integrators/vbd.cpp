@@ -14,6 +14,7 @@
 //   x⁽ⁿ⁾ = ω_n (x̃⁽ⁿ⁾ − x⁽ⁿ⁻²⁾) + x⁽ⁿ⁻²⁾, ω_1 = 1, ω_2 = 2/(2 − ρ²), ω_n = 4/(4 − ρ² ω_{n−1}).
 // The velocity is the move: v = (x − x0)/h. Contacts are resolved after the solve, as for xpbd.
 #include "core/integrators/integrator.h"
+#include "core/integrators/variational.h"
 #include "core/integrators/vertex_colours.h"
 #include "core/parallel.h"
 #include "core/passes.h"
@@ -97,16 +98,19 @@ struct VbdTornColours {
 
 namespace {
 
+// the colours a sweep visits: colour c's particles are order[start[c] .. start[c + 1])
+struct Colours {
+    const std::vector<int> &order;
+    const std::vector<int> &start;
+};
+
 // the model's colours, or, once springs have broken, the colours without them (made again only
 // when another breaks): the colours a file stored from this state would be compiled with, so that a
 // resumed run visits the particles in the same colours and goes on to the same bits
-void coloursFor(const Model &model, const State &state, Workspace &work, const std::vector<int> *&order,
-                const std::vector<int> *&colours)
+Colours coloursFor(const Model &model, const State &state, Workspace &work)
 {
-    order = &model.vbdOrder;
-    colours = &model.vbdColours;
     if (state.breaks.empty())
-        return;
+        return {model.vbdOrder, model.vbdColours};
     if (!work.vbdTorn)
         work.vbdTorn = std::make_shared<VbdTornColours>();
     VbdTornColours &torn = *work.vbdTorn;
@@ -115,8 +119,7 @@ void coloursFor(const Model &model, const State &state, Workspace &work, const s
         torn.model = &model;
         torn.broken = state.springBroken;
     }
-    order = &torn.order;
-    colours = &torn.colours;
+    return {torn.order, torn.colours};
 }
 
 }  // namespace
@@ -125,28 +128,14 @@ void vbd(const Model &model, State &state, Workspace &work, double h)
 {
     Eigen::Matrix3Xd &x0 = scratch(state, work, 0);
     Eigen::Matrix3Xd &y = scratch(state, work, 1);
-    Eigen::Matrix3Xd &before = scratch(state, work, 2);   // x⁽ⁿ⁻²⁾
-    Eigen::Matrix3Xd &last = scratch(state, work, 3);     // x⁽ⁿ⁻¹⁾
     Eigen::Matrix3Xd &gradient = scratch(state, work, 4);  // row 0: |g_i|² at the last visit
-
-    computeExternalForces(model, state, work);
-    work.profile.forceEvaluations += 1;
-    x0 = state.position;
-    for (int i : model.freeParticles)
-        y.col(i) = x0.col(i) + h * state.velocity.col(i) + (h * h * model.invMass[i]) * work.force.col(i);
-    // the first guess: the inertial target, where the springs pull nothing
-    for (int i : model.freeParticles)
-        state.position.col(i) = y.col(i);
-
+    startVariationalStep(model, state, work, h, x0, y);
     const int iterations = model.plan.springs ? model.solverIterations : 0;
-    std::vector<double> &lengths = work.springLengths;
-    lengths.resize(std::size_t(model.springCount()));
-    for (int k = 0; k < model.springCount(); ++k)
-        lengths[std::size_t(k)] = (x0.col(model.springA[std::size_t(k)]) - x0.col(model.springB[std::size_t(k)])).norm();
+    startLengths(model, x0, work.springLengths);
     const VbdPass pass{model,
                        x0.data(),
                        y.data(),
-                       lengths.data(),
+                       work.springLengths.data(),
                        state.springBroken.empty() ? nullptr : state.springBroken.data(),
                        state.position.data(),
                        gradient.data(),
@@ -157,43 +146,25 @@ void vbd(const Model &model, State &state, Workspace &work, double h)
             sum += gradient(0, i);
         return std::sqrt(sum);
     };
-    const std::vector<int> *orderPointer = nullptr, *colourPointer = nullptr;
-    coloursFor(model, state, work, orderPointer, colourPointer);
-    const std::vector<int> &order = *orderPointer;
-    const std::vector<int> &colourStart = *colourPointer;
-    const int colours = static_cast<int>(colourStart.size()) - 1;
+    const Colours colours = coloursFor(model, state, work);
+    ChebyshevAcceleration chebyshev(kVbdChebyshevRho, state.position, scratch(state, work, 2), scratch(state, work, 3));
     double first = 0.0, lastGradient = 0.0;
-    double omega = 1.0;
-    last = state.position;  // x⁽⁰⁾
     for (int n = 1; n <= iterations; ++n) {
-        for (int c = 0; c < colours; ++c) {
-            const int begin = colourStart[std::size_t(c)];
-            const int count = colourStart[std::size_t(c) + 1] - begin;
-            parallelChunks(count, [&](int from, int to) {
+        for (std::size_t c = 0; c + 1 < colours.start.size(); ++c) {
+            const int begin = colours.start[c];
+            parallelChunks(colours.start[c + 1] - begin, [&](int from, int to) {
                 for (int t = from; t < to; ++t)
-                    visit(pass, order[std::size_t(begin + t)]);
+                    visit(pass, colours.order[std::size_t(begin + t)]);
             });
         }
         lastGradient = sweepGradient();
         if (n == 1)
             first = lastGradient;
-        // Chebyshev: ω_1 = 1 (the plain sweep), then over-relaxed against x⁽ⁿ⁻²⁾
-        omega = n == 1 ? 1.0 : n == 2 ? 2.0 / (2.0 - kVbdChebyshevRho * kVbdChebyshevRho)
-                                      : 4.0 / (4.0 - kVbdChebyshevRho * kVbdChebyshevRho * omega);
-        // the last sweep is left plain: the over-relaxation would carry a converged iterate off its
-        // minimum again, and the static equilibrium with it
-        if (n >= 2 && n < iterations)
-            for (int i : model.freeParticles)
-                state.position.col(i) = omega * (state.position.col(i) - before.col(i)) + before.col(i);
-        before = last;
-        last = state.position;
+        chebyshev.afterIteration(model, n, iterations, state.position);
     }
     if (iterations > 0)
         work.profile.recordSolve(iterations, first > 0.0 ? lastGradient / first : 0.0);
-
-    // the velocity the move made (pinned particles stay where they are, at rest)
-    for (int i : model.freeParticles)
-        state.velocity.col(i) = (state.position.col(i) - x0.col(i)) / h;
+    velocityFromMove(model, state, x0, h);
 }
 
 }  // namespace core

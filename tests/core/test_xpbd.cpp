@@ -10,6 +10,7 @@
 #include "core/threads.h"
 #include "core/integrators/xpbd_layout.h"
 #include "scene_builder.h"
+#include "torn_sheet.h"
 
 #include <QtTest>
 
@@ -355,51 +356,11 @@ void TestXpbd::springsBreak()
 
 void TestXpbd::resumedAfterABreakGoesOnToTheBit()
 {
-    // a torn sheet: 12 × 12, held along two edges, its springs breaking at 10% strain, and a
-    // heavy ball dropped through it. A run stored at any step from the first break on (as
-    // springlab-sim --output stores it, the broken springs left out) and resumed from the stored
+    // the torn sheet: a run stored at any step from the first break on and resumed from the stored
     // scene must go on as the uninterrupted run does, to the bit
-    core::ClothOptions options;
-    options.rows = options.cols = 12;
-    options.pinCorners = false;
-    options.substeps = 10;
-    core::SceneDesc scene = core::makeCloth(options);
-    scene.settings.integrator = core::Integrator::Xpbd;
-    scene.settings.particleCollisions = true;
-    for (int c = 0; c < options.cols; ++c) {
-        scene.particles[std::size_t(c)].pinned = true;
-        scene.particles[std::size_t((options.rows - 1) * options.cols + c)].pinned = true;
-    }
-    for (core::SpringDesc &spring : scene.springs)
-        spring.breakStrain = 0.1;
-    scene.particles.push_back(test::particle({0.0, options.height + 0.3, 0.0}, Eigen::Vector3d::Zero(), 4.0, 0.08));
-
-    constexpr int kSteps = 90;
+    const core::SceneDesc scene = test::tornSheet(core::Integrator::Xpbd, 10);
     test::Sim whole = test::compile(scene);
-    std::vector<core::State> states;
-    int firstBreak = -1;
-    for (int i = 0; i < kSteps; ++i) {
-        states.push_back(whole.state);
-        QVERIFY(whole.step());
-        if (firstBreak < 0 && !whole.state.breaks.empty())
-            firstBreak = i + 1;
-    }
-    QVERIFY2(firstBreak > 0 && firstBreak < kSteps - 10, "the sheet should tear early in the run");
-    QVERIFY(whole.state.breaks.size() > 3);
-    states.push_back(whole.state);
-
-    for (int split = firstBreak; split < kSteps; split += 7) {
-        core::SceneDesc stored = scene;
-        core::storeState(states[std::size_t(split)], stored);
-        QVERIFY(stored.springs.size() < scene.springs.size());
-        test::Sim resumed = test::compile(stored);
-        for (int i = split; i < kSteps; ++i)
-            QVERIFY(resumed.step());
-        QVERIFY2(resumed.state.position == whole.state.position,
-                 qPrintable(QStringLiteral("resumed at step %1: positions differ").arg(split)));
-        QVERIFY2(resumed.state.velocity == whole.state.velocity,
-                 qPrintable(QStringLiteral("resumed at step %1: velocities differ").arg(split)));
-    }
+    test::checkResumeAfterBreaks(scene, whole, 90, 7);
 }
 
 void TestXpbd::dragIsStableAtAnyViscosity()
