@@ -37,6 +37,8 @@ private slots:
     void directAndConjugateGradientsAgree();
     void stiffChainFallsAtG_data();
     void stiffChainFallsAtG();
+    void stiffChainOnTheFloorGainsNoEnergy_data();
+    void stiffChainOnTheFloorGainsNoEnergy();
     void unconvergedRunIsWarned();
     void noStabilityLimitAndNamesInFiles();
 };
@@ -293,6 +295,60 @@ void TestStiffSolvers::stiffChainFallsAtG()
     const double closedForm = 0.5 * 9.81 * 0.1 * 0.1;
     QVERIFY2(std::abs(drop - closedForm) <= 9.81 * 0.01 * 0.1,
              qPrintable(QStringLiteral("dropped %1 m, g t²/2 = %2 m").arg(drop).arg(closedForm)));
+}
+
+void TestStiffSolvers::stiffChainOnTheFloorGainsNoEnergy_data()
+{
+    QTest::addColumn<core::Integrator>("integrator");
+    QTest::addColumn<double>("stiffness");
+    for (double k : {1e5, 1e8}) {
+        QTest::addRow("projective k=%g", k) << core::Integrator::Projective << k;
+        QTest::addRow("vbd k=%g", k) << core::Integrator::Vbd << k;
+        QTest::addRow("xpbd k=%g", k) << core::Integrator::Xpbd << k;
+        QTest::addRow("implicit-euler k=%g", k) << core::Integrator::ImplicitEuler << k;
+    }
+}
+
+void TestStiffSolvers::stiffChainOnTheFloorGainsNoEnergy()
+{
+    // the stiff-chain example's links (1 cm, 1 g), 400 of them, released horizontally from a
+    // pinned end 1 m over the floor, 10 sub-steps (xpbd 100) of 10 iterations: nothing adds
+    // energy, so the motion's energy (kinetic and gravitational: the spring energy of a stiff
+    // chain the solver has not converged is nominal, as xpbd's is) never rises above the start's
+    // total as the chain strikes the floor. With vbd's sweeps over-relaxed as projective's are, it
+    // rose tenfold or blew up
+    QFETCH(core::Integrator, integrator);
+    QFETCH(double, stiffness);
+    core::ChainOptions options;
+    options.links = 400;
+    options.linkLength = 0.01;
+    options.mass = 0.001;
+    options.radius = 0.005;
+    options.stiffness = stiffness;
+    options.damping = 1.0;
+    options.height = 1.0;
+    core::SceneDesc scene = core::makeChain(options);
+    scene.settings.integrator = integrator;
+    scene.settings.substeps = integrator == core::Integrator::Xpbd ? 100 : 10;
+    scene.settings.particleCollisions = false;
+    scene.planes = {core::floorPlane()};
+    test::Sim sim = test::compile(scene);
+    const double start = core::energies(*sim.model, sim.state).total();
+    double highest = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 80; ++i) {
+        QVERIFY(sim.step());
+        const core::Energies e = core::energies(*sim.model, sim.state);
+        highest = std::max(highest, e.kinetic + e.gravitational);
+    }
+    // it reached the floor; vbd's unconverged chain at 1e8 N/m swings down as a stiffer rod would,
+    // and has not in 0.8 s
+    const bool open = stiffness > 1e7 && core::isVariational(integrator);
+    QVERIFY(sim.state.position.row(1).minCoeff() < 0.1 || (open && integrator == core::Integrator::Vbd));
+    if (open)
+        QEXPECT_FAIL("", "open: at 1e8 N/m the unconverged solves release stretch on the impact (5.8-7.5 J from 3.9)",
+                     Continue);
+    QVERIFY2(highest <= start + 1e-9 * std::abs(start),
+             qPrintable(QStringLiteral("kinetic and gravitational energy rose from %1 J to %2 J").arg(start).arg(highest)));
 }
 
 void TestStiffSolvers::unconvergedRunIsWarned()
