@@ -593,7 +593,8 @@ QString linearSolves(int n, double k, int steps)
         for (bool cg : {false, true}) {
             core::State state = core::makeState(*model, scene);
             core::Workspace work;
-            work.implicitConjugateGradients = cg;
+            work.implicitSolve = cg ? core::Workspace::ImplicitSolve::ConjugateGradients
+                                    : core::Workspace::ImplicitSolve::Direct;
             const double before = cpuSeconds();
             for (int s = 0; s < steps; ++s)
                 core::step(*model, state, work);

@@ -4,13 +4,17 @@
 // A spring's stiffness Jacobian is -k [(1 - l0/l)(I - u uᵀ) + u uᵀ]; the transverse term is
 // clamped at zero when the spring is compressed (l < l0) so that the matrix stays symmetric
 // positive definite. Pinned particles are not unknowns: their Δv is 0. Two solves:
-//   - direct (the default): the matrix assembled over the free particles' coordinates and factored
-//     by a sparse Cholesky (Eigen's SimplicialLDLT), its ordering and symbolic analysis made once
-//     per topology, the numbers each sub-step. Exact to rounding whatever the stiffness;
-//   - conjugate gradients, never building the matrix (one pass over the springs per product),
-//     preconditioned by the inverse of each particle's 3 × 3 diagonal block, stopped at a relative
-//     residual of 1e-10 or 1000 iterations (a cap hit is counted in the profile and reported).
-// The benchmarks compare the two (docs/benchmarks.md, "Stiff materials").
+//   - conjugate gradients (first), never building the matrix (one pass over the springs per
+//     product), preconditioned by the inverse of each particle's 3 × 3 diagonal block, stopped at
+//     a relative residual of 1e-10 or 1000 iterations;
+//   - direct: the matrix assembled over the free particles' coordinates and factored by a sparse
+//     Cholesky (Eigen's SimplicialLDLT), its ordering and symbolic analysis made once per pattern,
+//     the numbers each sub-step. Exact to rounding whatever the stiffness; faster or slower than
+//     the conjugate gradients by the scene (a 64 × 64 cloth at 1e7 N/m: 0.19 s a step against
+//     0.11 s; the 32 × 32 stiff-cloth example at 1e6: 19 ms against 27 ms), but the choice may not
+//     hang on a timing: the bits would then hang on the machine's load.
+// A sub-step whose conjugate gradients stop at their cap is solved directly, and so is every later
+// sub-step of that model (Workspace::ImplicitSolve; the benchmark times each alone).
 #include "core/passes.h"
 #include "core/springs/spring_jacobian.h"
 
@@ -66,6 +70,7 @@ struct ImplicitSolver {
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
     Eigen::VectorXd rhs, solution;
     std::vector<Eigen::Matrix3d> blocks;  // the conjugate gradients' preconditioner, inverted
+    const Model *directFor = nullptr;     // Auto: the model whose conjugate gradients hit their cap
 };
 
 namespace {
@@ -146,8 +151,10 @@ void solveDirectly(const Model &model, const State &state, Workspace &work, doub
     work.profile.recordSolve(0, bNorm > 0.0 ? (s.matrix * s.solution - s.rhs).norm() / bNorm : 0.0);
 }
 
-void solveByConjugateGradients(const Model &model, const State &state, Workspace &work, double h,
-                               const Eigen::Matrix3Xd &b, Eigen::Matrix3Xd &dv)
+// returns whether they converged before the cap; a capped solve is reported (and its cap hit
+// counted) only when `last`, nothing solving after them
+bool solveByConjugateGradients(const Model &model, const State &state, Workspace &work, double h,
+                               const Eigen::Matrix3Xd &b, Eigen::Matrix3Xd &dv, bool last)
 {
     Eigen::Matrix3Xd &r = scratch(state, work, 2);
     Eigen::Matrix3Xd &p = scratch(state, work, 3);
@@ -199,10 +206,14 @@ void solveByConjugateGradients(const Model &model, const State &state, Workspace
         rz = rzNext;
         ++iteration;
     }
+    const bool capped = iteration == kMaxIterations && r.squaredNorm() > stop;
+    if (capped && !last)
+        return false;  // the factorisation solves it, and reports
     const double bNorm = b.norm();
     work.profile.recordSolve(iteration, bNorm > 0.0 ? r.norm() / bNorm : 0.0);
-    if (iteration == kMaxIterations && r.squaredNorm() > stop)
+    if (capped)
         work.profile.solverCapHits += 1;
+    return !capped;
 }
 
 }  // namespace
@@ -226,10 +237,16 @@ void implicitEuler(const Model &model, State &state, Workspace &work, double h)
         if (model.isPinned(i))
             b.col(i).setZero();
 
-    if (work.implicitConjugateGradients)
-        solveByConjugateGradients(model, state, work, h, b, dv);
-    else
+    using Solve = Workspace::ImplicitSolve;
+    const bool direct = work.implicitSolve == Solve::Direct ||
+                        (work.implicitSolve == Solve::Auto && work.implicitSolver && work.implicitSolver->directFor == &model);
+    if (direct) {
         solveDirectly(model, state, work, h, b, dv);
+    } else if (!solveByConjugateGradients(model, state, work, h, b, dv, work.implicitSolve == Solve::ConjugateGradients)) {
+        // capped: this model's systems are too ill-conditioned for them; the factorisation from here on
+        work.implicitSolver->directFor = &model;
+        solveDirectly(model, state, work, h, b, dv);
+    }
 
     // v += Δv, then x += h v (pinned: Δv = 0 and v = 0)
     state.velocity += dv;

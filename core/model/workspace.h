@@ -48,9 +48,11 @@ struct Workspace {
     // while what they were made for holds (projective.cpp, implicit_euler.cpp)
     std::shared_ptr<ProjectiveSolver> projective;
     std::shared_ptr<ImplicitSolver> implicitSolver;
-    // implicit-euler's linear solve: the sparse Cholesky (LDLᵀ) of the system, or block-Jacobi
-    // preconditioned conjugate gradients (the benchmarks compare the two)
-    bool implicitConjugateGradients = false;
+    // implicit-euler's linear solve (implicit_euler.cpp): Auto, block-Jacobi conjugate gradients
+    // until they once stop at their cap, then the sparse Cholesky (LDLᵀ) for this model; or either
+    // alone, as the benchmark compares them
+    enum class ImplicitSolve { Auto, Direct, ConjugateGradients };
+    ImplicitSolve implicitSolve = ImplicitSolve::Auto;
     std::vector<double> springLengths;  // vbd's: each spring's length at the sub-step's start
     // vbd's colours without the springs that broke, so that a torn run colours as its resumed file does
     std::shared_ptr<VbdTornColours> vbdTorn;

@@ -150,10 +150,11 @@ void TestIntegrators::implicitEulerHoldsPinnedParticles()
         QVERIFY(sim.step());
     QCOMPARE(Eigen::Vector3d(sim.state.position.col(0)), corner);
     QVERIFY(sim.state.position(1, 63) < options.height - 0.1);  // the far corner fell
-    // the direct solve: no iterations, a residual at rounding, a factorisation a sub-step
-    QCOMPARE(sim.work.profile.solverIterations, 0);
-    QVERIFY(sim.work.profile.solverResidual < 1e-12);
-    QCOMPARE(sim.work.profile.factorisations, std::uint64_t(200));
+    // conjugate gradients converge on it: no cap hit, no factorisation
+    QVERIFY(sim.work.profile.solverIterations > 0);
+    QVERIFY(sim.work.profile.worstSolverResidual <= 1e-10);
+    QCOMPARE(sim.work.profile.solverCapHits, std::uint64_t(0));
+    QCOMPARE(sim.work.profile.factorisations, std::uint64_t(0));
 }
 
 void TestIntegrators::adaptiveMeetsItsTolerance_data()

@@ -35,6 +35,7 @@ private slots:
     void resumedAfterABreakGoesOnToTheBit();
     void aStiffnessEditIsTakenAtOnce();
     void directAndConjugateGradientsAgree();
+    void cappedConjugateGradientsGiveWayToTheFactorisation();
     void stiffChainFallsAtG_data();
     void stiffChainFallsAtG();
     void stiffChainOnTheFloorGainsNoEnergy_data();
@@ -251,8 +252,9 @@ void TestStiffSolvers::directAndConjugateGradientsAgree()
     // at a relative residual of 1e-10 and so agree with it to about that
     core::SceneDesc scene = cloth(16, 1e6, core::Integrator::ImplicitEuler, 1);
     test::Sim direct = test::compile(scene);
+    direct.work.implicitSolve = core::Workspace::ImplicitSolve::Direct;
     test::Sim iterative = test::compile(scene);
-    iterative.work.implicitConjugateGradients = true;
+    iterative.work.implicitSolve = core::Workspace::ImplicitSolve::ConjugateGradients;
     for (int i = 0; i < 5; ++i) {
         QVERIFY(direct.step());
         QVERIFY(iterative.step());
@@ -264,6 +266,39 @@ void TestStiffSolvers::directAndConjugateGradientsAgree()
     QCOMPARE(iterative.work.profile.solverCapHits, std::uint64_t(0));
     const double difference = (direct.state.position - iterative.state.position).cwiseAbs().maxCoeff();
     QVERIFY2(difference < 1e-9, qPrintable(QString::number(difference)));
+}
+
+void TestStiffSolvers::cappedConjugateGradientsGiveWayToTheFactorisation()
+{
+    // the stiff-chain example's chain (1000 links of 1 cm, 1 g, 1e8 N/m) at one sub-step of 10 ms:
+    // conjugate gradients alone stop at their cap (where the chain once fell at a quarter of g);
+    // by default the capped sub-step is solved directly, and the model's later ones too
+    core::ChainOptions options;
+    options.links = 1000;
+    options.linkLength = 0.01;
+    options.mass = 0.001;
+    options.radius = 0.005;
+    options.stiffness = 1e8;
+    options.damping = 1.0;
+    options.height = 1.5;
+    core::SceneDesc scene = core::makeChain(options);
+    scene.settings.integrator = core::Integrator::ImplicitEuler;
+    scene.settings.particleCollisions = false;
+    test::Sim alone = test::compile(scene);
+    alone.work.implicitSolve = core::Workspace::ImplicitSolve::ConjugateGradients;
+    test::Sim automatic = test::compile(scene);
+    for (int i = 0; i < 3; ++i) {
+        QVERIFY(alone.step());
+        QVERIFY(automatic.step());
+    }
+    QVERIFY(alone.work.profile.solverCapHits > 0);
+    QVERIFY(!core::solverWarning(core::Integrator::ImplicitEuler, alone.work.profile).empty());
+    QCOMPARE(automatic.work.profile.solverCapHits, std::uint64_t(0));
+    // from rest the first sub-step converges; once one has stopped at the cap, each is factored
+    QVERIFY(automatic.work.profile.factorisations >= 1);
+    QVERIFY(automatic.work.profile.solverIterations == 0);  // the last sub-step was factored
+    QVERIFY(automatic.work.profile.worstSolverResidual < 1e-10);
+    QVERIFY(core::solverWarning(core::Integrator::ImplicitEuler, automatic.work.profile).empty());
 }
 
 void TestStiffSolvers::stiffChainFallsAtG_data()
