@@ -391,7 +391,7 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
     const bool contacts = model->plan.planeCollisions || model->plan.particleCollisions;
     if (!blewUp && !contacts && end.total() - start.total() > scale)
         runWarnings << u"the total energy rose from %1 J to %2 J, and nothing in the scene adds energy: %3 is "
-                       "unstable at this step; use more substeps, or symplectic-euler or implicit-euler"_s
+                       "unstable at this step; use more substeps, or symplectic-euler or projective"_s
                            .arg(start.total(), 0, 'g', 4)
                            .arg(end.total(), 0, 'g', 4)
                            .arg(QString::fromUtf8(core::integratorName(scene.settings.integrator).data(),

@@ -536,6 +536,8 @@ QString targets(const std::vector<Row> &rows, const Plan &plan)
           << describe(*best) << '\n';
     else if (const Row *any = cheapest(rows, n1, k, Criterion::Stretch, true))
         t << "MISSED: no row keeps KE/ref at 0.9; the fastest within 1% stretch is " << describe(*any) << '\n';
+    else if (n1 != plan.twoThreadSize)
+        t << QStringLiteral("not measured: only the %1x%1 cloth is timed on 2 threads\n").arg(plan.twoThreadSize);
     else
         t << "MISSED: no integrator met the stretch within the ladder and the cap\n";
 

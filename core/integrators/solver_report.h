@@ -10,8 +10,10 @@
 namespace core {
 
 // projective and vbd: a sub-step whose iterations left more than this share of the energy's
-// gradient has not converged, and its springs are softer than set
-inline constexpr double kUnconvergedResidual = 0.1;
+// gradient has barely moved off its first guess, the inertial move: its springs act far softer than
+// set. (Less converged than that is the rule on stiff cloth, not a fault: the stiff-cloth example on
+// projective leaves up to half the gradient at 0.88% stretch, under xpbd's 2.0%.)
+inline constexpr double kUnconvergedResidual = 0.9;
 
 // "10 iterations a sub-step, residual up to 3.2e-3" for the run so far; empty before any solve
 std::string solverSummary(Integrator integrator, const Profile &profile);

@@ -317,6 +317,13 @@ int stableSubsteps(const StabilityLimit &limit, Integrator integrator, double ti
     return needed >= double(most) ? most : std::max(least, static_cast<int>(needed));
 }
 
+// the integrators stable at any step for stiff springs and strong drag, as springlab-bench stiff
+// measured them (docs/benchmarks.md, "Stiff materials"): projective the cheapest within 1% stretch,
+// xpbd the one that keeps the motion at 10 ms steps
+const char *const kStiffIntegrators =
+    "the projective integrator (the cheapest measured for stiff springs, 1.6× less CPU than xpbd on a "
+    "stiff cloth, but it damps the motion at large steps) or xpbd (keeps the motion, at 100 to 200 substeps)";
+
 std::string explainBlowup(const Model &model, const Blowup &blowup, const StabilityLimit &limit)
 {
     std::ostringstream out;
@@ -325,8 +332,7 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
             << " within a sub-step at t = " << format(blowup.time) << " s (step " << blowup.step
             << "): its trial steps shrank to " << format(blowup.value) << " s against a sub-step of "
             << format(model.subStep()) << " s. The scene is too stiff for an explicit method (strong drag on a "
-            << "light particle, or very stiff springs): use the implicit-euler or xpbd integrator, or a looser "
-              << "tolerance.";
+            << "light particle, or very stiff springs): use " << kStiffIntegrators << ", or a looser tolerance.";
         return out.str();
     }
     // a particle that went past the world's edge at a finite speed has left it: said so, with where
@@ -361,17 +367,17 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
     const double maxStep = limit.maxSubStep(model.integrator);
     const std::string name(integratorName(model.integrator));
     const double most = parameterInfo(Parameter::Substeps).maximum;
-    // "use ≥ N substeps" only where N is allowed; beyond, what else helps. Both implicit Euler and
-    // xpbd are stable at any step for the causes named here: the springs (xpbd's are compliant
-    // constraints) and the drag (xpbd takes it implicitly, v / (1 + h c w))
+    // "use ≥ N substeps" only where N is allowed; beyond, what else helps. projective and xpbd are
+    // stable at any step for the causes named here: the springs (backward Euler's minimum; xpbd's
+    // compliant constraints) and the drag (both take it implicitly)
     const auto advice = [&](double stableStep, const std::string &otherwise) {
         const double needed = std::ceil(model.timeStep / (kStableShare * stableStep));
         std::ostringstream text;
         if (needed <= most)
-            text << "use ≥ " << static_cast<int>(needed) << " substeps or the implicit-euler or xpbd integrator.";
+            text << "use ≥ " << static_cast<int>(needed) << " substeps or " << kStiffIntegrators << ".";
         else
             text << "it would take " << format(needed) << " substeps, more than the " << format(most)
-                 << " allowed: use the implicit-euler or xpbd integrator" << otherwise << ".";
+                 << " allowed: use " << kStiffIntegrators << otherwise << ".";
         return text.str();
     };
     const double dragStep = dragStepLimit(model);
@@ -400,7 +406,7 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
                 << advice(limit.safeSubStep(model.integrator), ", softer springs or heavier particles");
         } else {
             out << " " << name << " is unstable at any step on undamped springs (stiffness up to "
-                << format(stiffest) << " N/m): use symplectic-euler, implicit-euler or xpbd.";
+                << format(stiffest) << " N/m): use symplectic-euler, or " << kStiffIntegrators << ".";
         }
     } else {
         // what the scene has that could have thrown it: its contacts, else a force applied from outside
@@ -410,7 +416,7 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
             << (contacts ? "a contact or a force applied from outside (a drag, the steering keys)"
                          : "a force applied from outside (a drag, the steering keys)")
             << " may have been too violent: try more substeps, a smaller time step"
-            << (model.plan.springs ? ", or the implicit-euler integrator." : ".");
+            << (model.plan.springs ? std::string(", or ") + kStiffIntegrators + "." : std::string("."));
     }
     return out.str();
 }

@@ -100,8 +100,8 @@ std::string explainPairSpeed(const PairSpeedExcess &excess);
 
 // one message naming what failed, where and why, with the fix, e.g. "Particle 17's velocity
 // became infinite at t = 2.31 s (step 231). The time step 0.01 s is 3.2× the stability limit
-// 0.0031 s for stiffness 1e5 N/m with symplectic-euler: use ≥ 4 substeps or the implicit-euler
-// integrator." The limit is best computed at the last good state.
+// 0.0031 s for stiffness 1e5 N/m with symplectic-euler: use ≥ 4 substeps or the projective
+// integrator (…) or xpbd (…)." The limit is best computed at the last good state.
 std::string explainBlowup(const Model &model, const Blowup &blowup, const StabilityLimit &limit);
 
 }  // namespace core

@@ -224,7 +224,7 @@ void TestSimCli::exitCodes_data()
                                              u"@/boom-out.json"_s}
                               << 3
                               << QStringList{u"Particle 1's velocity became"_s, u"(step "_s,
-                                             u"the stability limit"_s, u"substeps or the implicit-euler or xpbd integrator"_s};
+                                             u"the stability limit"_s, u"substeps or the projective integrator"_s};
 }
 
 void TestSimCli::exitCodes()

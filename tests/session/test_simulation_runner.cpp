@@ -356,7 +356,7 @@ void TestSimulationRunner::blowupPausesAndRestoresTheLastGoodState()
     QVERIFY2(what.hasMatch(), qPrintable(text));
     QVERIFY(runner.state().step < what.captured(2).toULongLong());
     QVERIFY2(text.contains(QStringLiteral("the stability limit")) && text.contains(QStringLiteral("1e+09 N/m")) &&
-                 text.contains(QStringLiteral("substeps or the implicit-euler or xpbd integrator")),
+                 text.contains(QStringLiteral("substeps or the projective integrator")),
              qPrintable(text));
 
     // it can go on from there once the scene is fixed

@@ -192,7 +192,7 @@ void TestStatusText::stability()
     QCOMPARE(note.level, ui::StabilityLevel::Past);
     // 0.01 / (0.9 × 0.0031) = 3.58 → 4
     QCOMPARE(note.text, QStringLiteral("Stable sub-step ≤ 3.1 ms; each is 10 ms, 3.2× over: use ≥ 4 substeps or "
-                                       "implicit-euler"));
+                                       "projective"));
 
     // no limit, or no stable step at all
     note = ui::stabilityNote(infinity, 0.01, 0.01, Integrator::ImplicitEuler);

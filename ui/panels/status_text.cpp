@@ -228,7 +228,7 @@ StabilityNote stabilityNote(double maxSubStep, double subStep, double timeStep, 
     }
     if (!(maxSubStep > 0.0))
         return {tr("%1 is unstable at any time step on undamped springs: use "
-                                                  "symplectic-euler or implicit-euler")
+                                                  "symplectic-euler or projective")
                     .arg(integratorText),
                 StabilityLevel::Past};
 
@@ -239,7 +239,7 @@ StabilityNote stabilityNote(double maxSubStep, double subStep, double timeStep, 
     if (share > 1.0) {
         const double substeps = std::ceil(timeStep / (core::kStableShare * maxSubStep));
         note.level = StabilityLevel::Past;
-        note.text += tr(", %1× over: use ≥ %2 substeps or implicit-euler")
+        note.text += tr(", %1× over: use ≥ %2 substeps or projective")
                          .arg(share, 0, 'g', 2)
                          .arg(substeps, 0, 'f', 0);
     } else {
