@@ -8,7 +8,7 @@
 //     product), preconditioned by the inverse of each particle's 3 × 3 diagonal block, stopped at
 //     a relative residual of 1e-10 or 1000 iterations;
 //   - direct: the matrix assembled over the free particles' coordinates and factored by a sparse
-//     Cholesky (Eigen's SimplicialLDLT), its ordering and symbolic analysis made once per pattern,
+//     Cholesky (sparse_cholesky.h: CHOLMOD's, else Eigen's LDLᵀ), its ordering and symbolic analysis made once per pattern,
 //     the numbers each sub-step. Exact to rounding whatever the stiffness; faster or slower than
 //     the conjugate gradients by the scene (a 64 × 64 cloth at 1e7 N/m: 0.19 s a step against
 //     0.11 s; the 32 × 32 stiff-cloth example at 1e6: 19 ms against 27 ms), but the choice may not
@@ -18,8 +18,7 @@
 #include "core/passes.h"
 #include "core/springs/spring_jacobian.h"
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
+#include "core/integrators/sparse_cholesky.h"
 #include <Eigen/Dense>
 #include <algorithm>
 
@@ -67,7 +66,7 @@ struct ImplicitSolver {
     std::vector<int> outer, inner;
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::SparseMatrix<double> matrix;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+    SparseLdlt ldlt;
     Eigen::VectorXd rhs, solution;
     std::vector<Eigen::Matrix3d> blocks;  // the conjugate gradients' preconditioner, inverted
     const Model *directFor = nullptr;     // Auto: the model whose conjugate gradients hit their cap
@@ -132,14 +131,24 @@ void solveDirectly(const Model &model, const State &state, Workspace &work, doub
     s.matrix.setFromTriplets(s.entries.begin(), s.entries.end());
     // the ordering and symbolic factorisation once per pattern (a break, a pin or an edit changes it)
     s.matrix.makeCompressed();
-    if (!samePattern(s))
+    dv.setZero();
+    if (rows == 0) {  // nothing free: nothing to solve (and CHOLMOD refuses an empty matrix)
+        work.profile.recordSolve(0, 0.0);
+        return;
+    }
+    if (!samePattern(s)) {
         s.ldlt.analyzePattern(s.matrix);
+        if (s.ldlt.info() != Eigen::Success) {  // a factor that was never analysed must not be used
+            s.outer.clear();
+            work.profile.recordSolve(0, 1.0);
+            return;
+        }
+    }
     s.ldlt.factorize(s.matrix);
     work.profile.factorisations += 1;
     s.rhs.resize(rows);
     for (int i : model.freeParticles)
         s.rhs.segment<3>(s.row[std::size_t(i)]) = b.col(i);
-    dv.setZero();
     if (s.ldlt.info() != Eigen::Success) {
         work.profile.recordSolve(0, 1.0);  // nothing solved: Δv stays 0
         return;

@@ -7,9 +7,8 @@
 // completes the square with the spring's). Each iteration alternates
 //   local:  d_s = l*_s (x_a − x_b)/|x_a − x_b|, every spring at once (in parallel);
 //   global: (M/h² + c/h I + L) x = M/h² y + c/h x0 + Jd, L = Σ_s w_s (e_a − e_b)(e_a − e_b)ᵀ,
-// whose matrix does not depend on x: it is factored once (sparse Cholesky, Eigen's SimplicialLLT
-// with its minimum-degree ordering) and each iteration is a back-substitution, one for the three
-// coordinates. Pinned particles are not unknowns: their springs move to the right-hand side. The
+// whose matrix does not depend on x: it is factored once (sparse Cholesky, sparse_cholesky.h)
+// and each iteration is a back-substitution for the three coordinates. Pinned particles are not unknowns: their springs move to the right-hand side. The
 // matrix is made again only when a spring breaks, or the step, masses, pins, stiffnesses or
 // dampers change (a live edit), the new factorisation replacing the old within the sub-step.
 // Chebyshev acceleration (Wang, SIGGRAPH Asia 2015) over-relaxes the iterates (variational.h).
@@ -19,8 +18,7 @@
 #include "core/parallel.h"
 #include "core/passes.h"
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
+#include "core/integrators/sparse_cholesky.h"
 #include <cmath>
 
 namespace core {
@@ -36,13 +34,15 @@ struct ProjectiveSolver {
     // what the factorisation was made for
     double h = 0.0;
     std::vector<double> weight;    // w_s per spring, 0 when broken
+    std::vector<int> ends;         // each spring's two ends
     std::vector<double> diagonal;  // m/h² + c/h per free particle
     std::vector<int> row;          // each particle's row, −1 when pinned
-    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt;
+    SparseLlt llt;
     Eigen::SparseMatrix<double> matrix;
     bool ok = false;
     // per sub-step and iteration, kept so that a step allocates nothing after the first
     std::vector<double> nextWeight, nextDiagonal;
+    std::vector<int> nextEnds;
     Eigen::MatrixX3d rhs, solution, iterate, product;
     Eigen::Matrix3Xd target;  // d_s per spring
     std::vector<double> restTarget;  // l*_s per spring
@@ -50,7 +50,7 @@ struct ProjectiveSolver {
 
 namespace {
 
-// the weights and diagonal for this sub-step; true when they differ from those factored
+// the weights, diagonal and spring ends for this sub-step; true when they differ from those factored
 bool gatherCoefficients(const Model &model, const State &state, double h, ProjectiveSolver &s)
 {
     std::vector<double> &weight = s.nextWeight;
@@ -63,7 +63,13 @@ bool gatherCoefficients(const Model &model, const State &state, double h, Projec
     diagonal.resize(std::size_t(n));
     for (int i = 0; i < n; ++i)
         diagonal[std::size_t(i)] = model.isPinned(i) ? 0.0 : model.mass[i] / (h * h) + model.viscosity / h;
-    return !s.ok || s.h != h || s.weight != weight || s.diagonal != diagonal;
+    std::vector<int> &ends = s.nextEnds;
+    ends.resize(2 * std::size_t(springs));
+    for (int k = 0; k < springs; ++k) {
+        ends[2 * std::size_t(k)] = model.springA[std::size_t(k)];
+        ends[2 * std::size_t(k) + 1] = model.springB[std::size_t(k)];
+    }
+    return !s.ok || s.h != h || s.weight != weight || s.diagonal != diagonal || s.ends != ends;
 }
 
 void factor(const Model &model, ProjectiveSolver &s, Workspace &work)
@@ -94,8 +100,10 @@ void factor(const Model &model, ProjectiveSolver &s, Workspace &work)
     }
     s.matrix.resize(rows, rows);
     s.matrix.setFromTriplets(entries.begin(), entries.end());
-    s.llt.compute(s.matrix);
-    s.ok = s.llt.info() == Eigen::Success;
+    // nothing free: nothing to solve (and CHOLMOD refuses an empty matrix)
+    if (rows > 0)
+        s.llt.compute(s.matrix);
+    s.ok = rows > 0 && s.llt.info() == Eigen::Success;
     s.rhs.resize(rows, 3);
     s.solution.resize(rows, 3);
     s.target.resize(3, model.springCount());
@@ -139,6 +147,22 @@ void localStep(const Model &model, const State &state, const Eigen::Matrix3Xd &y
     });
 }
 
+// the global step: the back-substitutions for the three coordinates. CHOLMOD's in one call (its
+// solves share a workspace); Eigen's one per coordinate, shared between the threads (each column's
+// arithmetic is the same on any thread count)
+void solveCoordinates(ProjectiveSolver &s)
+{
+#ifdef SPRINGLAB_CHOLMOD
+    s.solution = s.llt.solve(s.rhs);
+#else
+#ifdef SPRINGLAB_OPENMP
+#pragma omp parallel for schedule(static, 1) if (splitAcrossThreads(static_cast<int>(s.rhs.rows())))
+#endif
+    for (int c = 0; c < 3; ++c)
+        s.solution.col(c) = s.llt.solve(s.rhs.col(c));
+#endif
+}
+
 // ‖∇G‖ at x: the matrix times x less the right-hand side of x's own local step
 double gradientNorm(const Model &model, const State &state, ProjectiveSolver &s)
 {
@@ -170,9 +194,10 @@ void projective(const Model &model, State &state, Workspace &work, double h)
         s.h = h;
         std::swap(s.weight, s.nextWeight);
         std::swap(s.diagonal, s.nextDiagonal);
+        std::swap(s.ends, s.nextEnds);
         factor(model, s, work);
     }
-    if (!s.ok) {  // cannot happen with positive masses; kept as the inertial move rather than garbage
+    if (!s.ok) {  // nothing free; else, with positive masses, never: the inertial move rather than garbage
         velocityFromMove(model, state, x0, h);
         return;
     }
@@ -192,7 +217,7 @@ void projective(const Model &model, State &state, Workspace &work, double h)
         localStep(model, state, y, x0, h, s);
         if (n == 1)
             first = gradientNorm(model, state, s);
-        s.solution = s.llt.solve(s.rhs);
+        solveCoordinates(s);
         for (int i : model.freeParticles)
             state.position.col(i) = s.solution.row(s.row[std::size_t(i)]).transpose();
         chebyshev.afterIteration(model, n, iterations, state.position);

@@ -91,8 +91,12 @@ inline void visit(const VbdPass &p, int i)
 }  // namespace
 
 struct VbdTornColours {
+    // what it was made for: the model (its address, which a later model may take again, so its
+    // sizes too) and the broken flags
     const Model *model = nullptr;
-    std::vector<std::uint8_t> broken;  // the flags it was made for
+    int particles = -1;
+    int springs = -1;
+    std::vector<std::uint8_t> broken;
     std::vector<int> order, colours;
 };
 
@@ -114,9 +118,12 @@ Colours coloursFor(const Model &model, const State &state, Workspace &work)
     if (!work.vbdTorn)
         work.vbdTorn = std::make_shared<VbdTornColours>();
     VbdTornColours &torn = *work.vbdTorn;
-    if (torn.model != &model || torn.broken != state.springBroken) {
+    if (torn.model != &model || torn.particles != model.particleCount() || torn.springs != model.springCount() ||
+        torn.broken != state.springBroken) {
         colourVertices(model, state.springBroken, torn.order, torn.colours);
         torn.model = &model;
+        torn.particles = model.particleCount();
+        torn.springs = model.springCount();
         torn.broken = state.springBroken;
     }
     return {torn.order, torn.colours};

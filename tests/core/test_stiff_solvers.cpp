@@ -34,6 +34,9 @@ private slots:
     void resumedAfterABreakGoesOnToTheBit_data();
     void resumedAfterABreakGoesOnToTheBit();
     void aStiffnessEditIsTakenAtOnce();
+    void aMovedSpringIsFactoredAgain();
+    void nothingFreeIsNothingToSolve_data();
+    void nothingFreeIsNothingToSolve();
     void directAndConjugateGradientsAgree();
     void cappedConjugateGradientsGiveWayToTheFactorisation();
     void stiffChainFallsAtG_data();
@@ -244,6 +247,49 @@ void TestStiffSolvers::aStiffnessEditIsTakenAtOnce()
     QCOMPARE(sim.work.profile.factorisations, std::uint64_t(2));
     const double stretch = -sim.state.position(1, 1) - 1.0;
     QVERIFY2(std::abs(stretch - 9.81e-6) < 1e-11, qPrintable(QString::number(stretch)));
+}
+
+void TestStiffSolvers::aMovedSpringIsFactoredAgain()
+{
+    // an edit that moves a spring's end and keeps its stiffness changes the matrix all the same:
+    // the particle hangs from its new anchor, not the old one
+    core::SceneDesc scene = hangingMass(core::Integrator::Projective, 1e3);
+    scene.particles.push_back(test::particle({1.0, 0.0, 0.0}, Eigen::Vector3d::Zero(), 1.0, 0.05, true));
+    test::Sim sim = test::compile(scene);
+    for (int i = 0; i < 10; ++i)
+        QVERIFY(sim.step());
+    scene.springs[0].a = 2;  // from the anchor at x = 1 m
+    sim.model = core::compileModel(scene);
+    for (int i = 0; i < 300; ++i)
+        QVERIFY(sim.step());
+    QCOMPARE(sim.work.profile.factorisations, std::uint64_t(2));
+    // it swings on a spring of 1 m from the new anchor (√2 m away when the spring moved)
+    const double fromAnchor = (sim.state.position.col(1) - sim.state.position.col(2)).norm();
+    QVERIFY2(fromAnchor > 0.99 && fromAnchor < 1.05, qPrintable(QString::number(fromAnchor)));
+}
+
+void TestStiffSolvers::nothingFreeIsNothingToSolve_data()
+{
+    QTest::addColumn<core::Integrator>("integrator");
+    QTest::newRow("projective") << core::Integrator::Projective;
+    QTest::newRow("vbd") << core::Integrator::Vbd;
+    QTest::newRow("implicit-euler direct") << core::Integrator::ImplicitEuler;
+}
+
+void TestStiffSolvers::nothingFreeIsNothingToSolve()
+{
+    // every particle pinned (an edit can leave a scene so): the step has nothing to solve, and
+    // neither crashes nor moves anything (the sparse factorisations refuse an empty matrix)
+    QFETCH(core::Integrator, integrator);
+    core::SceneDesc scene = hangingMass(integrator, 1e3);
+    scene.particles[1].pinned = true;
+    test::Sim sim = test::compile(scene);
+    sim.work.implicitSolve = core::Workspace::ImplicitSolve::Direct;
+    const core::State before = sim.state;
+    for (int i = 0; i < 3; ++i)
+        QVERIFY(sim.step());
+    QVERIFY(sim.state.position == before.position);
+    QVERIFY(sim.state.velocity == before.velocity);
 }
 
 void TestStiffSolvers::directAndConjugateGradientsAgree()
