@@ -373,7 +373,7 @@ void TestStability::blowupAdviceIsPossible_data()
     // ω = 3e14 rad/s: 1.8e12 substeps would be needed, past the int range and the 10 000 allowed
     QTest::newRow("far too many substeps") << 1e-20 << 1e9 << 0.0 << 0.01
                                            << "it would take 1.8e+12 substeps, more than the 1e+04 allowed: use the "
-                                              "projective integrator (the cheapest measured for stiff springs, 1.6× "
+                                              "projective integrator (the cheapest measured for stiff springs, 2.3× "
                                               "less CPU than xpbd on a stiff cloth, but it damps the motion at large "
                                               "steps) or xpbd (keeps the motion, at 100 to 200 substeps), softer "
                                               "springs or heavier particles"
