@@ -11,6 +11,7 @@
 // blew up, 4 a replay did not end with the recorded state. The summary's status tells the
 // failures that share exit code 2 apart (app::RunStatus).
 
+#include "sim_import.h"
 #include "sim_options.h"
 #include "sim_render.h"
 #include "sim_summary.h"
@@ -18,6 +19,7 @@
 #include "core/integrators/solver_report.h"
 
 #include "core/model/diagnostics.h"
+#include "core/io/animation_export.h"
 #include "core/io/safe_write.h"
 #include "core/io/scene_file.h"
 #include "core/io/trace_writer.h"
@@ -222,6 +224,8 @@ int main(int argc, char *argv[])
         return finish(reportSummary(refused, parsed.summaryJsonPath, parsed.summaryCsvPath));
     }
     const app::SimOptions &options = *parsed.options;
+    if (options.import)
+        return finish(app::runImport(options));
     if (options.replay) {
         if (const QString refused = refusedOutput(options); !refused.isEmpty())
             return failWith(refused);
@@ -332,6 +336,28 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
             return failRun(app::RunStatus::WriteFailed, failure);
     }
 
+    // the animation export starts with step 0 too, and is refused before the run when it cannot
+    io::AnimationExport exported;
+    const bool exporting = app::exportsAnimation(options);
+    if (exporting) {
+        io::ExportOptions wanted;
+        wanted.pc2Path = options.pc2Path;
+        wanted.objFolder = options.objFolder;
+        wanted.meshPath = options.meshPath;
+        wanted.fps = options.fps;
+        wanted.from = options.exportFrom;
+        wanted.to = options.exportTo;
+        wanted.space = options.exportSpace;
+        if (const QString failure = exported.open(wanted, scene, scene.settings.timeStep, *steps); !failure.isEmpty()) {
+            exported.cancel();
+            return failRun(app::RunStatus::BadInput, u"export: "_s + failure);
+        }
+        if (const QString failure = exported.writeDue(state.step, state.position); !failure.isEmpty()) {
+            exported.cancel();
+            return failRun(app::RunStatus::WriteFailed, failure);
+        }
+    }
+
     // the run, in chunks between trace rows (every K steps, not the last step unless K divides it)
     // and frames; only stepping is timed
     const core::State initial = state;  // to explain a blow-up, should one happen
@@ -343,6 +369,8 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
             until = std::min(until, (state.step / options.every + 1) * options.every);
         if (rendering)
             until = std::min(until, frames.nextStep(*steps));
+        if (exporting)
+            until = std::min(until, std::max(state.step + 1, exported.nextStep(*steps)));
         timer.start();
         try {
             while (state.step < until)
@@ -369,7 +397,20 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
                 record(core::energies(*model, state));
                 return failRun(app::RunStatus::WriteFailed, failure);
             }
+        if (exporting && !blewUp)
+            if (const QString failure = exported.writeDue(state.step, state.position); !failure.isEmpty()) {
+                exported.cancel();
+                record(core::energies(*model, state));
+                return failRun(app::RunStatus::WriteFailed, failure);
+            }
     }
+    // the export ends with the frames written (all, or those before a blow-up)
+    if (exporting)
+        if (const QString failure = exported.finish(); !failure.isEmpty()) {
+            exported.cancel();
+            record(core::energies(*model, state));
+            return failRun(app::RunStatus::WriteFailed, failure);
+        }
     const core::Energies end = core::energies(*model, state);
     if (tracing)
         if (const QString failure = trace.close(); !failure.isEmpty()) {
@@ -465,6 +506,12 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
                 << (frames.framesRemoved() > 0 ? u", replacing %1 of an earlier render"_s.arg(frames.framesRemoved())
                                                : QString())
                 << '\n';
+        if (exporting)
+            out << "  export     " << exported.framesWritten() << " of " << exported.frameCount()
+                << QString::asprintf(" frames at %.6g frames/s: ", options.fps) << exported.files().size() << " files ("
+                << (options.pc2Path.isEmpty() ? QString() : options.pc2Path + u' ')
+                << (options.objFolder.isEmpty() ? QString() : options.objFolder + u"/ "_s)
+                << (options.meshPath.isEmpty() ? QString() : options.meshPath + u' ') << ")\n";
         if (!options.outputPath.isEmpty() && !blewUp)
             out << "  output     " << options.outputPath << '\n';
     }

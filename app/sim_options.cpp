@@ -2,6 +2,7 @@
 
 #include "ui/export/image_sequence.h"
 
+#include "core/io/animation_export.h"
 #include "core/io/file_identity.h"
 #include "core/io/scene_words.h"
 #include "core/model/parameters.h"
@@ -11,9 +12,11 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
+#include <QFileInfo>
 #include <QRegularExpression>
 
 #include <cmath>
+#include <tuple>
 
 namespace app {
 
@@ -85,11 +88,15 @@ bool readRenderOptions(const QCommandLineParser &parser, SimOptions &options, QS
         error = optionError(u"render"_s, u"needs a folder for the frames"_s);
         return false;
     }
-    for (const QString &name : {u"fps"_s, u"size"_s})
-        if (parser.isSet(name) && !parser.isSet(u"render"_s)) {
-            error = u"--%1 only makes sense with --render"_s.arg(name);
-            return false;
-        }
+    const bool exporting = parser.isSet(u"export-pc2"_s) || parser.isSet(u"export-obj"_s) || parser.isSet(u"export-mesh"_s);
+    if (parser.isSet(u"size"_s) && !parser.isSet(u"render"_s)) {
+        error = u"--size only makes sense with --render"_s;
+        return false;
+    }
+    if (parser.isSet(u"fps"_s) && !parser.isSet(u"render"_s) && !exporting) {
+        error = u"--fps only makes sense with --render or an export (--export-pc2, --export-obj, --export-mesh)"_s;
+        return false;
+    }
     if (parser.isSet(u"fps"_s)) {
         const auto fps = readNumber(u"fps"_s, parser.value(u"fps"_s), u"a number of frames per second"_s, error);
         if (!fps)
@@ -112,6 +119,58 @@ bool readRenderOptions(const QCommandLineParser &parser, SimOptions &options, QS
             return false;
         }
         options.frameSize = QSize(width, height);
+    }
+    return true;
+}
+
+// --export-pc2, --export-obj, --export-mesh with --export-from, --export-to and --export-space
+bool readExportOptions(const QCommandLineParser &parser, SimOptions &options, QString &error)
+{
+    for (const auto &[name, value] : {std::pair{u"export-pc2"_s, &options.pc2Path}, std::pair{u"export-obj"_s, &options.objFolder},
+                                      std::pair{u"export-mesh"_s, &options.meshPath}}) {
+        *value = parser.value(name);
+        if (parser.isSet(name) && value->isEmpty()) {
+            error = optionError(name, u"needs a file or folder name"_s);
+            return false;
+        }
+    }
+    const bool exporting = exportsAnimation(options);
+    for (const QString &name : {u"export-from"_s, u"export-to"_s, u"export-space"_s})
+        if (parser.isSet(name) && !exporting) {
+            error = u"--%1 only makes sense with --export-pc2, --export-obj or --export-mesh"_s.arg(name);
+            return false;
+        }
+    if (parser.isSet(u"export-from"_s)) {
+        const auto from = readNumber(u"export-from"_s, parser.value(u"export-from"_s), u"a time in seconds"_s, error);
+        if (!from)
+            return false;
+        if (!(*from >= 0.0) || !std::isfinite(*from)) {
+            error = optionError(u"export-from"_s, u"must be a time of 0 s or later (got "_s + parser.value(u"export-from"_s) + u')');
+            return false;
+        }
+        options.exportFrom = *from;
+    }
+    if (parser.isSet(u"export-to"_s)) {
+        options.exportTo = readNumber(u"export-to"_s, parser.value(u"export-to"_s), u"a time in seconds"_s, error);
+        if (!options.exportTo)
+            return false;
+        if (!(*options.exportTo >= options.exportFrom) || !std::isfinite(*options.exportTo)) {
+            error = optionError(u"export-to"_s, u"must be a time no earlier than --export-from (got "_s + parser.value(u"export-to"_s) + u')');
+            return false;
+        }
+    }
+    if (parser.isSet(u"export-space"_s)) {
+        const QString space = parser.value(u"export-space"_s);
+        if (space != u"file"_s && space != u"scene"_s) {
+            error = optionError(u"export-space"_s, u"expected file or scene, got \""_s + space + u'"');
+            return false;
+        }
+        options.exportSpace = space == u"file"_s ? core::MeshSpace::File : core::MeshSpace::Scene;
+    }
+    if (!options.meshPath.isEmpty() && io::meshExportFormat(QFileInfo(options.meshPath).suffix()).isEmpty()) {
+        error = optionError(u"export-mesh"_s, u"no mesh format has the extension \"."_s + QFileInfo(options.meshPath).suffix() +
+                                                  u"\" (known: "_s + io::meshExportExtensions().join(u", "_s) + u')');
+        return false;
     }
     return true;
 }
@@ -257,7 +316,7 @@ bool readOptions(const QCommandLineParser &parser, SimOptions &options, QString 
         options.every = *every;
     }
     options.quiet = parser.isSet(u"quiet"_s);
-    return readRenderOptions(parser, options, error);
+    return readRenderOptions(parser, options, error) && readExportOptions(parser, options, error);
 }
 
 }  // namespace
@@ -272,7 +331,10 @@ QString clashingPaths(const SimOptions &options)
                                                         {"--trace", options.tracePath},
                                                         {"--summary-json", options.summaryJsonPath},
                                                         {"--summary-csv", options.summaryCsvPath},
-                                                        {"--render", options.renderDirectory}};
+                                                        {"--render", options.renderDirectory},
+                                                        {"--export-pc2", options.pc2Path},
+                                                        {"--export-obj", options.objFolder},
+                                                        {"--export-mesh", options.meshPath}};
     for (const auto &[name, written] : outputs) {
         if (written.isEmpty())
             continue;
@@ -332,6 +394,133 @@ void reportRefusal(const QCommandLineParser &parser, ParsedOptions &parsed)
     parsed.refused.error = parsed.error;
 }
 
+// the options of --import alone
+const QStringList kImportOnly{u"as"_s,       u"into"_s,     u"scale"_s,   u"up"_s,  u"at"_s,  u"material"_s,
+                              u"density"_s,  u"stiffness"_s, u"damping"_s, u"spacing"_s, u"pin"_s, u"name"_s};
+
+// springlab-sim --import MESH --as KIND --output SCENE.json and its options
+bool readImportOptions(const QCommandLineParser &parser, SimOptions &options, QString &error)
+{
+    ImportRequest request;
+    request.meshPath = parser.value(u"import"_s);
+    if (request.meshPath.isEmpty()) {
+        error = optionError(u"import"_s, u"needs a mesh file"_s);
+        return false;
+    }
+    if (!parser.positionalArguments().isEmpty()) {
+        error = u"--import makes a scene of a mesh and runs none: it takes no scene file (got "_s +
+                parser.positionalArguments().join(u' ') + u"); use --into to add the mesh to a scene"_s;
+        return false;
+    }
+    for (const QString &name : {u"duration"_s, u"steps"_s, u"time-step"_s, u"substeps"_s, u"integrator"_s, u"tolerance"_s,
+                                u"contact-solver"_s, u"friction"_s, u"static-friction"_s, u"set"_s, u"trace"_s, u"every"_s,
+                                u"render"_s, u"fps"_s, u"size"_s, u"summary-json"_s, u"summary-csv"_s, u"replay"_s,
+                                u"export-pc2"_s, u"export-obj"_s, u"export-mesh"_s, u"export-from"_s, u"export-to"_s,
+                                u"export-space"_s})
+        if (parser.isSet(name)) {
+            error = u"--import makes a scene and runs none: --%1 cannot go with it (run the scene it writes)"_s.arg(name);
+            return false;
+        }
+    if (!parser.isSet(u"as"_s)) {
+        error = u"--import needs --as cloth, soft or collider"_s;
+        return false;
+    }
+    const auto kind = core::meshKindNamed(parser.value(u"as"_s).toStdString());
+    if (!kind) {
+        error = optionError(u"as"_s, u"expected cloth, soft or collider, got \""_s + parser.value(u"as"_s) + u'"');
+        return false;
+    }
+    request.kind = *kind;
+    options.outputPath = parser.value(u"output"_s);
+    if (options.outputPath.isEmpty()) {
+        error = u"--import needs --output SCENE.json: the file the scene is written to"_s;
+        return false;
+    }
+    request.intoPath = parser.value(u"into"_s);
+    if (parser.isSet(u"into"_s) && request.intoPath.isEmpty()) {
+        error = optionError(u"into"_s, u"needs a scene file"_s);
+        return false;
+    }
+    const auto positive = [&](const QString &name, double &out, const QString &what) {
+        const auto value = readNumber(name, parser.value(name), what, error);
+        if (!value)
+            return false;
+        if (!(*value > 0.0) || !std::isfinite(*value)) {
+            error = optionError(name, u"must be greater than 0 (got "_s + parser.value(name) + u')');
+            return false;
+        }
+        out = *value;
+        return true;
+    };
+    if (parser.isSet(u"scale"_s) && !positive(u"scale"_s, request.scale, u"a number of metres per unit"_s))
+        return false;
+    if (parser.isSet(u"spacing"_s) && !positive(u"spacing"_s, request.spacing, u"a number of metres"_s))
+        return false;
+    for (const auto &[name, value, what] : {std::tuple{u"density"_s, &request.density, u"a density"_s},
+                                            std::tuple{u"stiffness"_s, &request.stiffness, u"a number of N/m"_s}})
+        if (parser.isSet(name)) {
+            double v = 0.0;
+            if (!positive(name, v, what))
+                return false;
+            *value = v;
+        }
+    if (parser.isSet(u"damping"_s)) {
+        request.damping = readNumber(u"damping"_s, parser.value(u"damping"_s), u"a number of N·s/m"_s, error);
+        if (!request.damping || !checkAgainstTable(u"damping"_s, core::Parameter::Damping, *request.damping, error))
+            return false;
+    }
+    if (parser.isSet(u"up"_s)) {
+        const QString up = parser.value(u"up"_s).trimmed().toLower();
+        if (up != u"y"_s && up != u"z"_s) {
+            error = optionError(u"up"_s, u"expected y or z, got \""_s + parser.value(u"up"_s) + u'"');
+            return false;
+        }
+        request.zUp = up == u"z"_s;
+    }
+    if (parser.isSet(u"at"_s)) {
+        const QStringList parts = parser.value(u"at"_s).split(u',');
+        Eigen::Vector3d at;
+        bool ok = parts.size() == 3;
+        for (int a = 0; a < 3 && ok; ++a) {
+            at[a] = parts[a].trimmed().toDouble(&ok);
+            ok = ok && std::isfinite(at[a]);
+        }
+        if (!ok) {
+            error = optionError(u"at"_s, u"expected three numbers X,Y,Z in metres, got \""_s + parser.value(u"at"_s) + u'"');
+            return false;
+        }
+        request.at = at;
+    }
+    if (parser.isSet(u"material"_s)) {
+        const auto material = core::clothMaterialNamed(parser.value(u"material"_s).toStdString());
+        if (!material) {
+            error = optionError(u"material"_s, u"expected one of "_s + QString::fromLatin1(core::knownClothMaterials().data(), qsizetype(core::knownClothMaterials().size())) +
+                                                   u", got \""_s + parser.value(u"material"_s) + u'"');
+            return false;
+        }
+        request.material = *material;
+    }
+    if (parser.isSet(u"pin"_s)) {
+        const auto side = core::pinSideNamed(parser.value(u"pin"_s).toStdString());
+        if (!side) {
+            error = optionError(u"pin"_s, u"expected one of "_s + QString::fromLatin1(core::knownPinSides().data(), qsizetype(core::knownPinSides().size())) +
+                                              u", got \""_s + parser.value(u"pin"_s) + u'"');
+            return false;
+        }
+        request.pin = *side;
+    }
+    request.name = parser.isSet(u"name"_s) ? parser.value(u"name"_s) : QFileInfo(request.meshPath).completeBaseName();
+    // the scene written must not be the mesh or the scene read
+    for (const QString &read : {request.meshPath, request.intoPath})
+        if (!read.isEmpty() && io::sameFile(options.outputPath, read)) {
+            error = u"--output %1 names a file the import reads: it would overwrite it"_s.arg(QDir::toNativeSeparators(options.outputPath));
+            return false;
+        }
+    options.quiet = parser.isSet(u"quiet"_s);
+    options.import = request;
+    return true;
+}
+
 }  // namespace
 
 ParsedOptions parseSimOptions(const QStringList &arguments)
@@ -371,7 +560,38 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
         {u"render"_s, u"Draw the run as PNG frames, DIR/frame-00000.png on, with the editor's 3D view framed on "
                       "the scene (frame k shows the first step at or after k / F s). Needs an X display: run it "
                       "under xvfb-run -a where there is none."_s, u"DIR"_s},
-        {u"fps"_s, u"With --render: frames per simulated second (default 30)."_s, u"F"_s},
+        {u"fps"_s, u"With --render or an export: frames per simulated second (default 30)."_s, u"F"_s},
+        {u"export-pc2"_s, u"Write the deforming surfaces (imported meshes, or a cloth's sheet) as a PC2 point cache, "
+                          "for Blender's Mesh Cache modifier, with the OBJ of its first frame beside it "
+                          "(FILE.obj). Several meshes: FILE-NAME.pc2 each. Streamed: one frame in memory."_s,
+         u"FILE.pc2"_s},
+        {u"export-obj"_s, u"Write the surfaces as an OBJ a frame, FOLDER/NAME_00000.obj on, vertices in the same "
+                          "order."_s, u"FOLDER"_s},
+        {u"export-mesh"_s, u"Write the surfaces' last exported frame in the format the extension names (glb, gltf, "
+                           "ply, stl, obj, ...)."_s, u"FILE"_s},
+        {u"export-from"_s, u"With an export: the first frame's time (default 0)."_s, u"SECONDS"_s},
+        {u"export-to"_s, u"With an export: the last frame's time at most (default: the run's end)."_s, u"SECONDS"_s},
+        {u"export-space"_s, u"With an export: file (an imported mesh where its file has it, placement undone; the "
+                            "default) or scene (where the scene has it)."_s, u"file|scene"_s},
+        {u"import"_s, u"Make a scene of a mesh file (OBJ, PLY, STL, glTF 2, FBX, Collada, ...) with --as and write it "
+                      "to --output, instead of running a scene."_s, u"MESH"_s},
+        {u"as"_s, u"With --import: cloth, soft (a closed mesh filled with a lattice) or collider."_s, u"KIND"_s},
+        {u"into"_s, u"With --import: add the mesh to this scene rather than to a new one."_s, u"SCENE.json"_s},
+        {u"scale"_s, u"With --import: metres per unit of the file (default 1)."_s, u"S"_s},
+        {u"up"_s, u"With --import: the file's up axis, y (default) or z."_s, u"AXIS"_s},
+        {u"at"_s, u"With --import: where the bottom centre of the mesh's box goes (default: where the file has it)."_s,
+         u"X,Y,Z"_s},
+        {u"material"_s, u"With --import --as cloth: cotton (default), silk, denim or rubber-sheet."_s, u"NAME"_s},
+        {u"density"_s, u"With --import: kg/m² of a cloth (default: the material's), kg/m³ of a soft body (default 200)."_s,
+         u"D"_s},
+        {u"stiffness"_s, u"With --import: N/m of a cloth's edge springs (shear and bend in the material's proportion) "
+                         "or of a soft body's springs."_s, u"K"_s},
+        {u"damping"_s, u"With --import: N·s/m of every spring."_s, u"C"_s},
+        {u"spacing"_s, u"With --import --as soft: the lattice's spacing in metres (default: a tenth of the mesh's "
+                       "longest side)."_s, u"H"_s},
+        {u"pin"_s, u"With --import: pin the vertices on one side of the mesh's box: none (default), top, bottom, left, "
+                   "right, front, back."_s, u"SIDE"_s},
+        {u"name"_s, u"With --import: the mesh's name in the scene (default: the file's)."_s, u"NAME"_s},
         {u"size"_s, u"With --render: the frames' size in pixels (default 1280x720)."_s, u"WxH"_s},
         {u"summary-json"_s, u"Write the summary as one JSON object, also when the run blows up or its file or "
                             "arguments are refused."_s, u"SUMMARY.json"_s},
@@ -402,6 +622,17 @@ ParsedOptions parseSimOptions(const QStringList &arguments)
         return parsed;
     }
     SimOptions options;
+    if (parser.isSet(u"import"_s)) {
+        if (readImportOptions(parser, options, parsed.error))
+            parsed.options = options;
+        return parsed;
+    }
+    for (const QString &name : kImportOnly)
+        if (parser.isSet(name)) {
+            parsed.error = u"--%1 only makes sense with --import"_s.arg(name);
+            reportRefusal(parser, parsed);
+            return parsed;
+        }
     if (readOptions(parser, options, parsed.error)) {
         parsed.error = clashingPaths(options);
         if (parsed.error.isEmpty())

@@ -7,6 +7,8 @@
 #include "sim_summary.h"
 
 #include "core/integrators/integrator.h"
+#include "core/meshes/mesh_import.h"
+#include "core/meshes/mesh_surface.h"
 #include "core/model/scene.h"
 
 #include <QJsonObject>
@@ -23,7 +25,25 @@ namespace app {
 // steps run when neither --steps nor --duration is given
 inline constexpr std::uint64_t kDefaultSteps = 1000;
 
+// springlab-sim --import MESH --as KIND --output SCENE.json: a scene made of a mesh file
+struct ImportRequest {
+    QString meshPath;    // --import MESH
+    QString intoPath;    // --into SCENE.json: added to that scene; empty: a new scene
+    core::MeshKind kind = core::MeshKind::Cloth;                // --as
+    double scale = 1.0;                                         // --scale S
+    bool zUp = false;                                           // --up z
+    std::optional<Eigen::Vector3d> at;                          // --at X,Y,Z
+    core::ClothMaterial material = core::ClothMaterial::Cotton; // --material NAME
+    std::optional<double> density;                              // --density D
+    std::optional<double> stiffness;                            // --stiffness K
+    std::optional<double> damping;                              // --damping C
+    double spacing = 0.0;                                       // --spacing H
+    core::PinSide pin = core::PinSide::None;                    // --pin SIDE
+    QString name;                                               // --name NAME
+};
+
 struct SimOptions {
+    std::optional<ImportRequest> import;  // --import: make a scene of a mesh instead of running one
     QString scenePath;
     std::optional<std::uint64_t> steps;  // --steps N
     std::optional<double> duration;      // --duration SECONDS
@@ -41,7 +61,13 @@ struct SimOptions {
     QString summaryJsonPath;  // --summary-json SUMMARY.json; empty: none
     QString summaryCsvPath;   // --summary-csv ROW.csv; empty: none
     QString renderDirectory;      // --render DIR: PNG frames of the run; empty: none
-    double fps = 30.0;            // --fps F: frames per simulated second
+    double fps = 30.0;            // --fps F: frames per simulated second (of --render and the exports)
+    QString pc2Path;              // --export-pc2 FILE.pc2: the surfaces' point cache
+    QString objFolder;            // --export-obj FOLDER: an OBJ a frame
+    QString meshPath;             // --export-mesh FILE: the last frame, in the format of its extension
+    double exportFrom = 0.0;      // --export-from T, s
+    std::optional<double> exportTo;  // --export-to T, s
+    core::MeshSpace exportSpace = core::MeshSpace::File;  // --export-space file|scene
     QSize frameSize{1280, 720};   // --size WxH, px
     bool quiet = false;
     bool replay = false;  // --replay: scenePath is a session recording (ui/session_file.h)
@@ -60,6 +86,12 @@ struct ParsedOptions {
 
 // arguments as main() gets them, the program name first
 ParsedOptions parseSimOptions(const QStringList &arguments);
+
+// whether the run writes an animation export
+inline bool exportsAnimation(const SimOptions &options)
+{
+    return !options.pc2Path.isEmpty() || !options.objFolder.isEmpty() || !options.meshPath.isEmpty();
+}
 
 // why the files options name cannot be used together (empty: they can): an output (--output,
 // --trace, --summary-json, --summary-csv, the --render folder) that is the file read, two outputs

@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # what Springlab needs from Debian; libqt6opengl6-dev and xauth are only "recommended" by others
-packages=(g++ cmake ninja-build qt6-base-dev libqt6opengl6-dev libeigen3-dev libsuitesparse-dev
+packages=(g++ cmake ninja-build qt6-base-dev libqt6opengl6-dev libeigen3-dev libsuitesparse-dev libassimp-dev
           xvfb xauth libgl1-mesa-dri libegl-mesa0)
 
 source tools/install_missing.sh

@@ -34,9 +34,14 @@ double automaticThickness(double meanRadius, double shortestSide)
     return std::min(2.0 * meanRadius, 0.3 * shortestSide);
 }
 
+bool listsTriangles(const SceneDesc &scene)
+{
+    return !scene.triangles.empty() || !scene.meshes.empty();
+}
+
 SpringTriangles sceneTriangles(const SceneDesc &scene)
 {
-    if (scene.triangles.empty())
+    if (!listsTriangles(scene))
         return findSpringTriangles(scene);
     SpringTriangles triangles;
     std::unordered_map<std::uint64_t, int> springOf;
@@ -60,7 +65,7 @@ SpringTriangles sceneTriangles(const SceneDesc &scene)
 
 std::vector<std::array<int, 3>> listedTriangles(const SceneDesc &scene)
 {
-    if (!scene.triangles.empty())
+    if (listsTriangles(scene))
         return scene.triangles;
     const SpringTriangles found = findSpringTriangles(scene);
     std::vector<std::array<int, 3>> corners(std::size_t(found.count()));
@@ -106,7 +111,8 @@ ClothSurface makeClothSurface(const SceneDesc &scene, const SpringTriangles &tri
         }
 
     // pieces: particles joined through triangles; a piece with an edge of three or more triangles
-    // is a lattice's, not a sheet
+    // is a lattice's, not a sheet, where the springs made the triangles (a listed mesh's are a
+    // surface, a non-manifold one too: a chair's seat where its legs meet it)
     std::vector<int> parent(static_cast<std::size_t>(n));
     std::iota(parent.begin(), parent.end(), 0);
     for (int t = 0; t < count; ++t)
@@ -118,7 +124,7 @@ ClothSurface makeClothSurface(const SceneDesc &scene, const SpringTriangles &tri
         }
     std::vector<std::uint8_t> lattice(std::size_t(n), 0);
     for (std::size_t e = 0; e < trianglesOn.size(); ++e)
-        if (trianglesOn[e] > 2)
+        if (trianglesOn[e] > 2 && !listsTriangles(scene))
             lattice[std::size_t(pieceRoot(parent, edgeEnds[2 * e]))] = 1;
 
     // sheets numbered in the order of their lowest particle

@@ -37,6 +37,11 @@ struct ClothSurface {
     bool empty() const { return triangleSheet.empty(); }
 };
 
+// whether the scene's triangles are those it lists (SceneDesc::triangles, then perhaps none) rather
+// than those its springs span: it lists some, or it has imported meshes, whose surfaces are drawn
+// instead of their lattices' triangles
+bool listsTriangles(const SceneDesc &scene);
+
 // The scene's triangles: those it lists (SceneDesc::triangles), each side's spring looked up, or,
 // when it lists none, those its springs span (findSpringTriangles): one function for the drawing
 // and the collisions

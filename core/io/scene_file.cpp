@@ -21,6 +21,7 @@
 #include "scene_words.h"
 
 #include "core/contacts/solver_names.h"
+#include "core/meshes/mesh_surface.h"
 #include "core/model/validate.h"
 
 #include <QDir>
@@ -247,6 +248,46 @@ void appendString(QByteArray &out, std::string_view text)
         }
     }
     out += '"';
+}
+
+// an imported mesh: its vertices (a particle index, or [particle, weight, ...] pairs) and faces,
+// a few to a line
+void appendMesh(QByteArray &out, const core::MeshDesc &mesh)
+{
+    constexpr int kPerLine = 12;
+    out += "{\"name\": ";
+    appendString(out, mesh.name);
+    out += ", \"source\": ";
+    appendString(out, mesh.source);
+    out += ", \"kind\": ";
+    appendString(out, core::meshKindName(mesh.kind));
+    if (mesh.scale != 1.0 || mesh.zUp || !isPositiveZero(mesh.offset)) {
+        out += ",\n         \"scale\": " + formatNumber(mesh.scale) + ", \"zUp\": " + (mesh.zUp ? "true" : "false") + ", \"offset\": ";
+        appendVector(out, mesh.offset);
+    }
+    out += ",\n         \"vertices\": [";
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+        if (v > 0)
+            out += v % kPerLine == 0 ? ",\n            " : ", ";
+        const int first = mesh.offsets[std::size_t(v)], last = mesh.offsets[std::size_t(v) + 1];
+        if (last - first == 1 && mesh.weights[std::size_t(first)] == 1.0) {
+            out += QByteArray::number(mesh.particles[std::size_t(first)]);
+            continue;
+        }
+        out += '[';
+        for (int k = first; k < last; ++k)
+            out += (k > first ? ", " : "") + QByteArray::number(mesh.particles[std::size_t(k)]) + ", " +
+                   formatNumber(mesh.weights[std::size_t(k)]);
+        out += ']';
+    }
+    out += "],\n         \"faces\": [";
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        if (f > 0)
+            out += f % kPerLine == 0 ? ",\n            " : ", ";
+        const std::array<int, 3> &t = mesh.faces[f];
+        out += '[' + QByteArray::number(t[0]) + ", " + QByteArray::number(t[1]) + ", " + QByteArray::number(t[2]) + ']';
+    }
+    out += "]}";
 }
 
 // "key": [ one item per line ]
@@ -527,6 +568,12 @@ QByteArray sceneToJson(const core::SceneDesc &scene)
         appendList(out, "triangles", scene.triangles, true, [&](const std::array<int, 3> &t) {
             out += '[' + QByteArray::number(t[0]) + ", " + QByteArray::number(t[1]) + ", " + QByteArray::number(t[2]) + ']';
         });
+    }
+    // the imported meshes, only when there are some
+    if (!scene.meshes.empty()) {
+        out.chop(1);
+        out += ",\n";
+        appendList(out, "meshes", scene.meshes, true, [&](const core::MeshDesc &mesh) { appendMesh(out, mesh); });
     }
     out += "}\n";
     return out;

@@ -13,6 +13,7 @@
 #include "scene_words.h"
 
 #include "core/contacts/solver_names.h"
+#include "core/meshes/mesh_surface.h"
 #include "core/model/validate.h"
 
 #include <QJsonValue>
@@ -81,7 +82,9 @@ constexpr std::array kPlaneKeys{"normal"_L1, "offset"_L1, "twoSided"_L1, "fricti
                                 "centre"_L1, "axis"_L1,   "rollingFriction"_L1, "spinningFriction"_L1};
 constexpr std::array kImpulseKeys{"particle"_L1, "other"_L1, "plane"_L1, "normal"_L1, "friction"_L1};
 constexpr std::array kRootKeys{"format"_L1, "version"_L1, "name"_L1,     "settings"_L1,       "particles"_L1,
-                               "springs"_L1, "planes"_L1, "steerable"_L1, "contactImpulses"_L1, "triangles"_L1};
+                               "springs"_L1, "planes"_L1, "steerable"_L1, "contactImpulses"_L1, "triangles"_L1,
+                               "meshes"_L1};
+constexpr std::array kMeshKeys{"name"_L1, "source"_L1, "kind"_L1, "scale"_L1, "zUp"_L1, "offset"_L1, "vertices"_L1, "faces"_L1};
 
 // where a top-level key is in kRootKeys
 std::size_t rootIndex(QLatin1StringView key)
@@ -116,6 +119,10 @@ private:
     bool checkPlane(std::array<Item, kPlaneKeys.size()> &items, qsizetype i);
     bool checkImpulse(std::array<Item, kImpulseKeys.size()> &items, qsizetype i);
     bool readTriangles(JsonToken first);
+    bool readMeshes(JsonToken first);
+    bool readMesh(qsizetype m);
+    bool readMeshVertices(JsonToken first, core::MeshDesc &mesh, const QString &path);
+    bool readMeshFaces(JsonToken first, core::MeshDesc &mesh, const QString &path);
     bool checkHeader();
 
     bool fail(const QString &path, const QString &reason)
@@ -230,6 +237,7 @@ private:
     Section m_steerable;
     Section m_impulses;
     Section m_triangles;
+    Section m_meshes;
     Section m_root;  // the top-level object's own warnings
     Section *m_section = &m_header;
 
@@ -567,6 +575,199 @@ bool SceneTextReader::readTriangles(JsonToken first)
     }
 }
 
+// the imported meshes: an array of objects (docs/scene-format.md, "Meshes")
+bool SceneTextReader::readMeshes(JsonToken first)
+{
+    m_section = &m_meshes;
+    if (first != JsonToken::BeginArray) {
+        Item item;
+        if (!take(first, item))
+            return false;
+        expected([] { return u"meshes"_s; }, u"an array"_s, first);
+        return true;
+    }
+    for (qsizetype m = 0;; ++m) {
+        const JsonToken token = m_in.next();
+        if (token == JsonToken::EndArray)
+            return true;
+        if (m_meshes.failed() || token != JsonToken::BeginObject) {
+            if (!m_in.skipRest(token))
+                return false;
+            if (!m_meshes.failed())
+                expected([m] { return elementPath(u"meshes"_s, m); }, u"an object"_s, token);
+            continue;
+        }
+        if (!readMesh(m))
+            return false;
+    }
+}
+
+// one mesh, its '{' just read: the small members taken as items, the vertices and faces read in place
+bool SceneTextReader::readMesh(qsizetype m)
+{
+    const QString path = elementPath(u"meshes"_s, m);
+    const auto at = [&] { return path; };
+    core::MeshDesc mesh;
+    std::array<Item, kMeshKeys.size()> items;
+    bool hasVertices = false, hasFaces = false;
+    QStringList unknown;
+    for (JsonToken token = m_in.next(); token != JsonToken::EndObject; token = m_in.next()) {
+        if (token != JsonToken::Key)
+            return false;
+        const auto known = std::find_if(kMeshKeys.begin(), kMeshKeys.end(), [&](QLatin1StringView key) { return m_in.isText(key); });
+        const QString unknownKey = known == kMeshKeys.end() ? m_in.text() : QString();
+        const JsonToken value = m_in.next();
+        if (known == kMeshKeys.end()) {
+            unknown += unknownKey;
+            if (!m_in.skipRest(value))
+                return false;
+        } else if (*known == "vertices"_L1) {
+            hasVertices = true;
+            if (!readMeshVertices(value, mesh, memberPath(path, *known)))
+                return false;
+        } else if (*known == "faces"_L1) {
+            hasFaces = true;
+            if (!readMeshFaces(value, mesh, memberPath(path, *known)))
+                return false;
+        } else if (!take(value, items[std::size_t(known - kMeshKeys.begin())])) {
+            return false;
+        }
+    }
+    if (m_meshes.failed())
+        return true;
+    QString name = u"mesh"_s, source, kind;
+    bool zUp = false;
+    if (!member(items[0], at, kMeshKeys[0], Need::Optional, name) || !member(items[1], at, kMeshKeys[1], Need::Optional, source) ||
+        !member(items[2], at, kMeshKeys[2], Need::Required, kind) ||
+        !member(items[3], at, kMeshKeys[3], Need::Optional, mesh.scale) ||
+        !member(items[4], at, kMeshKeys[4], Need::Optional, zUp) ||
+        !member(items[5], at, kMeshKeys[5], Need::Optional, mesh.offset))
+        return true;
+    const std::string kindText = kind.toStdString();
+    const auto named = core::meshKindNamed(kindText);
+    if (!named) {
+        fail(memberPath(path, "kind"_L1), u"unknown mesh kind \""_s + kind + u"\" (known: "_s +
+                                              QString::fromLatin1(core::knownMeshKinds().data(), qsizetype(core::knownMeshKinds().size())) + u")"_s);
+        return true;
+    }
+    if (!hasVertices || !hasFaces) {
+        fail(memberPath(path, hasVertices ? "faces"_L1 : "vertices"_L1), QStringLiteral("missing: this key is required"));
+        return true;
+    }
+    if (!(mesh.scale > 0.0)) {
+        fail(memberPath(path, "scale"_L1), u"must be greater than 0 (got "_s + QString::fromLatin1(formatNumber(mesh.scale)) + u")"_s);
+        return true;
+    }
+    mesh.kind = *named;
+    mesh.zUp = zUp;
+    mesh.name = name.toStdString();
+    mesh.source = source.toStdString();
+    m_scene.meshes.push_back(std::move(mesh));
+    warnUnknownKeys(unknown, path);
+    return true;
+}
+
+// a mesh's vertices: each a particle index, or an array of particle index and weight pairs
+bool SceneTextReader::readMeshVertices(JsonToken first, core::MeshDesc &mesh, const QString &path)
+{
+    if (first != JsonToken::BeginArray) {
+        Item item;
+        if (!take(first, item))
+            return false;
+        expected([&] { return path; }, u"an array"_s, first);
+        return true;
+    }
+    const QString what = u"a particle index or an array of particle index and weight pairs"_s;
+    for (qsizetype v = 0;; ++v) {
+        const JsonToken token = m_in.next();
+        if (token == JsonToken::EndArray)
+            return true;
+        const auto vertexPath = [&] { return elementPath(path, v); };
+        if (m_meshes.failed()) {
+            if (!m_in.skipRest(token))
+                return false;
+            continue;
+        }
+        if (token == JsonToken::Number) {
+            int particle = 0;
+            if (read(token, m_in.number(), vertexPath, particle)) {
+                mesh.particles.push_back(particle);
+                mesh.weights.push_back(1.0);
+                mesh.offsets.push_back(int(mesh.particles.size()));
+            }
+            continue;
+        }
+        if (token != JsonToken::BeginArray) {
+            if (!m_in.skipRest(token))
+                return false;
+            expected(vertexPath, what, token);
+            continue;
+        }
+        qsizetype count = 0;
+        for (JsonToken inner = m_in.next(); inner != JsonToken::EndArray; inner = m_in.next(), ++count) {
+            if (m_meshes.failed() || inner != JsonToken::Number) {
+                if (!m_in.skipRest(inner))
+                    return false;
+                if (!m_meshes.failed())
+                    expected([&] { return elementPath(vertexPath(), count); }, u"a number"_s, inner);
+                continue;
+            }
+            if (count % 2 == 0) {
+                int particle = 0;
+                if (read(inner, m_in.number(), [&] { return elementPath(vertexPath(), count); }, particle))
+                    mesh.particles.push_back(particle);
+            } else {
+                mesh.weights.push_back(m_in.number());
+            }
+        }
+        if (m_meshes.failed())
+            continue;
+        if (count == 0 || count % 2 != 0 || count > 2 * core::kMostMeshBindings) {
+            fail(vertexPath(), u"expected "_s + what + u" (1 to %1 pairs), got %2 numbers"_s.arg(core::kMostMeshBindings).arg(count));
+            continue;
+        }
+        mesh.offsets.push_back(int(mesh.particles.size()));
+    }
+}
+
+// a mesh's faces: arrays of three vertex indices
+bool SceneTextReader::readMeshFaces(JsonToken first, core::MeshDesc &mesh, const QString &path)
+{
+    if (first != JsonToken::BeginArray) {
+        Item item;
+        if (!take(first, item))
+            return false;
+        expected([&] { return path; }, u"an array"_s, first);
+        return true;
+    }
+    for (qsizetype i = 0;; ++i) {
+        const JsonToken token = m_in.next();
+        if (token == JsonToken::EndArray)
+            return true;
+        Item item;
+        if (!take(token, item))
+            return false;
+        if (m_meshes.failed())
+            continue;
+        const auto facePath = [&] { return elementPath(path, i); };
+        if (item.kind != JsonToken::BeginArray) {
+            expected(facePath, u"an array of 3 vertex indices"_s, item.kind);
+            continue;
+        }
+        if (item.size != 3) {
+            fail(facePath(), u"expected an array of 3 vertex indices, got "_s + QString::number(item.size));
+            continue;
+        }
+        std::array<int, 3> corners{};
+        bool ok = true;
+        for (int c = 0; c < 3 && ok; ++c)
+            ok = read(item.itemKinds[std::size_t(c)], item.items[std::size_t(c)], [&] { return elementPath(facePath(), c); },
+                      corners[std::size_t(c)]);
+        if (ok)
+            mesh.faces.push_back(corners);
+    }
+}
+
 bool SceneTextReader::read()
 {
     if (m_in.next() != JsonToken::BeginObject)
@@ -590,7 +791,7 @@ bool SceneTextReader::read()
         bool ok = true;
         // a list met a second time is only read through: the key that comes twice is the message
         if (again && (key == "settings"_L1 || key == "particles"_L1 || key == "springs"_L1 || key == "planes"_L1 ||
-                      key == "contactImpulses"_L1 || key == "triangles"_L1)) {
+                      key == "contactImpulses"_L1 || key == "triangles"_L1 || key == "meshes"_L1)) {
             ok = m_in.skipRest(first);
         } else if (key == "settings"_L1) {
             ok = readSettings(first);
@@ -615,6 +816,8 @@ bool SceneTextReader::read()
         } else if (key == "triangles"_L1) {
             m_scene.triangles.reserve(std::size_t(m_lengths.value(key, 0)));
             ok = readTriangles(first);
+        } else if (key == "meshes"_L1) {
+            ok = readMeshes(first);
         } else {
             // format, version, name, steerable: small values; the last of two is the one kept, as
             // in Qt's objects
@@ -693,7 +896,7 @@ LoadResult SceneTextReader::result()
             result.warnings += m_source + u": "_s + QString::number(moreWarnings) + u" more unknown keys, ignored"_s;
     };
     for (const Section *section :
-         {&m_settings, &m_particles, &m_springs, &m_planes, &m_steerable, &m_impulses, &m_triangles, &m_root}) {
+         {&m_settings, &m_particles, &m_springs, &m_planes, &m_steerable, &m_impulses, &m_triangles, &m_meshes, &m_root}) {
         result.warnings += section->warnings;
         moreWarnings += section->moreWarnings;
         if (section->failed()) {

@@ -171,7 +171,7 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *b
     };
     if (sameSprings && (scene.triangles.empty() ? true : listedAsBefore()))
         model->triangles = before->triangles;
-    else if (!scene.triangles.empty())
+    else if (listsTriangles(scene))
         model->triangles = std::make_shared<const SpringTriangles>(sceneTriangles(scene));
     else if (plan.springs)
         model->triangles = std::make_shared<const SpringTriangles>(sceneTriangles(scene));
@@ -183,6 +183,9 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *b
             plan.triangleCollisions = true;
         }
     }
+
+    if (EmbeddedSurface embedded = makeEmbeddedSurface(scene); !embedded.empty())
+        model->embedded = std::make_shared<const EmbeddedSurface>(std::move(embedded));
 
     // auto substeps: as many as the stability limit at the initial state asks, and no fewer than the
     // scene's own

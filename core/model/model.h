@@ -4,6 +4,7 @@
 // needs; a pass the plan leaves out is never run.
 
 #include "core/contacts/cloth_surface.h"
+#include "core/meshes/embedded_surface.h"
 #include "core/contacts/colliders.h"
 #include "core/model/scene.h"
 #include "core/springs/spring_layout.h"
@@ -110,6 +111,9 @@ struct Model {
     // the triangles that collide, in sheets with their thickness (cloth_surface.h); set while the
     // plan has triangle collisions
     std::shared_ptr<const ClothSurface> surface;
+    // the soft bodies' imported surfaces, carried by their lattices, for drawing them shaded
+    // (embedded_surface.h); null when the scene has none
+    std::shared_ptr<const EmbeddedSurface> embedded;
 
     // planes n·p = offset, unit normals
     Eigen::Matrix3Xd planeNormal;

@@ -130,6 +130,38 @@ struct ContactImpulse {
     bool operator<(const ContactImpulse &other) const { return i != other.i ? i < other.i : j < other.j; }
 };
 
+// what a mesh brought in from a file became (docs/scene-format.md, "Meshes")
+enum class MeshKind {
+    Cloth,     // a particle per (welded) vertex, springs along its edges and across its folds
+    Soft,      // a lattice of particles filling its inside; the surface rides on the lattice
+    Collider,  // pinned particles at its vertices, its triangles a surface others collide with
+};
+
+// a surface mesh the scene carries: drawn shaded, and what Export Animation writes. Its vertices
+// are those of the file it came from, in the file's order (split vertices included), each a
+// weighted sum of particles' positions, so that a point cache of it applies to that very file
+struct MeshDesc {
+    std::string name;    // shown in the editor and given to exported files
+    std::string source;  // the file it was imported from, as given (for the user: never read)
+    MeshKind kind = MeshKind::Cloth;
+    // vertex v is the sum of weights[k] × the position of particles[k] for k in
+    // [offsets[v], offsets[v + 1]): one particle of weight 1 for a cloth's or a collider's vertex,
+    // the eight corners of its lattice cell for a soft body's
+    std::vector<int> offsets{0};
+    std::vector<int> particles;
+    std::vector<double> weights;
+    std::vector<std::array<int, 3>> faces;  // three vertex indices each, counter-clockwise outside
+    // how the file's coordinates were placed in the scene: scene = turn(zUp) (scale × file) + offset,
+    // where turn maps a z-up file's (x, y, z) to (x, z, -y); the exports undo it, so that what they
+    // write lies where the file's own vertices do
+    double scale = 1.0;
+    bool zUp = false;
+    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+
+    int vertexCount() const { return static_cast<int>(offsets.size()) - 1; }
+    bool operator==(const MeshDesc &) const = default;
+};
+
 struct SceneDesc {
     std::string name;
     Settings settings;
@@ -141,6 +173,7 @@ struct SceneDesc {
     // the triangles of its sheets, three particle indices each, for drawing and for the triangle
     // collisions; empty: those its springs span (core/contacts/cloth_surface.h, sceneTriangles)
     std::vector<std::array<int, 3>> triangles;
+    std::vector<MeshDesc> meshes;  // the surfaces imported from mesh files
 
     bool operator==(const SceneDesc &) const = default;
 };

@@ -55,6 +55,10 @@ std::shared_ptr<const Snapshot> makeSnapshot(const Model &model, const State &st
     snapshot->springBroken = state.springBroken;
     snapshot->breakCount = state.breaks.size();
     snapshot->triangles = model.triangles;
+    if (model.embedded) {
+        snapshot->embedded = model.embedded;
+        embeddedPositions(*model.embedded, state.position, snapshot->embeddedPositions);
+    }
 
     // diagnostics
     snapshot->energies = energies(model, state);

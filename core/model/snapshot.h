@@ -33,6 +33,10 @@ struct Snapshot {
     std::uint64_t breakCount = 0;  // springs broken so far
     // the spring mesh's triangles (the model's, shared); null or empty when it has none
     std::shared_ptr<const SpringTriangles> triangles;
+    // the soft bodies' surfaces (the model's, shared) and their vertices, xyz each, m; null and
+    // empty when the scene has none
+    std::shared_ptr<const EmbeddedSurface> embedded;
+    std::vector<float> embeddedPositions;
 
     Energies energies;
     Eigen::Vector3d momentum = Eigen::Vector3d::Zero();

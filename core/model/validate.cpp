@@ -2,6 +2,7 @@
 
 #include "core/model/parameters.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -151,6 +152,12 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
             return SceneProblem{"triangles[" + std::to_string(i) + "]",
                                 "names a particle twice: a triangle needs three different particles"};
     }
+    // the imported surfaces: each vertex a weighted sum of existing particles, faces of its vertices
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m)
+        if (auto meshProblem = findMeshProblem(scene.meshes[m], scene.particles.size()); meshProblem) {
+            meshProblem->path = "meshes[" + std::to_string(m) + "]" + (meshProblem->path.empty() ? "" : "." + meshProblem->path);
+            return meshProblem;
+        }
     // the particle the arrow keys push
     if (scene.steerable < -1 || scene.steerable >= count)
         return SceneProblem{"steerable", "particle index " + std::to_string(scene.steerable) +
@@ -159,6 +166,49 @@ std::optional<SceneProblem> findProblem(const SceneDesc &scene)
 
     // the contact impulses a saved run starts from
     return findContactImpulseProblem(scene.contactImpulses, scene.particles.size(), scene.planes.size());
+}
+
+std::optional<SceneProblem> findMeshProblem(const MeshDesc &mesh, std::size_t particles)
+{
+    const auto count = static_cast<long long>(particles);
+    const std::size_t bindings = mesh.particles.size();
+    if (mesh.offsets.empty() || mesh.offsets.front() != 0 || mesh.weights.size() != bindings ||
+        std::size_t(mesh.offsets.back()) != bindings)
+        return SceneProblem{"vertices", "the vertices' particles and weights do not match (a damaged mesh)"};
+    const int vertices = mesh.vertexCount();
+    for (int v = 0; v < vertices; ++v) {
+        const std::string path = "vertices[" + std::to_string(v) + "]";
+        const int first = mesh.offsets[std::size_t(v)], last = mesh.offsets[std::size_t(v) + 1];
+        if (last - first < 1 || last - first > kMostMeshBindings)
+            return SceneProblem{path, "needs 1 to " + std::to_string(kMostMeshBindings) + " particles (got " +
+                                          std::to_string(std::max(0, last - first)) + ")"};
+        double sum = 0.0;
+        for (int k = first; k < last; ++k) {
+            const int p = mesh.particles[std::size_t(k)];
+            const double w = mesh.weights[std::size_t(k)];
+            if (p < 0 || p >= count)
+                return SceneProblem{path, "particle index " + std::to_string(p) + " is out of range (the scene has " +
+                                              std::to_string(count) + " particles)"};
+            if (!std::isfinite(w))
+                return SceneProblem{path, "a weight is not a finite number"};
+            sum += w;
+        }
+        // the weights sum to 1, so that the vertex moves with its particles when they all move alike
+        if (!(std::abs(sum - 1.0) <= 1e-6))
+            return SceneProblem{path, "its weights must sum to 1 (got " + std::to_string(sum) + ")"};
+    }
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const std::array<int, 3> &t = mesh.faces[f];
+        for (std::size_t corner = 0; corner < 3; ++corner)
+            if (t[corner] < 0 || t[corner] >= vertices)
+                return SceneProblem{"faces[" + std::to_string(f) + "][" + std::to_string(corner) + "]",
+                                    "vertex index " + std::to_string(t[corner]) + " is out of range (the mesh has " +
+                                        std::to_string(vertices) + " vertices)"};
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+            return SceneProblem{"faces[" + std::to_string(f) + "]",
+                                "names a vertex twice: a face needs three different vertices"};
+    }
+    return std::nullopt;
 }
 
 std::optional<SceneProblem> findContactImpulseProblem(const std::vector<ContactImpulse> &impulses, std::size_t particles,

@@ -27,6 +27,13 @@ std::optional<SceneProblem> findParticleProblem(const SceneDesc &scene, std::siz
 std::optional<SceneProblem> findContactImpulseProblem(const std::vector<ContactImpulse> &impulses, std::size_t particles,
                                                       std::size_t planes);
 
+// the most particles a mesh's vertex rides on: a lattice cell's eight corners
+inline constexpr int kMostMeshBindings = 8;
+
+// the first problem with one imported mesh in a scene of that many particles; paths relative to
+// the mesh ("vertices[4]", "faces[2][1]")
+std::optional<SceneProblem> findMeshProblem(const MeshDesc &mesh, std::size_t particles);
+
 // planes are stored with unit normals; this makes one so without disturbing one that already is
 // (so that loading a saved file gives back the same bits)
 Eigen::Vector3d unitNormal(const Eigen::Vector3d &normal);

@@ -6,9 +6,12 @@
 #include "ui/viewport/render_data.h"
 #include "ui/viewport/surface_data.h"
 
+#include "core/meshes/mesh_import.h"
 #include "core/model/generators.h"
 #include "core/model/model.h"
 #include "core/model/state.h"
+
+#include "../test_meshes.h"
 
 #include <QtTest>
 
@@ -43,6 +46,7 @@ private slots:
     void keyNoticesTrianglesAndBreaks();
     void hiddenParticlesHaveNoRadiusUnlessPicked();
     void hiddenSpringsAreLeftOutUnlessHighlighted();
+    void softBodyIsDrawnByItsSurface();
 };
 
 void TestSurfaceData::wholeClothIsDrawnAndCoversEverything()
@@ -86,7 +90,7 @@ void TestSurfaceData::normalsOfALevelClothPointUp()
     auto s = clothSnapshot();
     const ui::SurfaceDraw draw = ui::packSurface(*s);
     std::vector<float> normals{7.0f};
-    ui::surfaceNormals(*s, draw.indices, normals);
+    ui::surfaceNormals(s->positions, draw.indices, normals);
     QCOMPARE(normals.size(), std::size_t(3 * 9));
     for (int i = 0; i < 9; ++i) {
         QVERIFY(std::abs(normals[std::size_t(3 * i)]) < 1e-6f);
@@ -96,13 +100,13 @@ void TestSurfaceData::normalsOfALevelClothPointUp()
 
     // lift the middle: the normal of the particle beside it leans away, and stays of unit length
     s->positions[3 * 4 + 1] += 0.05f;
-    ui::surfaceNormals(*s, draw.indices, normals);
+    ui::surfaceNormals(s->positions, draw.indices, normals);
     const float x = normals[3], y = normals[4], z = normals[5];
     QVERIFY(std::abs(std::sqrt(x * x + y * y + z * z) - 1.0f) < 1e-5f);
     QVERIFY(y < 1.0f && y > 0.5f);
 
     // no triangles: no normals
-    ui::surfaceNormals(*s, {}, normals);
+    ui::surfaceNormals(s->positions, {}, normals);
     QVERIFY(std::all_of(normals.begin(), normals.end(), [](float v) { return v == 0.0f; }));
 }
 
@@ -176,6 +180,46 @@ void TestSurfaceData::hiddenSpringsAreLeftOutUnlessHighlighted()
     QCOMPARE(line(hoverFirst ? 1 : 2).second, ui::kHoverColour);
     QCOMPARE(line(hoverFirst ? 2 : 1).first, endA(7));
     QCOMPARE(line(hoverFirst ? 2 : 1).second, ui::kSelectedColour);
+}
+
+void TestSurfaceData::softBodyIsDrawnByItsSurface()
+{
+    // an icosphere of radius 0.5 filled as a soft body: its 320 faces are drawn over vertices that
+    // follow the particles, on the sphere, with normals pointing out; its lattice is covered
+    const core::TriangleMesh sphere = test::icosphere(2, 0.5);
+    core::SceneDesc scene;
+    core::MeshImportOptions options;
+    options.kind = core::MeshKind::Soft;
+    options.spacing = 0.2;
+    QVERIFY(core::addMeshToScene(scene, sphere, options).ok());
+    const auto model = core::compileModel(scene);
+    const auto s = core::makeSnapshot(*model, core::makeState(*model, scene));
+    const ui::SurfaceDraw draw = ui::packSurface(*s);
+    const int n = s->particleCount();
+    QCOMPARE(draw.triangleCount(), int(sphere.faces.size()));
+    QCOMPARE(draw.extraVertices, int(sphere.vertices.size()));
+    QVERIFY(std::all_of(draw.indices.begin(), draw.indices.end(), [n](std::uint32_t i) { return i >= std::uint32_t(n); }));
+    // the particles that carry the surface are under it (those deeper inside are hidden by it)
+    for (int p : s->embedded->particles)
+        QCOMPARE(draw.coveredParticles[std::size_t(p)], std::uint8_t(1));
+
+    std::vector<float> positions, normals;
+    ui::surfacePositions(*s, draw, positions);
+    QCOMPARE(positions.size(), 3 * std::size_t(n + draw.extraVertices));
+    ui::surfaceNormals(positions, draw.indices, normals);
+    for (std::size_t v = 0; v < sphere.vertices.size(); ++v) {
+        const std::size_t at = 3 * (std::size_t(n) + v);
+        const QVector3D x(positions[at], positions[at + 1], positions[at + 2]);
+        const QVector3D normal(normals[at], normals[at + 1], normals[at + 2]);
+        QVERIFY(std::abs(x.length() - 0.5f) < 1e-5f);  // the file's vertex, carried exactly at rest
+        QVERIFY(QVector3D::dotProduct(normal, x.normalized()) > 0.9f);
+    }
+
+    // the body moved: its surface with it
+    core::State state = core::makeState(*model, scene);
+    state.position.row(1).array() += 2.0;
+    const auto moved = core::makeSnapshot(*model, state);
+    QCOMPARE(moved->embeddedPositions[1], s->embeddedPositions[1] + 2.0f);
 }
 
 QTEST_APPLESS_MAIN(TestSurfaceData)

@@ -154,6 +154,19 @@ void removeItems(core::SceneDesc &scene, const Selection &selection)
     }
     scene.triangles = std::move(triangles);
 
+    // an imported mesh stays whole or goes: its vertices are the file's, which an export must keep
+    std::vector<core::MeshDesc> meshes;
+    for (core::MeshDesc mesh : scene.meshes) {
+        bool whole = true;
+        for (int &p : mesh.particles) {
+            p = inRange(scene, p) ? remap[std::size_t(p)] : -1;
+            whole = whole && p >= 0;
+        }
+        if (whole)
+            meshes.push_back(std::move(mesh));
+    }
+    scene.meshes = std::move(meshes);
+
     if (scene.steerable >= 0)
         scene.steerable = inRange(scene, scene.steerable) ? remap[std::size_t(scene.steerable)] : -1;
     scene.particles = std::move(kept);
@@ -211,8 +224,8 @@ Selection pasteFragment(core::SceneDesc &scene, const Fragment &fragment, const 
     const int base = static_cast<int>(scene.particles.size());
     // a scene that lists triangles keeps listing all of them: the scene's own (those its springs
     // make, when it listed none) and the fragment's
-    if (!scene.triangles.empty() || !fragment.triangles.empty()) {
-        if (scene.triangles.empty())
+    if (core::listsTriangles(scene) || !fragment.triangles.empty()) {
+        if (!core::listsTriangles(scene))
             scene.triangles = core::listedTriangles(scene);
         std::vector<std::array<int, 3>> added = fragment.triangles;
         if (added.empty()) {

@@ -65,15 +65,20 @@ ExportDialog::ExportDialog(Kind kind, BrowseFunction browse, QWidget *parent)
     auto *form = new QFormLayout;
 
     // how long, and how often: a sequence's frame rate, a trace's every K steps
-    if (kind == Kind::Sequence) {
-        setWindowTitle(tr("Export Image Sequence"));
-        m_fps = numberBox("exportFps", 0.001, kMaxFps, defaults.fps, tr(" frames/s"), this);
+    const MeshAnimationExport animationDefaults;
+    if (kind == Kind::Sequence || kind == Kind::Animation) {
+        setWindowTitle(kind == Kind::Sequence ? tr("Export Image Sequence") : tr("Export Animation"));
+        m_fps = numberBox("exportFps", 0.001, kMaxFps, kind == Kind::Sequence ? defaults.fps : animationDefaults.fps,
+                          tr(" frames/s"), this);
         m_fps->setToolTip(tr("Frames per simulated second; frame k shows the first step at or after k / rate"));
         form->addRow(tr("Frame rate"), m_fps);
     }
-    if (kind == Kind::Sequence || kind == Kind::Trace) {
+    if (kind != Kind::Image) {
         m_duration = numberBox("exportDuration", 0.0, kMaxDuration,
-                               kind == Kind::Trace ? TraceExport{}.duration : defaults.duration, tr(" s"), this);
+                               kind == Kind::Trace       ? TraceExport{}.duration
+                               : kind == Kind::Animation ? animationDefaults.duration
+                                                         : defaults.duration,
+                               tr(" s"), this);
         m_duration->setToolTip(tr("Simulated time to run from the current state"));
         form->addRow(tr("Duration"), m_duration);
     }
@@ -88,7 +93,7 @@ ExportDialog::ExportDialog(Kind kind, BrowseFunction browse, QWidget *parent)
     }
 
     // the picture's size, for an image and a sequence
-    if (kind != Kind::Trace) {
+    if (kind == Kind::Image || kind == Kind::Sequence) {
         if (kind == Kind::Image)
             setWindowTitle(tr("Export Image"));
         m_width = sideBox("exportWidth", this);
@@ -108,7 +113,30 @@ ExportDialog::ExportDialog(Kind kind, BrowseFunction browse, QWidget *parent)
     auto *where = new QHBoxLayout;
     where->addWidget(m_path, 1);
     where->addWidget(browseButton);
-    form->addRow(kind == Kind::Sequence ? tr("Folder") : tr("File"), where);
+    form->addRow(kind == Kind::Sequence ? tr("Folder") : kind == Kind::Animation ? tr("PC2 cache") : tr("File"), where);
+
+    // an animation's other outputs, each optional
+    if (kind == Kind::Animation) {
+        m_path->setToolTip(tr("The point cache Blender's Mesh Cache modifier reads; the OBJ of its first frame is "
+                              "written beside it. Empty: no cache"));
+        m_objFolder = new QLineEdit(this);
+        m_objFolder->setObjectName(QStringLiteral("exportObjFolder"));
+        m_objFolder->setToolTip(tr("A folder for an OBJ a frame (NAME_00000.obj on); empty: none"));
+        form->addRow(tr("OBJ frames folder"), m_objFolder);
+        m_meshPath = new QLineEdit(this);
+        m_meshPath->setObjectName(QStringLiteral("exportMeshPath"));
+        m_meshPath->setToolTip(tr("The last frame, in the format its extension names (.glb, .gltf, .ply, .stl, .obj, "
+                                  "...); empty: none"));
+        form->addRow(tr("Last frame as"), m_meshPath);
+        m_fileSpace = new QCheckBox(tr("Where the imported files have their vertices"), this);
+        m_fileSpace->setObjectName(QStringLiteral("exportFileSpace"));
+        m_fileSpace->setChecked(animationDefaults.fileSpace);
+        m_fileSpace->setToolTip(tr("On: each imported mesh in its own file's coordinates (its scale, up axis and "
+                                   "placement undone), so the cache fits the file. Off: in the scene's metres, y up"));
+        form->addRow(QString(), m_fileSpace);
+        for (QLineEdit *edit : {m_objFolder, m_meshPath})
+            connect(edit, &QLineEdit::textChanged, this, &ExportDialog::updateSummary);
+    }
 
     // the MP4, offered where ffmpeg is installed
     if (kind == Kind::Sequence) {
@@ -202,6 +230,37 @@ SequenceExport ExportDialog::sequence() const
     return settings;
 }
 
+MeshAnimationExport ExportDialog::animation() const
+{
+    MeshAnimationExport settings;
+    settings.pc2Path = m_path->text().trimmed();
+    if (m_objFolder) {
+        settings.objFolder = m_objFolder->text().trimmed();
+        settings.meshPath = m_meshPath->text().trimmed();
+        settings.fps = m_fps->value();
+        settings.duration = m_duration->value();
+        settings.fileSpace = m_fileSpace->isChecked();
+    }
+    return settings;
+}
+
+void ExportDialog::setSurfaces(const QString &surfaces)
+{
+    m_surfaces = surfaces;
+    updateSummary();
+}
+
+void ExportDialog::setAnimation(const MeshAnimationExport &settings)
+{
+    if (!m_objFolder)
+        return;
+    m_objFolder->setText(settings.objFolder);
+    m_meshPath->setText(settings.meshPath);
+    m_fps->setValue(settings.fps);
+    m_duration->setValue(settings.duration);
+    m_fileSpace->setChecked(settings.fileSpace);
+}
+
 TraceExport ExportDialog::trace() const
 {
     TraceExport settings;
@@ -224,7 +283,10 @@ void ExportDialog::browse()
 
 void ExportDialog::updateSummary()
 {
-    m_buttons->button(QDialogButtonBox::Ok)->setEnabled(!m_path->text().trimmed().isEmpty());
+    const bool somewhere = !m_path->text().trimmed().isEmpty() ||
+                           (m_objFolder && (!m_objFolder->text().trimmed().isEmpty() ||
+                                            !m_meshPath->text().trimmed().isEmpty()));
+    m_buttons->button(QDialogButtonBox::Ok)->setEnabled(somewhere);
     // a side typed out of range: said, and nothing exported until it is mended
     if (m_width) {
         for (const auto &[box, name] : {std::pair{m_width, tr("Width")}, std::pair{m_height, tr("Height")}})
@@ -261,6 +323,20 @@ void ExportDialog::updateSummary()
                               "from the current state, every %2 steps (floats, as the view has them).")
                                .arg(steps)
                                .arg(m_every->value()));
+        break;
+    }
+    case Kind::Animation: {
+        const int frames = sequenceFrameCount(m_fps->value(), m_duration->value());
+        m_summary->setText(m_surfaces.isEmpty()
+                               ? tr("The scene has no surface to export: import a mesh, or make a cloth.")
+                               : tr("%1 frames of %2, run from the current state; frame k holds the first step at "
+                                    "or after k / %3 s. Frames are written as the run goes, never held. Cancel "
+                                    "stops after the frame being written and keeps those written.")
+                                     .arg(frames)
+                                     .arg(m_surfaces)
+                                     .arg(m_fps->value(), 0, 'g', 6));
+        if (m_surfaces.isEmpty())
+            m_buttons->button(QDialogButtonBox::Ok)->setEnabled(false);
         break;
     }
     }

@@ -1,7 +1,8 @@
 #pragma once
 // ExportDialog: File › Export's small dialog, for an image (width, height, file), an image sequence
 // (frame rate, duration, width, height, folder, and an MP4 where ffmpeg is installed, else a
-// clear note that it is not) or a trace (duration, every K steps, file). Browse asks the window
+// clear note that it is not), a trace (duration, every K steps, file) or an animation (frame
+// rate, duration, a PC2 file, a folder of OBJ frames, a last-frame mesh, the files' coordinates). Browse asks the window
 // for a path, through the same hook as every file dialog, so tests answer it without a modal dialog.
 
 #include "export_settings.h"
@@ -42,6 +43,11 @@ public:
     ImageExport image() const;
     SequenceExport sequence() const;
     TraceExport trace() const;
+    MeshAnimationExport animation() const;
+    // the surfaces an animation writes and their vertices, for its summary ("flag, 3 402 vertices")
+    void setSurfaces(const QString &surfaces);
+    // an animation's other outputs, shown as they were last time
+    void setAnimation(const MeshAnimationExport &settings);
 
 private:
     void browse();
@@ -58,6 +64,10 @@ private:
     QSpinBox *m_every = nullptr;
     QLineEdit *m_path = nullptr;
     QCheckBox *m_video = nullptr;
+    QLineEdit *m_objFolder = nullptr;   // an animation's OBJ frames
+    QLineEdit *m_meshPath = nullptr;    // and its last frame
+    QCheckBox *m_fileSpace = nullptr;
+    QString m_surfaces;
     QLabel *m_ffmpegNote = nullptr;
     QLabel *m_summary = nullptr;
     QDialogButtonBox *m_buttons = nullptr;

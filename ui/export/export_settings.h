@@ -6,7 +6,7 @@
 
 namespace ui {
 
-enum class ExportKind { Image, Sequence, Trace };
+enum class ExportKind { Image, Sequence, Trace, Animation };
 
 // the view as a PNG of any size (device pixels)
 struct ImageExport {
@@ -28,6 +28,18 @@ struct TraceExport {
     QString path;
     double duration = 1.0;  // s of simulated time: round(duration / time step) steps
     int every = 1;          // a set of rows every K steps, the first included
+};
+
+// File › Export Animation: the deforming surfaces (imported meshes, or the scene's sheet) from where
+// the run is, as a PC2 point cache with the OBJ of its first frame beside it, an OBJ a frame, and
+// the last frame in a format of its extension's (core/io/animation_export.h); any may be left out
+struct MeshAnimationExport {
+    QString pc2Path;
+    QString objFolder;
+    QString meshPath;
+    double fps = 24.0;      // frames per simulated second
+    double duration = 5.0;  // s of simulated time
+    bool fileSpace = true;  // where the imported files have their vertices, else the scene's
 };
 
 }  // namespace ui

@@ -10,8 +10,10 @@
 #include "ui/simulation/simulation_controller.h"
 #include "ui/viewport/viewport.h"
 
+#include "core/io/animation_export.h"
 #include "core/io/file_identity.h"
 #include "core/io/trace_writer.h"
+#include "core/meshes/mesh_surface.h"
 #include "core/model/snapshot.h"
 
 #include <QAction>
@@ -68,6 +70,10 @@ Exporter::Exporter(SceneDocument &document, SimulationController &controller, Vi
 
 void Exporter::addMenu(QMenu *file)
 {
+    QAction *animation = file->addAction(tr("Export &Animation..."), this, [this] { showDialog(ExportKind::Animation); });
+    animation->setObjectName(QStringLiteral("actionExportAnimation"));
+    animation->setStatusTip(tr("Run on from here and save the moving surfaces for Blender: a PC2 point cache, OBJ "
+                               "frames, a last frame as glTF, PLY or STL"));
     QMenu *menu = file->addMenu(tr("E&xport"));
     menu->setObjectName(QStringLiteral("exportMenu"));
     QAction *image = menu->addAction(tr("&Image..."), this, [this] { showDialog(ExportKind::Image); });
@@ -103,6 +109,9 @@ void Exporter::showDialog(ExportKind kind)
             return m_prompts.chooseFile(Prompts::FileDialogMode::Folder, tr("Folder for the frames"), current);
         case ExportKind::Trace:
             return m_prompts.chooseFile(Prompts::FileDialogMode::Save, tr("Export trace"), current, tr("CSV files (*.csv)"));
+        case ExportKind::Animation:
+            return m_prompts.chooseFile(Prompts::FileDialogMode::Save, tr("Export animation"), current,
+                                        tr("PC2 point caches (*.pc2)"));
         }
         return QString();
     };
@@ -117,9 +126,17 @@ void Exporter::showDialog(ExportKind kind)
     dialog->setTimeStep(m_document.scene().settings.timeStep);
     const QString &last = m_lastPath[std::size_t(kind)];
     dialog->setPath(!last.isEmpty() ? last
-                    : stem + (kind == ExportKind::Image    ? QStringLiteral(".png")
-                              : kind == ExportKind::Trace ? QStringLiteral(".csv")
-                                                          : QStringLiteral("-frames")));
+                    : stem + (kind == ExportKind::Image       ? QStringLiteral(".png")
+                              : kind == ExportKind::Trace     ? QStringLiteral(".csv")
+                              : kind == ExportKind::Animation ? QStringLiteral(".pc2")
+                                                              : QStringLiteral("-frames")));
+    if (kind == ExportKind::Animation) {
+        dialog->setAnimation(m_lastAnimation);
+        QStringList surfaces;
+        for (const core::MeshDesc &mesh : core::exportedMeshes(m_document.scene()))
+            surfaces << tr("%1 (%n vertices)", nullptr, mesh.vertexCount()).arg(QString::fromStdString(mesh.name));
+        dialog->setSurfaces(surfaces.join(QStringLiteral(", ")));
+    }
 
     // shown without a nested event loop; what was asked for starts when it is accepted
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
@@ -138,6 +155,11 @@ void Exporter::showDialog(ExportKind kind)
         case ExportKind::Trace:
             m_lastPath[std::size_t(ExportKind::Trace)] = dialog->trace().path;
             ok = startTraceExport(dialog->trace(), &error);
+            break;
+        case ExportKind::Animation:
+            m_lastAnimation = dialog->animation();
+            m_lastPath[std::size_t(ExportKind::Animation)] = m_lastAnimation.pc2Path;
+            ok = startAnimationExport(m_lastAnimation, &error);
             break;
         }
         if (!ok && !error.isEmpty())
@@ -259,6 +281,60 @@ bool Exporter::startTraceExport(const TraceExport &settings, QString *error)
         *error = trace->close();
         return tr("%n row(s) of step,time,particle,x,y,z,vx,vy,vz in %1", nullptr, int(trace->rowCount()))
             .arg(nativePath(path));
+    });
+}
+
+bool Exporter::startAnimationExport(const MeshAnimationExport &settings, QString *error)
+{
+    const QString title = tr("Export animation");
+    if (isExporting())
+        return failWith(error, tr("%1: an export is running already").arg(title));
+    const core::SceneDesc &scene = m_document.scene();
+    const double timeStep = scene.settings.timeStep;
+    const double steps = std::round(settings.duration / timeStep);
+    if (!(settings.duration >= 0.0) || !(steps <= double(std::numeric_limits<int>::max())))
+        return failWith(error, tr("%1: %2 s at a time step of %3 s is not a duration that can be run")
+                                   .arg(title)
+                                   .arg(settings.duration)
+                                   .arg(timeStep));
+    for (const QString &path : {settings.pc2Path, settings.meshPath})
+        if (!path.isEmpty() && isSceneFile(path, m_document))
+            return failWith(error, tr("%1: %2 is the open scene's file, %3; export to another file")
+                                       .arg(title, nativePath(path), nativePath(m_document.filePath())));
+
+    // the outputs opened (and checked against the scene) before the run moves
+    io::ExportOptions options;
+    options.pc2Path = settings.pc2Path;
+    options.objFolder = settings.objFolder;
+    options.meshPath = settings.meshPath;
+    options.fps = settings.fps;
+    options.space = settings.fileSpace ? core::MeshSpace::File : core::MeshSpace::Scene;
+    auto exported = std::make_shared<io::AnimationExport>();
+    if (const QString failure = exported->open(options, scene, timeStep, std::uint64_t(steps)); !failure.isEmpty())
+        return failWith(error, tr("%1: %2").arg(title, failure));
+    auto *run = new ExportRun(
+        m_controller, exported->frameSteps(),
+        [exported, positions = std::make_shared<Eigen::Matrix3Xd>()](
+            const std::shared_ptr<const core::Snapshot> &snapshot, int index) {
+            // the view's floats are what the cache stores (float32) and what the user saw
+            const int n = snapshot->particleCount();
+            positions->resize(3, n);
+            for (int i = 0; i < n; ++i)
+                for (int a = 0; a < 3; ++a)
+                    (*positions)(a, i) = double(snapshot->positions[3 * std::size_t(i) + std::size_t(a)]);
+            return exported->writeDue(exported->frameSteps()[std::size_t(index)], *positions);
+        },
+        this);
+    return begin(run, tr("Writing the animation..."), [exported](int, QString *failure) {
+        // a cancelled export keeps the frames written, in complete files
+        *failure = exported->finish();
+        const QStringList &files = exported->files();
+        return tr("%n frame(s) in ", nullptr, exported->framesWritten()) +
+               (files.isEmpty()       ? tr("no file")
+                : files.size() == 1 ? nativePath(files.first())
+                                    : tr("%1 files, from %2 to %3")
+                                          .arg(files.size())
+                                          .arg(nativePath(files.first()), nativePath(files.last())));
     });
 }
 

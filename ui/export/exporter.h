@@ -1,6 +1,7 @@
 #pragma once
 // Exporter: File › Export. The view as a PNG of any size (an offscreen framebuffer), an image
-// sequence of the run with an MP4 of it where ffmpeg is installed, and the run's trace as CSV.
+// sequence of the run with an MP4 of it where ffmpeg is installed, the run's trace as CSV, and
+// (File › Export Animation) the deforming surfaces for Blender: a PC2 cache and OBJ frames.
 // The sequence and the trace step the worker's run from where it is (ExportRun), with a progress
 // dialog over the window that can cancel them; the run is left paused at the last step exported.
 // None of them writes over the open scene's file, by its path or any other name of it.
@@ -45,6 +46,9 @@ public:
     // can cancel them, and end with finished; false (and error) if they cannot start
     bool startSequenceExport(const SequenceExport &settings, QString *error = nullptr);
     bool startTraceExport(const TraceExport &settings, QString *error = nullptr);
+    // the deforming surfaces as a PC2 cache, OBJ frames and a last frame, run on from here with
+    // the same progress dialog; false (and error) if it cannot start
+    bool startAnimationExport(const MeshAnimationExport &settings, QString *error = nullptr);
     bool isExporting() const { return m_run != nullptr || m_encoder != nullptr; }
     // cancels what is being exported, as the progress dialog's Cancel does
     void cancel();
@@ -70,7 +74,8 @@ private:
     const Prompts &m_prompts;
     std::function<QString()> m_folder;
     // what the last export of each kind was given, so that the next dialog of the kind starts there
-    std::array<QString, 3> m_lastPath;  // by ExportKind
+    std::array<QString, 4> m_lastPath;  // by ExportKind
+    MeshAnimationExport m_lastAnimation;
     QSize m_lastImageSize;
     QWidget *m_window;
     ExportRun *m_run = nullptr;                  // the sequence or trace being exported

@@ -2,6 +2,7 @@
 
 #include <QVector3D>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ui {
@@ -13,42 +14,68 @@ SurfaceDraw packSurface(const core::Snapshot &snapshot)
     const int n = std::min<int>(snapshot.particleCount(), int(snapshot.positions.size() / 3));
     const int springs = snapshot.springCount();
     // triangles of another scene than the snapshot's (a hand-made snapshot) are not drawn
-    if (!triangles || triangles->empty() || triangles->springEnds.size() != 2 * std::size_t(springs))
+    const bool sheet = triangles && !triangles->empty() && triangles->springEnds.size() == 2 * std::size_t(springs) &&
+                       std::all_of(triangles->corners.begin(), triangles->corners.end(),
+                                   [n](int c) { return c >= 0 && c < n; });
+    const core::EmbeddedSurface *embedded = snapshot.embedded.get();
+    const bool soft = embedded && !embedded->empty() &&
+                      snapshot.embeddedPositions.size() == 3 * std::size_t(embedded->vertexCount()) &&
+                      std::all_of(embedded->particles.begin(), embedded->particles.end(),
+                                  [n](int p) { return p >= 0 && p < n; });
+    if (!sheet && !soft)
         return draw;
-    for (int c : triangles->corners)
-        if (c < 0 || c >= n)
-            return draw;
 
     // the triangles whose three springs all hold
     draw.coveredParticles.assign(std::size_t(n), 0);
-    draw.indices.reserve(triangles->corners.size());
-    for (int t = 0; t < triangles->count(); ++t) {
-        const int *sides = triangles->sides.data() + 3 * t;
-        if (snapshot.isBroken(sides[0]) || snapshot.isBroken(sides[1]) || snapshot.isBroken(sides[2]))
-            continue;
-        for (int c = 0; c < 3; ++c) {
-            const int corner = triangles->corners[std::size_t(3 * t + c)];
-            draw.indices.push_back(std::uint32_t(corner));
-            draw.coveredParticles[std::size_t(corner)] = 1;
+    if (sheet) {
+        draw.indices.reserve(triangles->corners.size());
+        for (int t = 0; t < triangles->count(); ++t) {
+            const int *sides = triangles->sides.data() + 3 * t;
+            if (snapshot.isBroken(sides[0]) || snapshot.isBroken(sides[1]) || snapshot.isBroken(sides[2]))
+                continue;
+            for (int c = 0; c < 3; ++c) {
+                const int corner = triangles->corners[std::size_t(3 * t + c)];
+                draw.indices.push_back(std::uint32_t(corner));
+                draw.coveredParticles[std::size_t(corner)] = 1;
+            }
         }
+    }
+    // a soft body's surface, its vertices after the particles; its lattice lies inside it
+    if (soft) {
+        for (int c : embedded->corners)
+            draw.indices.push_back(std::uint32_t(n + c));
+        for (int p : embedded->particles)
+            draw.coveredParticles[std::size_t(p)] = 1;
+        draw.extraVertices = embedded->vertexCount();
     }
 
     // a spring lies in the sheet when both its ends are corners of it
     draw.coveredSprings.assign(std::size_t(springs), 0);
-    for (int k = 0; k < springs; ++k) {
-        const int a = triangles->springEnds[std::size_t(2 * k)], b = triangles->springEnds[std::size_t(2 * k + 1)];
-        draw.coveredSprings[std::size_t(k)] =
-            a >= 0 && b >= 0 && a < n && b < n && draw.coveredParticles[std::size_t(a)] && draw.coveredParticles[std::size_t(b)];
-    }
+    if (triangles && triangles->springEnds.size() == 2 * std::size_t(springs))
+        for (int k = 0; k < springs; ++k) {
+            const int a = triangles->springEnds[std::size_t(2 * k)], b = triangles->springEnds[std::size_t(2 * k + 1)];
+            draw.coveredSprings[std::size_t(k)] = a >= 0 && b >= 0 && a < n && b < n &&
+                                                  draw.coveredParticles[std::size_t(a)] &&
+                                                  draw.coveredParticles[std::size_t(b)];
+        }
     return draw;
 }
 
-void surfaceNormals(const core::Snapshot &snapshot, const std::vector<std::uint32_t> &indices, std::vector<float> &normals)
+void surfacePositions(const core::Snapshot &snapshot, const SurfaceDraw &draw, std::vector<float> &positions)
 {
-    const std::size_t n = std::min(snapshot.positions.size() / 3, snapshot.radii.size());
+    const std::size_t n = 3 * std::size_t(std::min<int>(snapshot.particleCount(), int(snapshot.positions.size() / 3)));
+    positions.assign(snapshot.positions.begin(), snapshot.positions.begin() + std::ptrdiff_t(n));
+    if (draw.extraVertices > 0 && snapshot.embeddedPositions.size() == 3 * std::size_t(draw.extraVertices))
+        positions.insert(positions.end(), snapshot.embeddedPositions.begin(), snapshot.embeddedPositions.end());
+}
+
+void surfaceNormals(const std::vector<float> &positions, const std::vector<std::uint32_t> &indices,
+                    std::vector<float> &normals)
+{
+    const std::size_t n = positions.size() / 3;
     normals.assign(3 * n, 0.0f);
     auto at = [&](std::uint32_t i) {
-        const float *p = snapshot.positions.data() + 3 * std::size_t(i);
+        const float *p = positions.data() + 3 * std::size_t(i);
         return QVector3D(p[0], p[1], p[2]);
     };
 
@@ -81,13 +108,15 @@ void surfaceNormals(const core::Snapshot &snapshot, const std::vector<std::uint3
 
 bool SurfaceKey::matches(const core::Snapshot &snapshot) const
 {
-    return m_valid && m_triangles == snapshot.triangles && m_broken == snapshot.springBroken &&
+    return m_valid && m_triangles == snapshot.triangles && m_embedded == snapshot.embedded &&
+           m_broken == snapshot.springBroken &&
            m_particles == snapshot.particleCount() && m_springs == snapshot.springCount();
 }
 
 void SurfaceKey::remember(const core::Snapshot &snapshot)
 {
     m_triangles = snapshot.triangles;
+    m_embedded = snapshot.embedded;
     m_broken = snapshot.springBroken;
     m_particles = snapshot.particleCount();
     m_springs = snapshot.springCount();
@@ -98,6 +127,7 @@ void SurfaceKey::clear()
 {
     m_valid = false;
     m_triangles.reset();
+    m_embedded.reset();
     m_broken.clear();
 }
 

@@ -1,9 +1,10 @@
 #pragma once
-// Surface data: a snapshot's spring triangles (core/springs/spring_triangles.h) turned into what the
-// viewport draws a cloth with, without GL, so that it can be unit-tested: the indices of the
-// triangles none of whose springs has broken (a torn spring opens a hole), which particles and
-// springs the sheet already shows (the viewport hides them unless asked), and smooth normals at the
-// current positions. The indices change only when the triangles or the broken springs do
+// Surface data: a snapshot's spring triangles (core/springs/spring_triangles.h) and its soft bodies'
+// surfaces (core/meshes/embedded_surface.h) turned into what the viewport draws them with, without
+// GL, so that it can be unit-tested: the indices of the triangles none of whose springs has broken
+// (a torn spring opens a hole), which particles and springs the surfaces already show (the
+// viewport hides them unless asked), and smooth normals at the current positions. A soft body's
+// vertices follow the particles in the vertex list (surfacePositions). The indices change only when the triangles or the broken springs do
 // (SurfaceKey); the normals with every new snapshot.
 
 #include "core/model/snapshot.h"
@@ -18,6 +19,7 @@ struct SurfaceDraw {
     std::vector<std::uint32_t> indices;            // three particles per drawn triangle
     std::vector<std::uint8_t> coveredParticles;    // per particle: 1 if a corner of a drawn triangle
     std::vector<std::uint8_t> coveredSprings;      // per spring: 1 if both its ends are
+    int extraVertices = 0;  // the soft bodies' surface vertices, after the particles'
     int triangleCount() const { return static_cast<int>(indices.size() / 3); }
 };
 
@@ -25,9 +27,12 @@ struct SurfaceDraw {
 // do not fit its particles and springs
 SurfaceDraw packSurface(const core::Snapshot &snapshot);
 
-// per particle xyz, the unit normal at the snapshot's positions: its drawn triangles' normals
-// summed, each weighted by its area; zero for a particle in none (or where they cancel)
-void surfaceNormals(const core::Snapshot &snapshot, const std::vector<std::uint32_t> &indices,
+// the drawn vertices, xyz each: the particles', then the soft bodies' surface vertices
+void surfacePositions(const core::Snapshot &snapshot, const SurfaceDraw &draw, std::vector<float> &positions);
+
+// per vertex xyz of `positions`, the unit normal: its drawn triangles' normals summed, each weighted
+// by its area; zero for a vertex in none (or where they cancel)
+void surfaceNormals(const std::vector<float> &positions, const std::vector<std::uint32_t> &indices,
                     std::vector<float> &normals);
 
 // what a SurfaceDraw was packed from, to tell whether a new snapshot needs a new one
@@ -40,6 +45,7 @@ public:
 private:
     bool m_valid = false;
     std::shared_ptr<const core::SpringTriangles> m_triangles;
+    std::shared_ptr<const core::EmbeddedSurface> m_embedded;
     std::vector<std::uint8_t> m_broken;
     int m_particles = 0;
     int m_springs = 0;

@@ -582,7 +582,13 @@ void Viewport::uploadSnapshot()
     // positions and spring lines, once per new snapshot
     if (m_positionsStale) {
         gpu.positions.bind();
-        gpu.positions.allocate(s.positions.data(), int(s.positions.size() * sizeof(float)));
+        if (m_surface.extraVertices > 0 && m_layers.surface) {
+            // the soft bodies' surface vertices after the particles, in the buffer both read
+            surfacePositions(s, m_surface, m_surfacePositions);
+            gpu.positions.allocate(m_surfacePositions.data(), int(m_surfacePositions.size() * sizeof(float)));
+        } else {
+            gpu.positions.allocate(s.positions.data(), int(s.positions.size() * sizeof(float)));
+        }
         gpu.highlightedSprings = packSpringLines(s, m_springVertices, kFullStrain, m_springHighlight, m_hiddenSprings);
         gpu.springs.bind();
         gpu.springs.allocate(m_springVertices.data(), int(m_springVertices.size() * sizeof(float)));
@@ -590,7 +596,10 @@ void Viewport::uploadSnapshot()
         regather = true;
         // the sheet's normals at these positions
         if (m_surface.triangleCount() > 0 && m_layers.surface) {
-            surfaceNormals(s, m_surface.indices, m_normals);
+            if (m_surface.extraVertices == 0)
+                surfaceNormals(s.positions, m_surface.indices, m_normals);
+            else
+                surfaceNormals(m_surfacePositions, m_surface.indices, m_normals);
             gpu.normals.bind();
             gpu.normals.allocate(m_normals.data(), int(m_normals.size() * sizeof(float)));
         }

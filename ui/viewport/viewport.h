@@ -210,6 +210,7 @@ private:
     int m_exportSamples = 0;  // renderImage()'s multisampling: the view's, as far as the driver allows
     std::vector<float> m_springVertices;  // kept to reuse its memory
     std::vector<float> m_normals;         // likewise
+    std::vector<float> m_surfacePositions;  // the particles' and the soft bodies' surface vertices
 
     // the scene's extent for the grid, the planes and the clip planes
     Sphere m_sceneBounds{QVector3D(0.0f, 0.0f, 0.0f), 1.0f};

@@ -37,6 +37,7 @@ class CameraActions;
 class DocumentFiles;
 class EditTools;
 class GenerateDialog;
+class ImportMeshDialog;
 class TransformDialog;
 class Exporter;
 class InspectorPanel;
@@ -107,6 +108,8 @@ public:
     const Steering &steering() const { return m_steering; }
     // Edit › Generate's dialog; null until first opened (main_window_editing.cpp)
     GenerateDialog *generateDialog() const { return m_generate; }
+    // File › Import Mesh's dialog; null until first opened (main_window_import.cpp)
+    ImportMeshDialog *importMeshDialog() const { return m_importMesh; }
     // Edit › Transform Selection's dialog; null until first opened (main_window_editing.cpp)
     TransformDialog *transformDialog() const { return m_transform; }
 
@@ -181,6 +184,8 @@ private:
     void steer(int turn, int change);
     void showGenerate();
     void addGenerated();
+    void showImportMesh();
+    void addImportedMesh();
     void showTransform();
 
     SceneDocument *m_document = nullptr;
@@ -203,6 +208,7 @@ private:
     QDockWidget *m_plotsDock = nullptr;
     AccuracyDialog *m_accuracy = nullptr;
     GenerateDialog *m_generate = nullptr;
+    ImportMeshDialog *m_importMesh = nullptr;
     TransformDialog *m_transform = nullptr;
     std::uint64_t m_accuracyRequest = 0;  // the plan awaited from the worker; 0: none
     bool m_applyPlan = true;               // whether that plan's pick is applied or only shown

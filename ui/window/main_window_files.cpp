@@ -39,6 +39,10 @@ void MainWindow::createFileMenu()
     open->setObjectName(QStringLiteral("actionOpen"));
     open->setShortcuts(standardKeys(QKeySequence::Open, QKeySequence(Qt::CTRL | Qt::Key_O)));
     open->setStatusTip(tr("Open a scene file (a .json file can also be dropped on the window)"));
+    QAction *importMesh = file->addAction(tr("&Import Mesh..."), this, &MainWindow::showImportMesh);
+    importMesh->setObjectName(QStringLiteral("actionImportMesh"));
+    importMesh->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+    importMesh->setStatusTip(tr("Bring in a model (OBJ, PLY, STL, glTF, FBX, ...) as a cloth, a soft body or a collider"));
     m_files->addRecentMenu(file);
     m_files->addExamplesMenu(file);
     file->addSeparator();

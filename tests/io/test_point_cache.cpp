@@ -1,0 +1,240 @@
+// The animation export (core/io/animation_export.h): a PC2 file read back by a reader written here
+// from the format's description (a 12-byte signature "POINTCACHE2\0"; int32 version 1, int32
+// points, float32 start frame, float32 sampling, int32 samples, all little-endian; then per sample
+// every point's x, y, z as float32) matches the run's positions to float32 precision, in the
+// file's vertex order with its placement undone; the OBJ beside it and the OBJ sequence hold the
+// same numbers; a cancelled export leaves nothing.
+
+#include "mesh_files.h"
+
+#include "core/io/animation_export.h"
+#include "core/meshes/mesh_import.h"
+#include "core/meshes/mesh_surface.h"
+#include "core/model/model.h"
+#include "core/model/state.h"
+#include "core/step.h"
+
+#include <QDataStream>
+#include <QDir>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::Literals::StringLiterals;
+
+namespace {
+
+struct PointCache {
+    QByteArray signature;
+    qint32 version = 0, points = 0, samples = 0;
+    float start = 0.0f, sampling = 0.0f;
+    std::vector<std::vector<float>> frames;  // per sample, 3 × points
+    bool wholeFile = false;                  // the bytes were exactly the header and the samples
+};
+
+PointCache readPointCache(const QString &path)
+{
+    PointCache cache;
+    const QByteArray bytes = test::readAll(path);
+    QDataStream in(bytes);
+    in.setByteOrder(QDataStream::LittleEndian);
+    in.setFloatingPointPrecision(QDataStream::SinglePrecision);
+    cache.signature = bytes.left(12);
+    in.skipRawData(12);
+    in >> cache.version >> cache.points >> cache.start >> cache.sampling >> cache.samples;
+    for (qint32 s = 0; s < cache.samples && in.status() == QDataStream::Ok; ++s) {
+        std::vector<float> frame(std::size_t(3 * cache.points));
+        for (float &value : frame)
+            in >> value;
+        cache.frames.push_back(std::move(frame));
+    }
+    cache.wholeFile = in.status() == QDataStream::Ok && in.atEnd();
+    return cache;
+}
+
+// an OBJ's v records
+std::vector<Eigen::Vector3f> objVertices(const QString &path)
+{
+    std::vector<Eigen::Vector3f> vertices;
+    for (const QByteArray &line : test::readAll(path).split('\n'))
+        if (line.startsWith("v ")) {
+            const QList<QByteArray> w = line.split(' ');
+            vertices.emplace_back(w[1].toFloat(), w[2].toFloat(), w[3].toFloat());
+        }
+    return vertices;
+}
+
+// a flag: a 6 × 8 panel of a z-up file in centimetres, its left side pinned, on a floor
+core::SceneDesc flagScene(core::TriangleMesh *file = nullptr)
+{
+    // the panel lies in its file's xz plane: upright in a z-up file
+    const core::TriangleMesh mesh = test::panel(6, 8, 10.0);
+    core::MeshImportOptions options;
+    options.name = "flag";
+    options.placement.scale = 0.01;
+    options.placement.zUp = true;
+    options.placement.at = Eigen::Vector3d(0.0, 1.0, 0.0);
+    options.pin = core::PinSide::Left;
+    core::SceneDesc scene;
+    if (!core::sceneFromMesh(scene, mesh, options).ok())
+        qFatal("the flag did not import");
+    if (file)
+        *file = mesh;
+    return scene;
+}
+
+}  // namespace
+
+class TestPointCache : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+private slots:
+    void pc2MatchesTheRun()
+    {
+        core::TriangleMesh file;
+        const core::SceneDesc scene = flagScene(&file);
+        const double h = scene.settings.timeStep;
+        const std::uint64_t steps = 50;
+        io::ExportOptions options;
+        options.pc2Path = m_dir.filePath(u"flag.pc2"_s);
+        options.objFolder = m_dir.filePath(u"frames"_s);
+        options.fps = 40.0;  // a frame every 2.5 steps: frames at steps 0, 3, 5, 8, 10, ...
+        io::AnimationExport exported;
+        QCOMPARE(exported.open(options, scene, h, steps), QString());
+        QCOMPARE(exported.frameCount(), 21);  // 0 to 0.5 s at 40 frames/s
+
+        // the run, with the positions the export should have written, in the file's space
+        const auto model = core::compileModel(scene);
+        core::State state = core::makeState(*model, scene);
+        core::Workspace work;
+        std::vector<Eigen::Matrix3Xd> expected;
+        Eigen::Matrix3Xd vertices;
+        const auto due = [&] {
+            while (int(expected.size()) < exported.frameCount() &&
+                   double(state.step) * h >= double(expected.size()) / options.fps - 1e-12) {
+                core::meshVertexPositions(scene.meshes[0], state.position, vertices, core::MeshSpace::File);
+                expected.push_back(vertices);
+            }
+        };
+        due();
+        QCOMPARE(exported.writeDue(state.step, state.position), QString());
+        while (state.step < steps) {
+            QVERIFY(core::step(*model, state, work));
+            due();
+            QCOMPARE(exported.writeDue(state.step, state.position), QString());
+        }
+        QCOMPARE(exported.finish(), QString());
+        QCOMPARE(exported.framesWritten(), 21);
+        QCOMPARE(int(expected.size()), 21);
+
+        const PointCache cache = readPointCache(options.pc2Path);
+        QVERIFY(cache.wholeFile);
+        QCOMPARE(cache.signature, QByteArray("POINTCACHE2\0", 12));
+        QCOMPARE(cache.version, 1);
+        QCOMPARE(cache.points, qint32(file.vertices.size()));
+        QCOMPARE(cache.start, 0.0f);
+        QCOMPARE(cache.sampling, 1.0f);
+        QCOMPARE(cache.samples, 21);
+        for (std::size_t s = 0; s < cache.frames.size(); ++s)
+            for (qint32 v = 0; v < cache.points; ++v)
+                for (int a = 0; a < 3; ++a)
+                    QCOMPARE(cache.frames[s][std::size_t(3 * v + a)], float(expected[s](a, v)));
+        // the first frame is the file's own vertices (to float32), the pinned side stays put, the
+        // rest sags (an upright flag hangs in its own plane, so only by its springs' stretch: 1.6 mm
+        // at the far corner after 0.5 s; z is up in the file, in cm)
+        for (std::size_t v = 0; v < file.vertices.size(); ++v)
+            QVERIFY((expected[0].col(Eigen::Index(v)) - file.vertices[v]).norm() < 1e-9);
+        QVERIFY2(expected.back()(2, 47) < file.vertices[47].z() - 0.05,
+                 qPrintable(QStringLiteral("%1 %2 %3 from %4").arg(expected.back()(0, 47)).arg(expected.back()(1, 47)).arg(expected.back()(2, 47)).arg(file.vertices[47].z())));
+        QCOMPARE(expected.back()(2, 0), expected[0](2, 0));
+
+        // the OBJ beside it is the first frame; the sequence, frame by frame, the cache's numbers
+        const std::vector<Eigen::Vector3f> first = objVertices(m_dir.filePath(u"flag.obj"_s));
+        QCOMPARE(first.size(), file.vertices.size());
+        for (std::size_t v = 0; v < first.size(); ++v)
+            QCOMPARE(first[v], Eigen::Vector3f(cache.frames[0][3 * v], cache.frames[0][3 * v + 1], cache.frames[0][3 * v + 2]));
+        const QStringList objs = QDir(options.objFolder).entryList({u"flag_*.obj"_s}, QDir::Files, QDir::Name);
+        QCOMPARE(objs.size(), 21);
+        QCOMPARE(objs.first(), u"flag_00000.obj"_s);
+        const std::vector<Eigen::Vector3f> last = objVertices(QDir(options.objFolder).filePath(objs.last()));
+        for (std::size_t v = 0; v < last.size(); ++v)
+            QCOMPARE(last[v], Eigen::Vector3f(cache.frames[20][3 * v], cache.frames[20][3 * v + 1], cache.frames[20][3 * v + 2]));
+    }
+
+    void rangeAndSceneSpace()
+    {
+        const core::SceneDesc scene = flagScene();
+        io::ExportOptions options;
+        options.pc2Path = m_dir.filePath(u"range.pc2"_s);
+        options.fps = 10.0;
+        options.from = 0.2;
+        options.to = 0.4;
+        options.space = core::MeshSpace::Scene;
+        io::AnimationExport exported;
+        QCOMPARE(exported.open(options, scene, scene.settings.timeStep, 100), QString());
+        QCOMPARE(exported.frameCount(), 3);  // 0.2, 0.3, 0.4 s
+        QCOMPARE(exported.nextStep(100), std::uint64_t(20));
+        core::State state = core::makeState(*core::compileModel(scene), scene);
+        for (std::uint64_t step : {20, 30, 40})
+            QCOMPARE(exported.writeDue(step, state.position), QString());
+        QCOMPARE(exported.finish(), QString());
+        const PointCache cache = readPointCache(options.pc2Path);
+        QCOMPARE(cache.start, 2.0f);  // frame 2 at 10 frames/s
+        QCOMPARE(cache.samples, 3);
+        // in the scene's space: the pinned corner where the scene has it
+        QCOMPARE(cache.frames[0][1], float(scene.particles[std::size_t(scene.meshes[0].particles[0])].position.y()));
+    }
+
+    void splitVerticesAreWrittenEach()
+    {
+        // a cloth cube of 24 file vertices on 8 particles: 24 points, those of one corner alike
+        core::SceneDesc scene;
+        QVERIFY(core::sceneFromMesh(scene, test::splitCube(1.0), {}).ok());
+        io::ExportOptions options;
+        options.pc2Path = m_dir.filePath(u"cube.pc2"_s);
+        io::AnimationExport exported;
+        QCOMPARE(exported.open(options, scene, 0.01, 10), QString());
+        core::State state = core::makeState(*core::compileModel(scene), scene);
+        QCOMPARE(exported.writeDue(0, state.position), QString());
+        QCOMPARE(exported.finish(), QString());
+        const PointCache cache = readPointCache(options.pc2Path);
+        QCOMPARE(cache.points, 24);
+        QCOMPARE(cache.samples, 1);  // finished early: the count is what was written
+        const core::TriangleMesh cube = test::splitCube(1.0);
+        for (std::size_t v = 0; v < 24; ++v)
+            QCOMPARE(Eigen::Vector3f(cache.frames[0][3 * v], cache.frames[0][3 * v + 1], cache.frames[0][3 * v + 2]),
+                     cube.vertices[v].cast<float>());
+    }
+
+    void refusedAndCancelled()
+    {
+        core::SceneDesc bare;
+        bare.particles.resize(2);
+        io::ExportOptions options;
+        options.pc2Path = m_dir.filePath(u"none.pc2"_s);
+        io::AnimationExport nothing;
+        QVERIFY(nothing.open(options, bare, 0.01, 10).contains(u"no surface"_s));
+        options.fps = 0.0;
+        QVERIFY(io::AnimationExport().open(options, flagScene(), 0.01, 10).contains(u"frame rate"_s));
+        options.fps = 30.0;
+        options.from = 1.0;
+        QVERIFY(io::AnimationExport().open(options, flagScene(), 0.01, 10).contains(u"after the run's end"_s));
+
+        // a cancelled export leaves no file
+        options.from = 0.0;
+        options.pc2Path = m_dir.filePath(u"cancelled/flag.pc2"_s);
+        options.objFolder = m_dir.filePath(u"cancelled/objs"_s);
+        const core::SceneDesc scene = flagScene();
+        io::AnimationExport cancelled;
+        QCOMPARE(cancelled.open(options, scene, 0.01, 10), QString());
+        core::State state = core::makeState(*core::compileModel(scene), scene);
+        QCOMPARE(cancelled.writeDue(0, state.position), QString());
+        cancelled.cancel();
+        QVERIFY(QDir(m_dir.filePath(u"cancelled"_s)).entryList({u"*.pc2*"_s, u"*.obj"_s}, QDir::Files).isEmpty());
+        QVERIFY(QDir(options.objFolder).entryList(QDir::Files).isEmpty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPointCache)
+#include "test_point_cache.moc"
