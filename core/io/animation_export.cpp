@@ -163,6 +163,7 @@ QString AnimationExport::open(const ExportOptions &options, const core::SceneDes
     if (options.to && !(*options.to >= options.from))
         return u"the export's last frame (%1 s) is before its first (%2 s)"_s.arg(*options.to).arg(options.from);
     m_meshes = core::exportedMeshes(scene);
+    m_particleCount = scene.particles.size();
     if (m_meshes.empty())
         return u"nothing to export: the scene has no surface (import a mesh, or make a cloth)"_s;
 
@@ -232,6 +233,11 @@ std::uint64_t AnimationExport::nextStep(std::uint64_t totalSteps) const
 
 QString AnimationExport::writeDue(std::uint64_t step, const Eigen::Matrix3Xd &positions)
 {
+    // the surfaces name the particles of the scene the export was opened with: a scene edited
+    // since (particles added or removed) has other particles under those numbers
+    if (positions.cols() != Eigen::Index(m_particleCount))
+        return u"the scene has %1 particles now, not the %2 it had when the export began: it was edited during "
+               "the export"_s.arg(positions.cols()).arg(m_particleCount);
     m_lastFrame.resize(m_meshes.size());
     for (; m_written < frameCount() && m_steps[std::size_t(m_written)] == step; ++m_written) {
         const int frame = m_firstFrame + m_written;

@@ -61,7 +61,8 @@ public:
     QString open(const ExportOptions &options, const core::SceneDesc &scene, double timeStep, std::uint64_t totalSteps);
     // the step of the next frame due, or totalSteps when none is left
     std::uint64_t nextStep(std::uint64_t totalSteps) const;
-    // writes every frame due at this step from the particles' positions; empty on success
+    // writes every frame due at this step from the particles' positions (one column a particle of
+    // the scene it was opened with); empty on success, else the message
     QString writeDue(std::uint64_t step, const Eigen::Matrix3Xd &positions);
     // the caches completed (their sample counts those written) and the last frame's mesh; empty on success
     QString finish();
@@ -78,6 +79,7 @@ private:
     struct Cache;
     ExportOptions m_options;
     std::vector<core::MeshDesc> m_meshes;
+    std::size_t m_particleCount = 0;               // the scene's when opened: the frames' must match
     std::vector<std::unique_ptr<Cache>> m_caches;  // per mesh, with a PC2 path
     std::vector<std::uint64_t> m_steps;            // the frames' steps
     int m_firstFrame = 0;                          // the frame number of the first (from × fps)

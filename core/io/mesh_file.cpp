@@ -17,12 +17,16 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <new>
+#include <optional>
 #include <unordered_map>
+#include <vector>
 
 namespace io {
 
@@ -164,8 +168,67 @@ struct FloatKeyHash {
     }
 };
 
+// the records near each point: a grid of cells `cell` wide, so that a point finds the records
+// within `cell` of it in its own cell and the 26 around it
+class RecordGrid {
+public:
+    RecordGrid(const std::vector<Eigen::Vector3d> &records, double cell) : m_records(records), m_cell(cell)
+    {
+        m_cells.reserve(records.size());
+        for (std::size_t r = 0; r < records.size(); ++r)
+            m_cells[keyOf(records[r])].push_back(int(r));
+    }
+
+    // the nearest record within the cell's width of p; -1 when none is
+    int nearest(const Eigen::Vector3d &p) const
+    {
+        const Key centre = keyOf(p);
+        int best = -1;
+        double bestDistance = m_cell;
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+            for (std::int64_t dy = -1; dy <= 1; ++dy)
+                for (std::int64_t dz = -1; dz <= 1; ++dz) {
+                    const auto it = m_cells.find(Key{centre.x + dx, centre.y + dy, centre.z + dz});
+                    if (it == m_cells.end())
+                        continue;
+                    for (const int r : it->second) {
+                        const double distance = (m_records[std::size_t(r)] - p).lpNorm<Eigen::Infinity>();
+                        if (distance <= bestDistance) {
+                            best = r;
+                            bestDistance = distance;
+                        }
+                    }
+                }
+        return best;
+    }
+
+private:
+    struct Key {
+        std::int64_t x, y, z;
+        bool operator==(const Key &) const = default;
+    };
+    struct KeyHash {
+        std::size_t operator()(const Key &k) const
+        {
+            return std::size_t(k.x) * 73856093u ^ std::size_t(k.y) * 19349663u ^ std::size_t(k.z) * 83492791u;
+        }
+    };
+    Key keyOf(const Eigen::Vector3d &p) const
+    {
+        return {std::int64_t(std::floor(p.x() / m_cell)), std::int64_t(std::floor(p.y() / m_cell)),
+                std::int64_t(std::floor(p.z() / m_cell))};
+    }
+
+    const std::vector<Eigen::Vector3d> &m_records;
+    double m_cell;
+    std::unordered_map<Key, std::vector<int>, KeyHash> m_cells;
+};
+
 // the mesh over the OBJ's own records: each vertex the library made is the record at its position;
-// false (the mesh unchanged) when one is at no record's position
+// false (the mesh unchanged) when one is at no record's position. The library reads numbers with
+// a parser of its own that is not correctly rounded ("0.07" can come out a float's last bit off
+// strtod's), so a vertex at no record's exact position takes the nearest record within a
+// millionth of the file's largest coordinate or extent (a few of a float's last bits)
 bool inObjOrder(const QString &path, core::TriangleMesh &mesh)
 {
     std::vector<Eigen::Vector3d> records;
@@ -173,15 +236,29 @@ bool inObjOrder(const QString &path, core::TriangleMesh &mesh)
         return false;
     std::unordered_map<FloatKey, int, FloatKeyHash> recordAt;
     recordAt.reserve(records.size());
-    for (std::size_t r = 0; r < records.size(); ++r)
+    Eigen::Vector3d low = records.front(), high = records.front();
+    for (std::size_t r = 0; r < records.size(); ++r) {
         recordAt.emplace(FloatKey{float(records[r].x()), float(records[r].y()), float(records[r].z())}, int(r));
+        low = low.cwiseMin(records[r]);
+        high = high.cwiseMax(records[r]);
+    }
+    const double scale = std::max({(high - low).maxCoeff(), low.cwiseAbs().maxCoeff(), high.cwiseAbs().maxCoeff()});
+    std::optional<RecordGrid> grid;  // made at the first vertex that needs it
     std::vector<int> recordOf(mesh.vertices.size());
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
         const Eigen::Vector3d &p = mesh.vertices[v];
         const auto it = recordAt.find(FloatKey{float(p.x()), float(p.y()), float(p.z())});
-        if (it == recordAt.end())
+        if (it != recordAt.end()) {
+            recordOf[v] = it->second;
+            continue;
+        }
+        if (!(scale > 0.0) || !std::isfinite(scale))
             return false;
-        recordOf[v] = it->second;
+        if (!grid)
+            grid.emplace(records, 1e-6 * scale);
+        recordOf[v] = grid->nearest(p);
+        if (recordOf[v] < 0)
+            return false;
     }
     for (std::array<int, 3> &f : mesh.faces)
         for (int &v : f)

@@ -5,6 +5,7 @@
 #include "sim_run.h"
 
 #include "../io/mesh_files.h"
+#include "../io/point_cache_read.h"
 
 #include "core/io/scene_file.h"
 
@@ -12,7 +13,6 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include <cstring>
 
 using namespace Qt::Literals::StringLiterals;
 
@@ -139,16 +139,12 @@ private slots:
         // the point cache's header: 36 points, 13 samples of one frame each, from frame 0
         const QByteArray pc2 = test::readAll(path(u"out/panel.pc2"_s));
         QVERIFY(pc2.startsWith(QByteArray("POINTCACHE2\0", 12)));
-        qint32 points = 0, samples = 0;
-        float start = -1.0f, sampling = 0.0f;
-        std::memcpy(&points, pc2.constData() + 16, 4);
-        std::memcpy(&start, pc2.constData() + 20, 4);
-        std::memcpy(&sampling, pc2.constData() + 24, 4);
-        std::memcpy(&samples, pc2.constData() + 28, 4);
-        QCOMPARE(points, 36);
-        QCOMPARE(samples, 13);
-        QCOMPARE(start, 0.0f);
-        QCOMPARE(sampling, 1.0f);
+        const test::PointCache cache = test::readPointCache(pc2);
+        QCOMPARE(cache.points, 36);
+        QCOMPARE(cache.samples, 13);
+        QCOMPARE(cache.start, 0.0f);
+        QCOMPARE(cache.sampling, 1.0f);
+        QVERIFY(cache.wholeFile);
         QCOMPARE(pc2.size(), 32 + 13 * 36 * 12);
         QVERIFY(QFile::exists(path(u"out/panel.obj"_s)));
         QCOMPARE(QDir(path(u"out/frames"_s)).entryList({u"panel_*.obj"_s}, QDir::Files).size(), 13);

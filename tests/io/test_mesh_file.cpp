@@ -65,6 +65,31 @@ private slots:
         QCOMPARE(read.mesh->faces, shuffled.faces);
     }
 
+    void objNumbersTheLibraryRoundsOtherwise()
+    {
+        // a strip of quads 1 cm apart written with six digits, as modellers write them: the
+        // library reads some of 1.00 to 1.99 a float's last bit off a correctly rounded read, and
+        // those vertices still find their records
+        constexpr int kColumns = 200;
+        QByteArray text;
+        for (int row = 0; row < 2; ++row)
+            for (int c = 0; c < kColumns; ++c)
+                text += "v " + QByteArray::number(c * 0.01, 'g', 6) + " 0 " + QByteArray::number(row * 0.01, 'g', 6) + '\n';
+        for (int c = 0; c + 1 < kColumns; ++c)
+            text += "f " + QByteArray::number(c + 1) + ' ' + QByteArray::number(c + 1 + kColumns) + ' ' +
+                    QByteArray::number(c + 2 + kColumns) + ' ' + QByteArray::number(c + 2) + '\n';
+        const io::MeshReadResult read = io::readMeshFile(write(u"strip.obj"_s, text));
+        QVERIFY2(read.ok(), qPrintable(read.error));
+        QVERIFY2(read.notes.isEmpty(), qPrintable(read.notes.join(u"; "_s)));
+        QCOMPARE(read.mesh->vertices.size(), std::size_t(2 * kColumns));
+        for (int row = 0; row < 2; ++row)
+            for (int c = 0; c < kColumns; ++c) {
+                const Eigen::Vector3d &v = read.mesh->vertices[std::size_t(row * kColumns + c)];
+                QVERIFY(std::abs(v.x() - c * 0.01) < 1e-6 && std::abs(v.z() - row * 0.01) < 1e-6);
+            }
+        QCOMPARE(read.mesh->faces.size(), std::size_t(2 * (kColumns - 1)));
+    }
+
     void objWithNormalsQuadsAndPolygons()
     {
         // a cube with a normal a face (its corners split in the library's arrays, not in the file):

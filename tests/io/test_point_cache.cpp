@@ -1,11 +1,11 @@
-// The animation export (core/io/animation_export.h): a PC2 file read back by a reader written here
-// from the format's description (a 12-byte signature "POINTCACHE2\0"; int32 version 1, int32
-// points, float32 start frame, float32 sampling, int32 samples, all little-endian; then per sample
-// every point's x, y, z as float32) matches the run's positions to float32 precision, in the
-// file's vertex order with its placement undone; the OBJ beside it and the OBJ sequence hold the
-// same numbers; a cancelled export leaves nothing.
+// The animation export (core/io/animation_export.h): a PC2 file read back (point_cache_read.h)
+// matches the run's positions to float32 precision, in the file's vertex order with its placement
+// undone; the OBJ beside it and the OBJ sequence hold the same numbers; a cancelled export leaves
+// nothing; each frame is on disk once written (streamed); a frame of a scene edited meanwhile is
+// refused.
 
 #include "mesh_files.h"
+#include "point_cache_read.h"
 
 #include "core/io/animation_export.h"
 #include "core/meshes/mesh_import.h"
@@ -14,8 +14,8 @@
 #include "core/model/state.h"
 #include "core/step.h"
 
-#include <QDataStream>
 #include <QDir>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -23,32 +23,9 @@ using namespace Qt::Literals::StringLiterals;
 
 namespace {
 
-struct PointCache {
-    QByteArray signature;
-    qint32 version = 0, points = 0, samples = 0;
-    float start = 0.0f, sampling = 0.0f;
-    std::vector<std::vector<float>> frames;  // per sample, 3 × points
-    bool wholeFile = false;                  // the bytes were exactly the header and the samples
-};
-
-PointCache readPointCache(const QString &path)
+test::PointCache readPointCache(const QString &path)
 {
-    PointCache cache;
-    const QByteArray bytes = test::readAll(path);
-    QDataStream in(bytes);
-    in.setByteOrder(QDataStream::LittleEndian);
-    in.setFloatingPointPrecision(QDataStream::SinglePrecision);
-    cache.signature = bytes.left(12);
-    in.skipRawData(12);
-    in >> cache.version >> cache.points >> cache.start >> cache.sampling >> cache.samples;
-    for (qint32 s = 0; s < cache.samples && in.status() == QDataStream::Ok; ++s) {
-        std::vector<float> frame(std::size_t(3 * cache.points));
-        for (float &value : frame)
-            in >> value;
-        cache.frames.push_back(std::move(frame));
-    }
-    cache.wholeFile = in.status() == QDataStream::Ok && in.atEnd();
-    return cache;
+    return test::readPointCache(test::readAll(path));
 }
 
 // an OBJ's v records
@@ -128,7 +105,7 @@ private slots:
         QCOMPARE(exported.framesWritten(), 21);
         QCOMPARE(int(expected.size()), 21);
 
-        const PointCache cache = readPointCache(options.pc2Path);
+        const test::PointCache cache = readPointCache(options.pc2Path);
         QVERIFY(cache.wholeFile);
         QCOMPARE(cache.signature, QByteArray("POINTCACHE2\0", 12));
         QCOMPARE(cache.version, 1);
@@ -179,7 +156,7 @@ private slots:
         for (std::uint64_t step : {20, 30, 40})
             QCOMPARE(exported.writeDue(step, state.position), QString());
         QCOMPARE(exported.finish(), QString());
-        const PointCache cache = readPointCache(options.pc2Path);
+        const test::PointCache cache = readPointCache(options.pc2Path);
         QCOMPARE(cache.start, 2.0f);  // frame 2 at 10 frames/s
         QCOMPARE(cache.samples, 3);
         // in the scene's space: the pinned corner where the scene has it
@@ -198,7 +175,7 @@ private slots:
         core::State state = core::makeState(*core::compileModel(scene), scene);
         QCOMPARE(exported.writeDue(0, state.position), QString());
         QCOMPARE(exported.finish(), QString());
-        const PointCache cache = readPointCache(options.pc2Path);
+        const test::PointCache cache = readPointCache(options.pc2Path);
         QCOMPARE(cache.points, 24);
         QCOMPARE(cache.samples, 1);  // finished early: the count is what was written
         const core::TriangleMesh cube = test::splitCube(1.0);
@@ -233,6 +210,48 @@ private slots:
         cancelled.cancel();
         QVERIFY(QDir(m_dir.filePath(u"cancelled"_s)).entryList({u"*.pc2*"_s, u"*.obj"_s}, QDir::Files).isEmpty());
         QVERIFY(QDir(options.objFolder).entryList(QDir::Files).isEmpty());
+    }
+
+    void framesGoToDiskAsTheyCome()
+    {
+        // a 50 × 50 sheet, 30 kB a frame: after each frame the cache on disk holds every frame so
+        // far (within QFile's 16 kB buffer), so an export of any length holds one frame in memory
+        core::SceneDesc scene;
+        QVERIFY(core::sceneFromMesh(scene, test::panel(50, 50, 0.02), {}).ok());
+        io::ExportOptions options;
+        options.pc2Path = m_dir.filePath(u"streamed.pc2"_s);
+        options.fps = 100.0;
+        io::AnimationExport exported;
+        QCOMPARE(exported.open(options, scene, 0.01, 60), QString());
+        core::State state = core::makeState(*core::compileModel(scene), scene);
+        constexpr qint64 kFrameBytes = 2500 * 12;
+        for (std::uint64_t step = 0; step <= 60; ++step) {
+            QCOMPARE(exported.writeDue(step, state.position), QString());
+            const qint64 onDisk = QFileInfo(options.pc2Path + u".part"_s).size();
+            QVERIFY2(onDisk >= 32 + qint64(step + 1) * kFrameBytes - 16 * 1024,
+                     qPrintable(u"frame %1: %2 bytes on disk"_s.arg(step).arg(onDisk)));
+        }
+        QCOMPARE(exported.finish(), QString());
+        QCOMPARE(QFileInfo(options.pc2Path).size(), 32 + 61 * kFrameBytes);
+    }
+
+    void aSceneEditedMeanwhileIsRefused()
+    {
+        // the editor's scene lost particles during the export (a Delete while it ran): the frame
+        // is refused with the reason, never read past the positions
+        const core::SceneDesc scene = flagScene();
+        io::ExportOptions options;
+        options.pc2Path = m_dir.filePath(u"edited.pc2"_s);
+        io::AnimationExport exported;
+        QCOMPARE(exported.open(options, scene, 0.01, 10), QString());
+        core::State state = core::makeState(*core::compileModel(scene), scene);
+        QCOMPARE(exported.writeDue(0, state.position), QString());
+        const Eigen::Matrix3Xd fewer = state.position.leftCols(state.position.cols() - 5);
+        const QString refused = exported.writeDue(exported.nextStep(10), fewer);
+        QVERIFY2(refused.contains(u"was edited during the export"_s), qPrintable(refused));
+        QCOMPARE(exported.framesWritten(), 1);
+        QCOMPARE(exported.finish(), QString());
+        QCOMPARE(readPointCache(options.pc2Path).samples, 1);
     }
 };
 
