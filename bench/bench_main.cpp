@@ -22,6 +22,10 @@
 //                                                    how long a Pause takes to stop a big scene's
 //                                                    step and to make the snapshot answering it;
 //                                                    then a Step and a scrub, paused
+//   springlab-bench mesh-import [--out DIR] [--runs R] [--frames N] [--quick]
+//                                                    reading, making and compiling a model of
+//                                                    100 000 triangles as each kind of body, and
+//                                                    a streamed PC2 export's peak memory
 //   springlab-bench write-references DIR             the reference problems as scene files
 //
 // The plots are painted into images, which needs a QGuiApplication for the fonts but no display:
@@ -29,6 +33,7 @@
 
 #include "accuracy.h"
 #include "cloth_contacts.h"
+#include "mesh_import.h"
 #include "rolling.h"
 #include "contacts.h"
 #include "pause_latency.h"
@@ -63,6 +68,7 @@ const char *const kUsage =
     "       springlab-bench stiff [--out DIR] [--quick] [--size N]... [--stiffness K]...\n"
     "       springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]\n"
     "       springlab-bench pause --scene FILE [--runs R] [--timeline-mb M]\n"
+    "       springlab-bench mesh-import [--out DIR] [--runs R] [--frames N] [--quick]\n"
     "       springlab-bench write-references DIR\n";
 
 int badArguments(QTextStream &err, const QString &message)
@@ -155,6 +161,38 @@ int rolling(const QStringList &arguments, QTextStream &out, QTextStream &err)
     if (const std::optional<int> done = parseMode(parser, arguments, out, err, QStringLiteral("rolling")))
         return *done;
     return bench::runRolling(parser.value(outOption), out);
+}
+
+int meshImport(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("A sheet and a closed sphere of about 100 000 triangles: each read from OBJ, PLY, STL and glTF, "
+                       "made into each kind of body and compiled, the median wall time of several runs; then the peak "
+                       "memory of a PC2 export of a 200 x 200 sheet at 100 frames and at many."));
+    parser.addHelpOption();
+    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Folder for the CSV (default: .)."),
+                                       QStringLiteral("DIR"), QStringLiteral("."));
+    const QCommandLineOption runsOption(QStringLiteral("runs"), QStringLiteral("Timed runs of each row (default 5)."),
+                                        QStringLiteral("R"), QStringLiteral("5"));
+    const QCommandLineOption quickOption(QStringLiteral("quick"),
+                                         QStringLiteral("Meshes of about 2 000 triangles, one run: a smoke test only."));
+    const QCommandLineOption framesOption(QStringLiteral("frames"),
+                                          QStringLiteral("The long export's frames (default 2000; the short one has 100)."),
+                                          QStringLiteral("N"), QStringLiteral("2000"));
+    parser.addOptions({outOption, runsOption, quickOption, framesOption});
+    if (const std::optional<int> done = parseMode(parser, arguments, out, err, QStringLiteral("mesh-import")))
+        return *done;
+    bool ok = false;
+    const int runs = parser.value(runsOption).toInt(&ok);
+    if (!ok || runs < 1 || runs > 1000)
+        return badArguments(err, QStringLiteral("mesh-import: --runs must be a whole number from 1 to 1000, not \"%1\"")
+                                     .arg(parser.value(runsOption)));
+    const int frames = parser.value(framesOption).toInt(&ok);
+    if (!ok || frames < 100 || frames > 100000)
+        return badArguments(err, QStringLiteral("mesh-import: --frames must be a whole number from 100 to 100000, not \"%1\"")
+                                     .arg(parser.value(framesOption)));
+    return bench::runMeshImport({parser.value(outOption), runs, parser.isSet(quickOption), frames}, out);
 }
 
 int clothContacts(const QStringList &arguments, QTextStream &out, QTextStream &err)
@@ -352,6 +390,8 @@ int main(int argc, char *argv[])
         return clothContacts(arguments, out, err);
     if (name == QStringLiteral("rolling"))
         return rolling(arguments, out, err);
+    if (name == QStringLiteral("mesh-import"))
+        return meshImport(arguments, out, err);
     if (name == QStringLiteral("stiff"))
         return stiff(arguments, out, err);
     if (name == QStringLiteral("xpbd-substep"))

@@ -28,6 +28,7 @@ struct TimelineInfo {
     double lastTime = 0.0;   // s
     bool empty = true;
     std::optional<std::uint64_t> scrubStep;  // the step shown while scrubbing
+    std::optional<std::uint64_t> scrubPending;  // the step a replay of slow steps is on its way to
     std::size_t usedBytes = 0;
     std::size_t budgetBytes = 0;
     std::size_t keyframeOverBudget = 0;  // a keyframe too large for the budget, so none is kept (bytes)

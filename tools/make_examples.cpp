@@ -1,7 +1,12 @@
 // Writes the example scenes of resources/scenes/ from the scene generators and the handout's
-// parameters. Run it after changing a generator: tools/make_examples resources/scenes
+// parameters, and those made of the models in resources/meshes/ (tools/mesh_examples.h). Run it
+// after changing a generator or the import: tools/make_examples resources/scenes
 #include "core/model/generators.h"
+#include "tools/mesh_examples.h"
 #include "tools/scene_writer.h"
+
+#include <QDir>
+#include <cstdio>
 
 #include <cmath>
 #include <vector>
@@ -309,8 +314,20 @@ core::SceneDesc stiffChainScene()
 
 int main(int argc, char **argv)
 {
-    return tools::writeScenes(argc, argv,
-                              {particlesScene(), springsScene(), collisionsScene(), poolScene(), clothScene(), tearableClothScene(),
-                               heapScene(), stackScene(), clothOnTableScene(), stiffClothScene(), stiffChainScene(),
-                               clothCrumpleScene(), clothOverPostScene(), poolBreakScene()});
+    std::vector<core::SceneDesc> scenes{particlesScene(),   springsScene(),      collisionsScene(),    poolScene(),
+                                        clothScene(),       tearableClothScene(), heapScene(),          stackScene(),
+                                        clothOnTableScene(), stiffClothScene(),  stiffChainScene(),    clothCrumpleScene(),
+                                        clothOverPostScene(), poolBreakScene()};
+    if (argc == 2) {
+        // the models are in resources/meshes/, beside the scenes' folder
+        QString error;
+        const std::vector<core::SceneDesc> meshes =
+            tools::meshExamples(QDir(QString::fromLocal8Bit(argv[1])).filePath(QStringLiteral("../meshes")), &error);
+        if (meshes.empty()) {
+            std::fprintf(stderr, "%s\n", qPrintable(error));
+            return 1;
+        }
+        scenes.insert(scenes.end(), meshes.begin(), meshes.end());
+    }
+    return tools::writeScenes(argc, argv, scenes);
 }

@@ -79,6 +79,24 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
                 "offers them back"));
     addEntry(tr("View › Undo History"), tr("Every edit of the scene; click one to go back to it"));
 
+    // models: in through File › Import Mesh, out through File › Export Animation
+    addSection(tr("Meshes"));
+    addEntry(tr("File › Import Mesh… (Ctrl+I)"),
+             tr("A model file (OBJ, PLY, STL, glTF, FBX, Collada, ...) as a cloth (a particle per vertex, springs "
+                "along and across the triangles, a material preset), a soft body (a closed mesh filled with "
+                "particles on a lattice, its surface carried along and drawn) or a collider (a fixed triangle "
+                "mesh), scaled, turned from Z-up and placed; into this scene or a new one, one undo step. A file "
+                "that is not a mesh, or has no triangles or a bad number, is named and nothing changes"));
+    addEntry(tr("File › Export Animation…"),
+             tr("Run on from the current state, or replay the recorded run from the timeline between two times, and "
+                "write the motion of the imported meshes (or of the scene's "
+                "triangles, where none was imported) for Blender: a PC2 point cache with the OBJ it plays on "
+                "(Mesh Cache modifier), an OBJ per frame, or the last frame as glTF, PLY or STL; an imported mesh "
+                "in its file's own units and axes. A progress dialog can cancel it and keeps the frames written"));
+    addEntry(tr("springlab-sim --import MESH"),
+             tr("The same import with no window (--as cloth|soft|collider, --output SCENE.json); "
+                "--export-pc2, --export-obj and --export-mesh write a run's animation"));
+
     // generators: what Edit › Generate makes
     addSection(tr("Generate"));
     addEntry(tr("Edit › Generate… (Ctrl+G)"),

@@ -197,6 +197,14 @@ ImportMeshDialog::ImportMeshDialog(BrowseFunction browse, QWidget *parent)
     remake();
 }
 
+ImportMeshDialog::~ImportMeshDialog()
+{
+    // a field losing focus as its neighbours are deleted finishes its edit: it must not remake the
+    // preview into labels already gone
+    for (QObject *child : findChildren<QObject *>())
+        child->disconnect(this);
+}
+
 void ImportMeshDialog::setPath(const QString &path)
 {
     m_path->setText(path);
@@ -312,7 +320,9 @@ void ImportMeshDialog::remake()
         } else {
             count = tr("%n particle(s)", nullptr, result.particles) + QStringLiteral(", ") +
                     tr("%n spring(s)", nullptr, result.springs) + QStringLiteral(", ") +
-                    tr("%n triangle(s)", nullptr, result.triangles);
+                    (result.triangles > 0 || !m_mesh
+                         ? tr("%n triangle(s)", nullptr, result.triangles)
+                         : tr("drawn by its %n triangle(s)", nullptr, int(m_mesh->faces.size())));
             if (result.mass > 0.0)
                 count += tr("; %1 kg").arg(result.mass, 0, 'g', 4);
             if (result.volume > 0.0)

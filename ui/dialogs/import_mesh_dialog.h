@@ -34,6 +34,7 @@ public:
     using BrowseFunction = std::function<QString(const QString &current)>;
 
     explicit ImportMeshDialog(BrowseFunction browse, QWidget *parent = nullptr);
+    ~ImportMeshDialog() override;
 
     // the file to read; read at once, and the preview made again
     void setPath(const QString &path);

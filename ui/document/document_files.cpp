@@ -33,7 +33,8 @@ constexpr int kAutosaveChoices[] = {0, 30, 60, 120, 300, 600};
 // the examples in the handout's order; any others found in the resources follow
 constexpr const char *kExampleOrder[] = {"particles", "springs", "collisions", "pool", "pool-break", "cloth",
                                          "tearable-cloth", "stack", "heap",     "cloth-on-table", "stiff-cloth",
-                                         "stiff-chain", "cloth-crumple", "cloth-over-post"};
+                                         "stiff-chain", "cloth-crumple", "cloth-over-post", "mesh-flag",
+                                         "mesh-tablecloth", "mesh-soft-ball"};
 
 QString examplePath(const QString &name)
 {

@@ -4,6 +4,7 @@
 #include "video_encoder.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -80,7 +81,31 @@ ExportDialog::ExportDialog(Kind kind, BrowseFunction browse, QWidget *parent)
                                                          : defaults.duration,
                                tr(" s"), this);
         m_duration->setToolTip(tr("Simulated time to run from the current state"));
+        if (kind == Kind::Animation) {
+            // a run on from here, or the run already recorded: what was seen, replayed to the bit
+            m_source = new QComboBox(this);
+            m_source->setObjectName(QStringLiteral("exportSource"));
+            m_source->addItems({tr("A run on from the current state"), tr("The recorded run (timeline)")});
+            m_source->setToolTip(tr("The recorded run is replayed from the timeline's keyframes, exactly as it ran, "
+                                    "and the run is left where it was recorded"));
+            form->addRow(tr("Frames of"), m_source);
+        }
         form->addRow(tr("Duration"), m_duration);
+        if (kind == Kind::Animation) {
+            m_from = numberBox("exportFrom", 0.0, kMaxDuration, 0.0, tr(" s"), this);
+            m_to = numberBox("exportTo", 0.0, kMaxDuration, 0.0, tr(" s"), this);
+            m_from->setToolTip(tr("The recorded run's time of the first frame"));
+            m_to->setToolTip(tr("The recorded run's time of the last frame, at most"));
+            auto *range = new QHBoxLayout;
+            range->addWidget(m_from);
+            range->addWidget(new QLabel(tr("to"), this));
+            range->addWidget(m_to);
+            form->addRow(tr("Recorded from"), range);
+            connect(m_source, &QComboBox::currentIndexChanged, this, &ExportDialog::updateSummary);
+            for (QDoubleSpinBox *box : {m_from, m_to})
+                connect(box, &QDoubleSpinBox::valueChanged, this, &ExportDialog::updateSummary);
+            setTimeline(false, 0.0, 0.0, tr("nothing is recorded yet"));
+        }
     }
     if (kind == Kind::Trace) {
         setWindowTitle(tr("Export Trace CSV"));
@@ -240,8 +265,29 @@ MeshAnimationExport ExportDialog::animation() const
         settings.fps = m_fps->value();
         settings.duration = m_duration->value();
         settings.fileSpace = m_fileSpace->isChecked();
+        settings.fromTimeline = m_source->currentIndex() == 1;
+        settings.from = m_from->value();
+        settings.to = m_to->value();
     }
     return settings;
+}
+
+void ExportDialog::setTimeline(bool available, double first, double last, const QString &unavailable)
+{
+    if (!m_source)
+        return;
+    m_timelineUnavailable = available ? QString() : unavailable;
+    for (QDoubleSpinBox *box : {m_from, m_to}) {
+        const QSignalBlocker quiet(box);
+        box->setRange(available ? first : 0.0, available ? last : 0.0);
+    }
+    {
+        const QSignalBlocker quiet(m_from);
+        m_from->setValue(first);
+    }
+    const QSignalBlocker quiet(m_to);
+    m_to->setValue(last);
+    updateSummary();
 }
 
 void ExportDialog::setSurfaces(const QString &surfaces)
@@ -259,6 +305,7 @@ void ExportDialog::setAnimation(const MeshAnimationExport &settings)
     m_fps->setValue(settings.fps);
     m_duration->setValue(settings.duration);
     m_fileSpace->setChecked(settings.fileSpace);
+    m_source->setCurrentIndex(settings.fromTimeline ? 1 : 0);
 }
 
 TraceExport ExportDialog::trace() const
@@ -326,17 +373,37 @@ void ExportDialog::updateSummary()
         break;
     }
     case Kind::Animation: {
-        const int frames = sequenceFrameCount(m_fps->value(), m_duration->value());
-        m_summary->setText(m_surfaces.isEmpty()
-                               ? tr("The scene has no surface to export: import a mesh, or make a cloth.")
-                               : tr("%1 frames of %2, run from the current state; frame k holds the first step at "
-                                    "or after k / %3 s. Frames are written as the run goes, never held. Cancel "
-                                    "stops after the frame being written and keeps those written.")
-                                     .arg(frames)
-                                     .arg(m_surfaces)
-                                     .arg(m_fps->value(), 0, 'g', 6));
-        if (m_surfaces.isEmpty())
+        const bool recorded = m_source->currentIndex() == 1;
+        m_duration->setEnabled(!recorded);
+        m_from->setEnabled(recorded && m_timelineUnavailable.isEmpty());
+        m_to->setEnabled(recorded && m_timelineUnavailable.isEmpty());
+        if (m_surfaces.isEmpty()) {
+            m_summary->setText(tr("The scene has no surface to export: import a mesh, or make a cloth."));
             m_buttons->button(QDialogButtonBox::Ok)->setEnabled(false);
+        } else if (recorded && !m_timelineUnavailable.isEmpty()) {
+            m_summary->setText(tr("The recorded run cannot be exported: %1.").arg(m_timelineUnavailable));
+            m_buttons->button(QDialogButtonBox::Ok)->setEnabled(false);
+        } else if (recorded) {
+            // frame k at from + k / rate, up to `to`
+            const double span = std::max(0.0, m_to->value() - m_from->value());
+            const int frames = int(std::floor(span * m_fps->value() * (1.0 + 1e-12) + 1e-9)) + 1;
+            m_summary->setText(tr("%1 frames of %2 from the recorded run, %3 s to %4 s, replayed from the timeline "
+                                  "exactly as it ran; frame k holds the first step at or after %3 + k / %5 s. Cancel "
+                                  "stops after the frame being written and keeps those written.")
+                                   .arg(frames)
+                                   .arg(m_surfaces)
+                                   .arg(m_from->value(), 0, 'g', 6)
+                                   .arg(m_to->value(), 0, 'g', 6)
+                                   .arg(m_fps->value(), 0, 'g', 6));
+        } else {
+            const int frames = sequenceFrameCount(m_fps->value(), m_duration->value());
+            m_summary->setText(tr("%1 frames of %2, run from the current state; frame k holds the first step at "
+                                  "or after k / %3 s. Frames are written as the run goes, never held. Cancel "
+                                  "stops after the frame being written and keeps those written.")
+                                   .arg(frames)
+                                   .arg(m_surfaces)
+                                   .arg(m_fps->value(), 0, 'g', 6));
+        }
         break;
     }
     }

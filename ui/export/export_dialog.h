@@ -2,8 +2,9 @@
 // ExportDialog: File › Export's small dialog, for an image (width, height, file), an image sequence
 // (frame rate, duration, width, height, folder, and an MP4 where ffmpeg is installed, else a
 // clear note that it is not), a trace (duration, every K steps, file) or an animation (frame
-// rate, duration, a PC2 file, a folder of OBJ frames, a last-frame mesh, the files' coordinates). Browse asks the window
-// for a path, through the same hook as every file dialog, so tests answer it without a modal dialog.
+// rate, a run on for a duration or the recorded run from one time to another, a PC2 file, a folder
+// of OBJ frames, a last-frame mesh, the files' coordinates). Browse asks the window for a path,
+// through the same hook as every file dialog, so tests answer it without a modal dialog.
 
 #include "export_settings.h"
 
@@ -12,6 +13,7 @@
 #include <functional>
 
 class QCheckBox;
+class QComboBox;
 class QDialogButtonBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -48,6 +50,9 @@ public:
     void setSurfaces(const QString &surfaces);
     // an animation's other outputs, shown as they were last time
     void setAnimation(const MeshAnimationExport &settings);
+    // the run the timeline holds, from first to last s, which an animation may be taken from;
+    // unavailable (with the reason shown) when it holds none or a session is being recorded
+    void setTimeline(bool available, double first, double last, const QString &unavailable = QString());
 
 private:
     void browse();
@@ -67,6 +72,10 @@ private:
     QLineEdit *m_objFolder = nullptr;   // an animation's OBJ frames
     QLineEdit *m_meshPath = nullptr;    // and its last frame
     QCheckBox *m_fileSpace = nullptr;
+    QComboBox *m_source = nullptr;      // an animation of a run on, or of the recorded run
+    QDoubleSpinBox *m_from = nullptr;   // the recorded run's part, s
+    QDoubleSpinBox *m_to = nullptr;
+    QString m_timelineUnavailable;      // why the recorded run cannot be chosen; empty: it can
     QString m_surfaces;
     QLabel *m_ffmpegNote = nullptr;
     QLabel *m_summary = nullptr;

@@ -4,6 +4,9 @@
 // trace. It never touches the worker's state: it pauses the run, posts as many single steps as the
 // next export step is away (the worker applies a burst of them in one tick) and waits for the frame
 // that follows the last. The first export step is usually 0: the state the run was paused at.
+// With Source::Timeline the steps are the run's own (counted since it was opened or reset) and
+// each is shown by scrubbing the timeline to it, replayed from its keyframe: the recorded run,
+// exactly, and nothing recorded is lost (Export Animation's "the recorded run").
 
 #include <QObject>
 #include <QString>
@@ -26,14 +29,17 @@ class ExportRun : public QObject {
 
 public:
     enum class Outcome { Done, Cancelled, Failed };
+    // where the frames come from: a run on from the paused state, or the timeline's recording
+    enum class Source { RunOn, Timeline };
 
     // called with the snapshot at each export step, in order, and its index; returns empty to go
     // on, or the message that stops the export
     using FrameFunction = std::function<QString(const std::shared_ptr<const core::Snapshot> &snapshot, int index)>;
 
-    // steps: non-decreasing, counted from the step the run is paused at
+    // steps: non-decreasing, counted from the step the run is paused at (Source::Timeline: the
+    // run's own step numbers, each one the timeline holds)
     ExportRun(SimulationController &controller, std::vector<std::uint64_t> steps, FrameFunction onFrame,
-              QObject *parent = nullptr);
+              QObject *parent = nullptr, Source source = Source::RunOn);
 
     void start();
     // stops after the frame being handled, if any; finished(Cancelled) follows at once
@@ -56,6 +62,7 @@ private:
     SimulationController &m_controller;
     std::vector<std::uint64_t> m_steps;
     FrameFunction m_onFrame;
+    Source m_source = Source::RunOn;
     std::uint64_t m_awaited = 0;    // the edit whose frame is the next to hand over
     std::uint64_t m_startStep = 0;  // the run's step when it was paused
     bool m_started = false;         // the paused frame has come

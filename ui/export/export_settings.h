@@ -30,16 +30,22 @@ struct TraceExport {
     int every = 1;          // a set of rows every K steps, the first included
 };
 
-// File › Export Animation: the deforming surfaces (imported meshes, or the scene's sheet) from where
-// the run is, as a PC2 point cache with the OBJ of its first frame beside it, an OBJ a frame, and
-// the last frame in a format of its extension's (core/io/animation_export.h); any may be left out
+// File › Export Animation: the deforming surfaces (imported meshes, or the scene's sheet) of a run
+// on from where it is, or of the run the timeline recorded, as a PC2 point cache with the OBJ of
+// its first frame beside it, an OBJ a frame, and the last frame in a format of its extension's
+// (core/io/animation_export.h); any may be left out
 struct MeshAnimationExport {
     QString pc2Path;
     QString objFolder;
     QString meshPath;
     double fps = 24.0;      // frames per simulated second
-    double duration = 5.0;  // s of simulated time
+    double duration = 5.0;  // s of simulated time, run on from the current state
     bool fileSpace = true;  // where the imported files have their vertices, else the scene's
+    // the recorded run instead, from `from` to `to` (s of the run's time), replayed from the
+    // timeline's keyframes: what was seen, to the bit, without running on
+    bool fromTimeline = false;
+    double from = 0.0;
+    double to = 0.0;
 };
 
 }  // namespace ui

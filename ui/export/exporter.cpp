@@ -136,6 +136,13 @@ void Exporter::showDialog(ExportKind kind)
         for (const core::MeshDesc &mesh : core::exportedMeshes(m_document.scene()))
             surfaces << tr("%1 (%n vertices)", nullptr, mesh.vertexCount()).arg(QString::fromStdString(mesh.name));
         dialog->setSurfaces(surfaces.join(QStringLiteral(", ")));
+        const std::shared_ptr<const SimulationFrame> frame = m_controller.frame();
+        if (!frame || frame->timeline.empty)
+            dialog->setTimeline(false, 0.0, 0.0, tr("nothing is recorded yet: play the run first"));
+        else if (frame->timeline.locked)
+            dialog->setTimeline(false, 0.0, 0.0, tr("a session is being recorded: stop it first (Ctrl+R)"));
+        else
+            dialog->setTimeline(true, frame->timeline.firstTime, frame->timeline.lastTime);
     }
 
     // shown without a nested event loop; what was asked for starts when it is accepted
@@ -291,7 +298,35 @@ bool Exporter::startAnimationExport(const MeshAnimationExport &settings, QString
         return failWith(error, tr("%1: an export is running already").arg(title));
     const core::SceneDesc &scene = m_document.scene();
     const double timeStep = scene.settings.timeStep;
-    const double steps = std::round(settings.duration / timeStep);
+    double steps = std::round(settings.duration / timeStep);
+    if (settings.fromTimeline) {
+        // the recorded run's steps are its own, time = step × h: checked, as an edit of the time
+        // step during the run breaks it
+        const std::shared_ptr<const SimulationFrame> frame = m_controller.frame();
+        if (!frame || frame->timeline.empty)
+            return failWith(error, tr("%1: the timeline holds no recorded run: play the run first").arg(title));
+        const TimelineInfo &timeline = frame->timeline;
+        if (timeline.locked)
+            return failWith(error, tr("%1: a session is being recorded; stop it first (Ctrl+R)").arg(title));
+        const auto atItsStep = [timeStep](double time, std::uint64_t step) {
+            return std::abs(time - double(step) * timeStep) <= 1e-9 * std::max(1.0, std::abs(time));
+        };
+        if (!atItsStep(timeline.firstTime, timeline.firstStep) || !atItsStep(timeline.lastTime, timeline.lastStep))
+            return failWith(error, tr("%1: the time step was changed during the recorded run, so its times are not "
+                                      "its steps × %2 s; export a run on from the current state instead")
+                                       .arg(title)
+                                       .arg(timeStep));
+        const double slack = 0.5 * timeStep;
+        if (!(settings.from >= timeline.firstTime - slack) || !(settings.to <= timeline.lastTime + slack) ||
+            !(settings.to >= settings.from))
+            return failWith(error, tr("%1: the timeline holds the run from %2 s to %3 s; %4 s to %5 s is not within it")
+                                       .arg(title)
+                                       .arg(timeline.firstTime)
+                                       .arg(timeline.lastTime)
+                                       .arg(settings.from)
+                                       .arg(settings.to));
+        steps = double(timeline.lastStep);
+    }
     if (!(settings.duration >= 0.0) || !(steps <= double(std::numeric_limits<int>::max())))
         return failWith(error, tr("%1: %2 s at a time step of %3 s is not a duration that can be run")
                                    .arg(title)
@@ -309,9 +344,17 @@ bool Exporter::startAnimationExport(const MeshAnimationExport &settings, QString
     options.meshPath = settings.meshPath;
     options.fps = settings.fps;
     options.space = settings.fileSpace ? core::MeshSpace::File : core::MeshSpace::Scene;
+    if (settings.fromTimeline) {
+        options.from = std::max(0.0, settings.from);
+        options.to = settings.to;
+    }
     auto exported = std::make_shared<io::AnimationExport>();
     if (const QString failure = exported->open(options, scene, timeStep, std::uint64_t(steps)); !failure.isEmpty())
         return failWith(error, tr("%1: %2").arg(title, failure));
+    if (settings.fromTimeline && exported->frameSteps().front() < m_controller.frame()->timeline.firstStep) {
+        exported->cancel();
+        return failWith(error, tr("%1: the first frame's step is before the timeline's first").arg(title));
+    }
     auto *run = new ExportRun(
         m_controller, exported->frameSteps(),
         [exported, positions = std::make_shared<Eigen::Matrix3Xd>()](
@@ -324,7 +367,7 @@ bool Exporter::startAnimationExport(const MeshAnimationExport &settings, QString
                     (*positions)(a, i) = double(snapshot->positions[3 * std::size_t(i) + std::size_t(a)]);
             return exported->writeDue(exported->frameSteps()[std::size_t(index)], *positions);
         },
-        this);
+        this, settings.fromTimeline ? ExportRun::Source::Timeline : ExportRun::Source::RunOn);
     return begin(run, tr("Writing the animation..."), [exported](int, QString *failure) {
         // a cancelled export keeps the frames written, in complete files
         *failure = exported->finish();

@@ -226,6 +226,7 @@ void SimulationWorker::publish(Frame kind)
     info.firstTime = timeline.firstTime();
     info.lastTime = timeline.lastTime();
     info.scrubStep = scrubber.scrubStep();
+    info.scrubPending = scrubber.pendingStep();
     info.usedBytes = timeline.usedBytes();
     info.budgetBytes = timeline.budget();
     info.keyframeOverBudget = timeline.keyframeOverBudget();
