@@ -123,6 +123,7 @@ private:
     bool readMesh(qsizetype m);
     bool readMeshVertices(JsonToken first, core::MeshDesc &mesh, const QString &path);
     bool readMeshFaces(JsonToken first, core::MeshDesc &mesh, const QString &path);
+    bool readIndexTriples(JsonToken first, const QString &listPath, const QString &of, std::vector<std::array<int, 3>> &out);
     bool checkHeader();
 
     bool fail(const QString &path, const QString &reason)
@@ -539,14 +540,22 @@ bool SceneTextReader::checkImpulse(std::array<Item, kImpulseKeys.size()> &items,
 bool SceneTextReader::readTriangles(JsonToken first)
 {
     m_section = &m_triangles;
-    const auto listPath = [] { return u"triangles"_s; };
+    return readIndexTriples(first, u"triangles"_s, u"particle"_s, m_scene.triangles);
+}
+
+// an array of arrays of three indices, of particles (a sheet's triangles) or of vertices (a mesh's
+// faces), into out; the section's first failure stops the reading of values, not of tokens
+bool SceneTextReader::readIndexTriples(JsonToken first, const QString &listPath, const QString &of,
+                                       std::vector<std::array<int, 3>> &out)
+{
     if (first != JsonToken::BeginArray) {
         Item item;
         if (!take(first, item))
             return false;
-        expected(listPath, u"an array"_s, first);
+        expected([&] { return listPath; }, u"an array"_s, first);
         return true;
     }
+    const QString triple = u"an array of 3 "_s + of + u" indices"_s;
     for (qsizetype i = 0;; ++i) {
         const JsonToken token = m_in.next();
         if (token == JsonToken::EndArray)
@@ -554,15 +563,15 @@ bool SceneTextReader::readTriangles(JsonToken first)
         Item item;
         if (!take(token, item))
             return false;
-        if (m_triangles.failed())
+        if (m_section->failed())
             continue;
-        const auto path = [i] { return elementPath(u"triangles"_s, i); };
+        const auto path = [&] { return elementPath(listPath, i); };
         if (item.kind != JsonToken::BeginArray) {
-            expected(path, u"an array of 3 particle indices"_s, item.kind);
+            expected(path, triple, item.kind);
             continue;
         }
         if (item.size != 3) {
-            fail(path(), u"expected an array of 3 particle indices, got "_s + QString::number(item.size));
+            fail(path(), u"expected "_s + triple + u", got "_s + QString::number(item.size));
             continue;
         }
         std::array<int, 3> corners{};
@@ -571,7 +580,7 @@ bool SceneTextReader::readTriangles(JsonToken first)
             ok = read(item.itemKinds[std::size_t(c)], item.items[std::size_t(c)], [&] { return elementPath(path(), c); },
                       corners[std::size_t(c)]);
         if (ok)
-            m_scene.triangles.push_back(corners);
+            out.push_back(corners);
     }
 }
 
@@ -733,39 +742,7 @@ bool SceneTextReader::readMeshVertices(JsonToken first, core::MeshDesc &mesh, co
 // a mesh's faces: arrays of three vertex indices
 bool SceneTextReader::readMeshFaces(JsonToken first, core::MeshDesc &mesh, const QString &path)
 {
-    if (first != JsonToken::BeginArray) {
-        Item item;
-        if (!take(first, item))
-            return false;
-        expected([&] { return path; }, u"an array"_s, first);
-        return true;
-    }
-    for (qsizetype i = 0;; ++i) {
-        const JsonToken token = m_in.next();
-        if (token == JsonToken::EndArray)
-            return true;
-        Item item;
-        if (!take(token, item))
-            return false;
-        if (m_meshes.failed())
-            continue;
-        const auto facePath = [&] { return elementPath(path, i); };
-        if (item.kind != JsonToken::BeginArray) {
-            expected(facePath, u"an array of 3 vertex indices"_s, item.kind);
-            continue;
-        }
-        if (item.size != 3) {
-            fail(facePath(), u"expected an array of 3 vertex indices, got "_s + QString::number(item.size));
-            continue;
-        }
-        std::array<int, 3> corners{};
-        bool ok = true;
-        for (int c = 0; c < 3 && ok; ++c)
-            ok = read(item.itemKinds[std::size_t(c)], item.items[std::size_t(c)], [&] { return elementPath(facePath(), c); },
-                      corners[std::size_t(c)]);
-        if (ok)
-            mesh.faces.push_back(corners);
-    }
+    return readIndexTriples(first, path, u"vertex"_s, mesh.faces);
 }
 
 bool SceneTextReader::read()

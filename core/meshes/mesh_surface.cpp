@@ -55,17 +55,49 @@ void meshVertexPositions(const MeshDesc &mesh, const Eigen::Matrix3Xd &positions
 
 std::vector<MeshDesc> exportedMeshes(const SceneDesc &scene)
 {
-    if (!scene.meshes.empty())
-        return scene.meshes;
     const std::vector<std::array<int, 3>> triangles = listedTriangles(scene);
-    if (triangles.empty())
-        return {};
-    std::vector<int> every(scene.particles.size());
-    for (std::size_t i = 0; i < every.size(); ++i)
-        every[i] = int(i);
-    MeshDesc mesh = meshOnParticles(every, triangles);
-    mesh.name = scene.name.empty() ? "surface" : scene.name;
-    return {mesh};
+    const std::string name = scene.name.empty() ? "surface" : scene.name;
+    if (scene.meshes.empty()) {
+        if (triangles.empty())
+            return {};
+        std::vector<int> every(scene.particles.size());
+        for (std::size_t i = 0; i < every.size(); ++i)
+            every[i] = int(i);
+        MeshDesc mesh = meshOnParticles(every, triangles);
+        mesh.name = name;
+        return {mesh};
+    }
+    // the imported meshes, and the sheets none of them covers (a cloth generated over an imported
+    // table) as one more surface over their own particles, in the particles' order
+    std::vector<MeshDesc> meshes = scene.meshes;
+    std::vector<char> imported(scene.particles.size(), 0);
+    for (const MeshDesc &mesh : scene.meshes)
+        for (const int p : mesh.particles)
+            if (p >= 0 && std::size_t(p) < imported.size())
+                imported[std::size_t(p)] = 1;
+    std::vector<int> vertexOf(scene.particles.size(), -1);
+    std::vector<std::array<int, 3>> rest;
+    for (const std::array<int, 3> &t : triangles)
+        if (!imported[std::size_t(t[0])] && !imported[std::size_t(t[1])] && !imported[std::size_t(t[2])]) {
+            rest.push_back(t);
+            for (const int p : t)
+                vertexOf[std::size_t(p)] = 0;
+        }
+    if (rest.empty())
+        return meshes;
+    std::vector<int> particleOf;
+    for (std::size_t p = 0; p < vertexOf.size(); ++p)
+        if (vertexOf[p] == 0) {
+            vertexOf[p] = int(particleOf.size());
+            particleOf.push_back(int(p));
+        }
+    for (std::array<int, 3> &t : rest)
+        for (int &corner : t)
+            corner = vertexOf[std::size_t(corner)];
+    MeshDesc sheets = meshOnParticles(particleOf, std::move(rest));
+    sheets.name = name + "-sheets";
+    meshes.push_back(std::move(sheets));
+    return meshes;
 }
 
 MeshDesc meshOnParticles(const std::vector<int> &particleOf, std::vector<std::array<int, 3>> faces)

@@ -27,7 +27,8 @@ void meshVertexPositions(const MeshDesc &mesh, const Eigen::Matrix3Xd &positions
 
 // the surfaces an export writes: the scene's imported meshes, or, in a scene with none, one of
 // every particle (in their order) with the scene's triangles, named after the scene; empty when
-// the scene has no triangles either
+// the scene has no triangles either. Beside imported meshes, the triangles none of them covers (a
+// generated cloth) are one more surface, "NAME-sheets", over their particles in increasing order
 std::vector<MeshDesc> exportedMeshes(const SceneDesc &scene);
 
 // a cloth's or a collider's mesh: vertex v on particle particleOf[v], weight 1

@@ -2,7 +2,7 @@
 // matches the run's positions to float32 precision, in the file's vertex order with its placement
 // undone; the OBJ beside it and the OBJ sequence hold the same numbers; a cancelled export leaves
 // nothing; each frame is on disk once written (streamed); a frame of a scene edited meanwhile is
-// refused.
+// refused; a cloth generated beside an imported mesh is a surface of its own.
 
 #include "mesh_files.h"
 #include "point_cache_read.h"
@@ -10,6 +10,7 @@
 #include "core/io/animation_export.h"
 #include "core/meshes/mesh_import.h"
 #include "core/meshes/mesh_surface.h"
+#include "core/model/generators.h"
 #include "core/model/model.h"
 #include "core/model/state.h"
 #include "core/step.h"
@@ -210,6 +211,36 @@ private slots:
         cancelled.cancel();
         QVERIFY(QDir(m_dir.filePath(u"cancelled"_s)).entryList({u"*.pc2*"_s, u"*.obj"_s}, QDir::Files).isEmpty());
         QVERIFY(QDir(options.objFolder).entryList(QDir::Files).isEmpty());
+    }
+
+    void aGeneratedClothBesideAnImportedMeshIsExportedToo()
+    {
+        // a table imported as a collider, then a 6 × 5 cloth generated over it: two surfaces, the
+        // table's and the cloth's 30 particles with its 40 triangles, in the particles' order
+        core::SceneDesc scene;
+        core::MeshImportOptions table;
+        table.kind = core::MeshKind::Collider;
+        table.name = "table";
+        QVERIFY(core::sceneFromMesh(scene, test::splitCube(1.0), table).ok());
+        scene.name = "drape";
+        core::ClothOptions cloth;
+        cloth.rows = 5;
+        cloth.cols = 6;
+        cloth.height = 2.0;
+        cloth.sheetCollisions = true;  // its triangles listed
+        const core::SceneDesc sheet = core::makeCloth(cloth);
+        const int first = int(scene.particles.size());
+        scene.particles.insert(scene.particles.end(), sheet.particles.begin(), sheet.particles.end());
+        for (const std::array<int, 3> &t : sheet.triangles)
+            scene.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+        const std::vector<core::MeshDesc> meshes = core::exportedMeshes(scene);
+        QCOMPARE(meshes.size(), std::size_t(2));
+        QCOMPARE(meshes[0].name, std::string("table"));
+        QCOMPARE(meshes[1].name, std::string("drape-sheets"));
+        QCOMPARE(meshes[1].vertexCount(), 30);
+        QCOMPARE(meshes[1].faces.size(), std::size_t(2 * 4 * 5));
+        QCOMPARE(meshes[1].particles.front(), first);
+        QCOMPARE(meshes[1].faces.front(), (std::array<int, 3>{sheet.triangles.front()}));
     }
 
     void framesGoToDiskAsTheyCome()
