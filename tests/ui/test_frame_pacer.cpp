@@ -1,6 +1,7 @@
 // The pace of the frames of a playing run: a run that keeps up gets up to 60 frames/s; one that
 // falls behind gets frames spaced so that drawing takes a tenth of the wall time, by the cost
-// measured as they are drawn; the frame rate never reads 0 once a frame was drawn.
+// measured as they are drawn, but never more than a second apart; the cost starts over with each
+// scene and Play; the frame rate never reads 0 once a frame was drawn.
 
 #include "ui/simulation/frame_pacer.h"
 
@@ -14,6 +15,8 @@ private slots:
     void behindGetsItsShare();
     void costFollowsTheLatestFrames();
     void slowFramesNeverReadZero();
+    void aFrameEverySecondAtMost();
+    void startsOverWithNothingMeasured();
 };
 
 void TestFramePacer::keepingUpGetsTheMostFrames()
@@ -71,6 +74,31 @@ void TestFramePacer::slowFramesNeverReadZero()
     QVERIFY(std::abs(pacer.framesPerSecond() - 30.0) < 1e-9);
     pacer.restartRate(20.0);
     QCOMPARE(pacer.framesPerSecond(), 0.0);
+}
+
+void TestFramePacer::aFrameEverySecondAtMost()
+{
+    // frames of 3 s (10⁶ particles on a software renderer) would be 30 s apart by the share alone
+    ui::FramePacer pacer;
+    pacer.drawn(3.0, 3.0);
+    QCOMPARE(pacer.interval(true), ui::FramePacer::kMostSecondsBetweenFrames);
+    QCOMPARE(ui::FramePacer::kMostSecondsBetweenFrames, 1.0);
+}
+
+void TestFramePacer::startsOverWithNothingMeasured()
+{
+    // the cost of the last scene's frames is forgotten: the next run starts at the most frames
+    ui::FramePacer pacer;
+    for (int i = 0; i < 5; ++i)
+        pacer.drawn(2.0, 2.0 * (i + 1));
+    QVERIFY(pacer.frameCost() > 1.0);
+    pacer.startOver(20.0);
+    QCOMPARE(pacer.frameCost(), 0.0);
+    QCOMPARE(pacer.framesPerSecond(), 0.0);
+    QCOMPARE(pacer.interval(true), 1.0 / ui::FramePacer::kMostFramesPerSecond);
+    // and the first frame measured is taken as it is, not averaged with the forgotten ones
+    pacer.drawn(0.05, 20.5);
+    QCOMPARE(pacer.frameCost(), 0.05);
 }
 
 QTEST_APPLESS_MAIN(TestFramePacer)

@@ -8,6 +8,7 @@
 // applies its pick as one undoable edit. Waits are on frames, never fixed sleeps.
 
 #include "ui/dialogs/accuracy_dialog.h"
+#include "ui/simulation/frame_pacer.h"
 #include "ui/dialogs/help_dialog.h"
 #include "ui/panels/inspector_field.h"
 #include "ui/panels/inspector_panel.h"
@@ -75,6 +76,7 @@ private slots:
     void undoKeysWorkWhileAFieldHasTheFocus();
     void selectAllSaysWhatItSelected();
     void openingAnotherSceneClearsTheSelection();
+    void framePacingStartsOverWithEachSceneAndPlay();
     void warningsGoWhenStale();
     void blowupPausesAndShowsInTheStatusBar();
     void arrowKeysSteerThePoolBall();
@@ -383,6 +385,24 @@ void TestMainWindow::openingAnotherSceneClearsTheSelection()
     m_window->viewport()->setFocus();
     press(Qt::Key_Delete);
     QCOMPARE(m_window->document()->scene().particles.size(), count);
+}
+
+void TestMainWindow::framePacingStartsOverWithEachSceneAndPlay()
+{
+    // a frame interval left by costly frames (30 s: a scene of 10⁶ particles drawn in software)
+    // is not the next scene's, nor the next Play's: both start at the most frames again
+    const double most = 1.0 / ui::FramePacer::kMostFramesPerSecond;
+    controller().setFrameInterval(30.0);
+    QCOMPARE(controller().frameInterval(), 30.0);
+    QString error;
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("collisions"), &error), qPrintable(error));
+    QVERIFY(std::abs(controller().frameInterval() - most) < 1e-9);
+    controller().setFrameInterval(30.0);
+    press(Qt::Key_F4);
+    QTRY_VERIFY(controller().frame()->running);
+    QVERIFY2(controller().frameInterval() <= ui::FramePacer::kMostSecondsBetweenFrames,
+             qPrintable(QString::number(controller().frameInterval())));
+    press(Qt::Key_F4);
 }
 
 void TestMainWindow::warningsGoWhenStale()

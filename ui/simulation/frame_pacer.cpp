@@ -30,7 +30,14 @@ void FramePacer::drawn(double cost, double now)
 double FramePacer::interval(bool behind) const
 {
     const double least = 1.0 / kMostFramesPerSecond;
-    return behind ? std::max(least, m_cost / kDrawShare) : least;
+    return behind ? std::clamp(m_cost / kDrawShare, least, kMostSecondsBetweenFrames) : least;
+}
+
+void FramePacer::startOver(double now)
+{
+    m_cost = 0.0;
+    m_measured = false;
+    restartRate(now);
 }
 
 void FramePacer::restartRate(double now)

@@ -5,8 +5,11 @@
 // falls behind real time, frames are spaced so that drawing them takes at most kDrawShare of the
 // wall time and the worker keeps the rest; a run that keeps up gets up to kMostFramesPerSecond,
 // since drawing then uses time the worker leaves idle. The cost of a frame is measured as it is
-// drawn (from its arrival to the screen), averaged over the latest few. The frame rate is counted
-// over windows of at least kRateWindowSeconds that hold a frame, so a slow rate never reads 0.
+// drawn (from its arrival to the screen), averaged over the latest few, and starts over with each
+// scene and each Play: a cost measured on a scene of 10⁶ particles must not space the frames of
+// the next small one. However costly the frames, a playing run shows one at least every
+// kMostSecondsBetweenFrames, so that it never looks hung. The frame rate is counted over windows of
+// at least kRateWindowSeconds that hold a frame, so a slow rate never reads 0.
 // Qt-free: times are seconds on any steady clock, given by the caller.
 
 namespace ui {
@@ -16,6 +19,7 @@ public:
     static constexpr double kMostFramesPerSecond = 60.0;
     static constexpr double kDrawShare = 0.1;
     static constexpr double kRateWindowSeconds = 1.0;
+    static constexpr double kMostSecondsBetweenFrames = 1.0;
 
     // a frame reached the screen at `now`, `cost` seconds after it arrived
     void drawn(double cost, double now);
@@ -26,6 +30,8 @@ public:
 
     // the frame rate starts over (a run starts) at `now`
     void restartRate(double now);
+    // the cost and the rate start over (another scene, or Play) at `now`: nothing measured yet
+    void startOver(double now);
     // frames per second over the latest window; 0 before the first window closed
     double framesPerSecond() const { return m_framesPerSecond; }
 

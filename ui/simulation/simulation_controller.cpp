@@ -203,6 +203,11 @@ void SimulationController::setFrameInterval(double seconds)
                                           std::memory_order_relaxed);
 }
 
+double SimulationController::frameInterval() const
+{
+    return m_worker ? double(m_worker->frameIntervalNs().load(std::memory_order_relaxed)) * 1e-9 : 0.0;
+}
+
 void SimulationController::setRunning(bool running)
 {
     if (m_running == running)

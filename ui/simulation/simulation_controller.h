@@ -75,6 +75,7 @@ public:
     // the shortest time between two frames that bring nothing but new steps (s): the pace the
     // window draws at (FramePacer); 0, the default: every tick's steps are shown
     void setFrameInterval(double seconds);
+    double frameInterval() const;
 
     // the particle whose position and velocity the frames' plot samples carry from the worker's
     // next tick on (-1: none)

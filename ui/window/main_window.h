@@ -146,6 +146,7 @@ private:
     void createFramePacing();
     void frameArrived();
     void frameDrawn();
+    void startFramePacingOver();
     // the timeline (main_window_timeline.cpp)
     void createTimeline();
     void showTimeline(const SimulationFrame &frame);

@@ -16,11 +16,21 @@ void MainWindow::createFramePacing()
 {
     m_paceClock.start();
     connect(m_viewport, &Viewport::frameTimeMeasured, this, &MainWindow::frameDrawn);
+    // each Play and each scene measures its own frames: what a huge scene cost says nothing of
+    // the next (the springs example after one of 10⁶ particles showed one frame in 30 s)
     connect(m_controller, &SimulationController::runningChanged, this, [this](bool running) {
         if (running)
-            m_pacer.restartRate(double(m_paceClock.nsecsElapsed()) * 1e-9);
+            startFramePacingOver();
         m_framesLabel->setText(framesText(running, m_pacer.framesPerSecond()));
     });
+    connect(m_controller, &SimulationController::sceneReplaced, this, [this] { startFramePacingOver(); });
+}
+
+void MainWindow::startFramePacingOver()
+{
+    m_pacer.startOver(double(m_paceClock.nsecsElapsed()) * 1e-9);
+    m_frameArrival = -1.0;
+    m_controller->setFrameInterval(m_pacer.interval(false));
 }
 
 void MainWindow::frameArrived()
