@@ -35,6 +35,13 @@ void RunDiagnostics::restarted(const core::Model &model, const core::State &stat
     m_initialEnergies = core::energies(model, state);
 }
 
+void RunDiagnostics::editedBy(const core::Energies &before, const core::Energies &after)
+{
+    m_initialEnergies.kinetic += after.kinetic - before.kinetic;
+    m_initialEnergies.gravitational += after.gravitational - before.gravitational;
+    m_initialEnergies.spring += after.spring - before.spring;
+}
+
 void RunDiagnostics::afterSteps(double seconds, bool blewUp, const std::shared_ptr<const core::Model> &model,
                                 const core::State &state)
 {

@@ -61,6 +61,9 @@ public:
     void resetCosts();
     // the run starts again from the scene's initial conditions: the energies the drift is measured from
     void restarted(const core::Model &model, const core::State &state);
+    // an edit of the running scene changed the energy from `before` to `after`: that is work the
+    // user did, not drift, so the drift's baseline moves with it
+    void editedBy(const core::Energies &before, const core::Energies &after);
     // wall time the run was given, while running (s)
     void addWallTime(double seconds) { m_wallSinceEstimate += seconds; }
     // a tick's steps took seconds of computing and ended at state (the last good one if they blew
@@ -97,7 +100,7 @@ public:
     // before the first estimate or when a trial blew up
     std::optional<double> localError() const { return m_localError; }
     std::uint64_t localErrorStep() const { return m_localErrorStep; }
-    // the energies at the last reset or scene load
+    // the energies at the last reset or scene load, plus what the edits since changed them by
     const core::Energies &initialEnergies() const { return m_initialEnergies; }
     // computing time (s) since the scene was loaded: of the steps while running, and of the
     // estimates made between them

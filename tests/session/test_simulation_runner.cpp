@@ -81,6 +81,7 @@ private slots:
     void errorEstimateFollowsEdits();
     void errorEstimateRefreshesWhileRunning();
     void driftIsMeasuredFromTheLastReset();
+    void anUndoneEditIsNotDrift();
     void driftIsMeasuredFromAnEditBeforeTheFirstStep();
     void errorEstimateIsCheapOnTheCloth();
     void accuracyPlanIsMadeFromTheRunnersState();
@@ -581,14 +582,46 @@ void TestSimulationRunner::driftIsMeasuredFromTheLastReset()
     runner.advance(0.37, kNoBudgetLimit);
     QVERIFY(runner.snapshot()->energies.total() != runner.diagnostics().initialEnergies().total());
 
-    // a parameter change keeps the reference; a reset measures again from the initial state
+    // a parameter change mid-run is work the user did, not drift: the reference moves by what it
+    // changed (the softer spring stores less), so the drift reads the same after it; a reset
+    // measures again from the initial state
+    const auto drift = [&] { return runner.snapshot()->energies.total() - runner.diagnostics().initialEnergies().total(); };
+    const double driftBefore = drift();
+    const double storedBefore = runner.snapshot()->energies.spring;
     auto softer = std::make_shared<core::SceneDesc>(*scene);
     softer->springs[0].stiffness = 50.0;
     runner.apply(ui::SetSceneEdit{softer, ui::SceneChange::Parameters});
-    QCOMPARE(runner.diagnostics().initialEnergies().total(), initial.total());
+    QVERIFY(std::abs(runner.snapshot()->energies.spring - 0.5 * storedBefore) < 1e-12 * (1.0 + storedBefore));
+    QVERIFY(std::abs(runner.diagnostics().initialEnergies().total() - (initial.total() - 0.5 * storedBefore)) <
+            1e-12 * (1.0 + std::abs(initial.total())));
+    QVERIFY(std::abs(drift() - driftBefore) < 1e-12 * (1.0 + std::abs(initial.total())));
     runner.apply(ui::Reset{});
     QCOMPARE(runner.snapshot()->energies.total(), runner.diagnostics().initialEnergies().total());
     QVERIFY(runner.diagnostics().initialEnergies().total() != initial.total());  // the softer spring stores less
+}
+
+void TestSimulationRunner::anUndoneEditIsNotDrift()
+{
+    // a net moved (every particle: a transform), played, then moved back (its undo) mid-run: the
+    // energy the move back took out is the user's work, so ΔE reads what it read before the undo
+    // (it read -97 % with the moved scene's reference)
+    const auto scene = springScene(100.0, 0.01);
+    ui::SimulationRunner runner = runnerWith(scene);
+    auto moved = std::make_shared<core::SceneDesc>(*scene);
+    for (core::ParticleDesc &p : moved->particles)
+        p.position *= 0.5;  // rest lengths kept: the spring is compressed
+    runner.apply(ui::SetSceneEdit{moved, ui::SceneChange::Structure});
+    runner.apply(ui::Play{});
+    runner.advance(0.37, kNoBudgetLimit);
+    runner.apply(ui::Pause{});
+    const auto drift = [&] { return runner.snapshot()->energies.total() - runner.diagnostics().initialEnergies().total(); };
+    const double before = drift();
+    const double energyBefore = runner.snapshot()->energies.total();
+    runner.apply(ui::SetSceneEdit{scene, ui::SceneChange::Structure});
+    QVERIFY(runner.state().step > 0);  // the run went on through the undo
+    QVERIFY(std::abs(runner.snapshot()->energies.total() - energyBefore) > 1e-3 * std::abs(energyBefore));
+    QVERIFY2(std::abs(drift() - before) < 1e-9 * (1.0 + std::abs(energyBefore)),
+             qPrintable(QStringLiteral("%1 before, %2 after").arg(before).arg(drift())));
 }
 
 void TestSimulationRunner::driftIsMeasuredFromAnEditBeforeTheFirstStep()

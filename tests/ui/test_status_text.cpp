@@ -66,6 +66,12 @@ void TestStatusText::figures()
     QCOMPARE(ui::framesText(true, 0.0), QStringLiteral("… frames/s"));
     QCOMPARE(ui::framesText(false, 30.0), QString());
     QCOMPARE(ui::energyText(-12.5), QStringLiteral("E = -12.5 J"));
+    // round-off is 0: a scene at rest (9.76e-27 J), parts that cancel to a billionth
+    QCOMPARE(ui::energyText(core::Energies{9.76215e-27, 0.0, 0.0}), QStringLiteral("E = 0 J"));
+    QCOMPARE(ui::energyText(core::Energies{0.0, 3.0, -3.0 + 1e-15}), QStringLiteral("E = 0 J"));
+    // a small energy that is not round-off stays
+    QCOMPARE(ui::energyText(core::Energies{2.5e-9, 0.0, 0.0}), QStringLiteral("E = 2.5e-09 J"));
+    QCOMPARE(ui::energyText(core::Energies{1.0, 2.0, 0.5}), QStringLiteral("E = 3.5 J"));
 }
 
 void TestStatusText::scientific_data()

@@ -73,6 +73,14 @@ QString energyText(double joules)
     return tr("E = %1 J").arg(joules, 0, 'g', 6);
 }
 
+QString energyText(const core::Energies &energies)
+{
+    const double total = energies.total();
+    const double parts = std::abs(energies.kinetic) + std::abs(energies.gravitational) + std::abs(energies.spring);
+    const bool roundOff = std::abs(total) < kRoundOffJoules || std::abs(total) <= 1e-9 * parts;
+    return energyText(roundOff ? 0.0 : total);
+}
+
 QString scientificText(double value, int digits)
 {
     // Qt writes "3.0e-06": drop the mantissa's trailing zeros, the exponent's plus sign and its

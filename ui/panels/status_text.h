@@ -28,6 +28,10 @@ QString rateText(bool running, double realTimeFactor);
 QString stepsText(bool running, double stepsPerSecond, std::uint64_t owed = 0);
 QString framesText(bool running, double framesPerSecond);
 QString energyText(double joules);
+// the total of the energies, shown as 0 where it is round-off: nothing beside its parts (they
+// cancel to a billionth), or below kRoundOffJoules whatever they are (a scene at rest, 1e-27 J)
+inline constexpr double kRoundOffJoules = 1e-20;
+QString energyText(const core::Energies &energies);
 
 // a number in short scientific notation with at most `digits` significant digits: "3.2e-6", "1e-6"
 QString scientificText(double value, int digits = 2);

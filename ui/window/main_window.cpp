@@ -585,7 +585,7 @@ void MainWindow::frameChanged()
     m_rateLabel->setText(rateText(frame->running, frame->realTimeFactor));
     m_stepsLabel->setText(stepsText(frame->running, frame->stepsPerSecond, frame->stepsOwed));
     m_framesLabel->setText(framesText(frame->running, m_pacer.framesPerSecond()));
-    m_energyLabel->setText(energyText(snapshot.energies.total()));
+    m_energyLabel->setText(energyText(snapshot.energies));
     m_driftLabel->setText(driftText(frame->initialEnergies, snapshot.energies.total()));
     m_errorLabel->setText(localErrorText(frame->localError));
     m_errorLabel->setToolTip(tr("Local position error of one step of the integrator (one sub-step), estimated by "
