@@ -59,6 +59,12 @@ void RunDiagnostics::afterSteps(double seconds, bool blewUp, const std::shared_p
         estimate(true, model, state);
 }
 
+void RunDiagnostics::stepped()
+{
+    if (++m_stepsSinceEstimate * kEstimateShare >= kEstimateSteps)
+        m_estimateStale = true;
+}
+
 void RunDiagnostics::checkPairSpeed(const core::Model &model, const core::State &state)
 {
     const std::optional<core::PairSpeedExcess> excess = core::pairSpeedExcess(model, state);
@@ -86,6 +92,8 @@ void RunDiagnostics::estimate(bool counted, const std::shared_ptr<const core::Mo
     }
     m_localError = error;
     m_localErrorStep = state.step;
+    ++m_estimateCount;
+    m_stepsSinceEstimate = 0;
     const double seconds = secondsSince(start);
     m_lastEstimateSeconds = seconds;
     if (counted)

@@ -54,6 +54,14 @@ public:
     // what changed in the run: the state (estimate again), or the model too (and analyse the
     // stability limit again)
     void stateChanged() { m_estimateStale = true; }
+    // a Step taken while paused: the estimate is made again only once the Steps since the last
+    // have paid for it as the running steps do (1 / kEstimateShare times its cost, kEstimateSteps),
+    // by their count, not their time, so that the same Steps give the same estimates on any
+    // machine. A fresh estimate at every Step made a Step cost four
+    void stepped();
+    static constexpr double kEstimateSteps = 3.0;  // step doubling: a step and two half steps
+    // how many estimates were made since the scene was loaded
+    std::uint64_t estimateCount() const { return m_estimateCount; }
     // whether the estimate waits to be made again (a change, or an estimate cut short)
     bool estimateStale() const { return m_estimateStale; }
     void modelChanged();
@@ -130,6 +138,8 @@ private:
     std::uint64_t m_localErrorStep = 0;
     bool m_estimateStale = true;              // the model or the state changed since
     double m_wallSinceEstimate = 0.0;         // s of wall time run since the last estimate
+    std::uint64_t m_estimateCount = 0;
+    int m_stepsSinceEstimate = 0;             // Steps taken while paused since the last estimate
     double m_stepSecondsSinceEstimate = 0.0;  // s of computing spent on steps since then
     double m_lastEstimateSeconds = 0.0;       // s the last estimate took
     double m_stepSeconds = 0.0;

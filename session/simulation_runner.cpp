@@ -147,7 +147,7 @@ void SimulationRunner::stepOnceMessage()
             ++m_stepsTaken;
         else if (m_work.interrupted)
             m_stepsOwed = 1;
-        m_diagnostics.stateChanged();
+        m_diagnostics.stepped();
     }
 }
 
@@ -170,7 +170,7 @@ bool SimulationRunner::takeOwedSteps()
         --m_stepsOwed;
         ++m_stepsTaken;
         taken = true;
-        m_diagnostics.stateChanged();
+        m_diagnostics.stepped();
     }
     return taken;
 }

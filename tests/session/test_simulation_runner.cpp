@@ -524,7 +524,8 @@ void TestSimulationRunner::examplesStayInsideThePairSpeedLimit()
 void TestSimulationRunner::errorEstimateFollowsEdits()
 {
     // loaded: an estimate of the initial state, the same as step doubling's own
-    ui::SimulationRunner runner = runnerWith(springScene());
+    // (a step of 10 ms: stable for the 60 Steps below)
+    ui::SimulationRunner runner = runnerWith(springScene(100.0, 0.01));
     QVERIFY(!runner.diagnostics().localError().has_value());
     runner.updateEstimate();
     QVERIFY(runner.diagnostics().localError().has_value());
@@ -532,13 +533,27 @@ void TestSimulationRunner::errorEstimateFollowsEdits()
     QCOMPARE(*runner.diagnostics().localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
     QVERIFY(*runner.diagnostics().localError() > 0.0);
 
-    // a step, then another integrator: each time the estimate of the state and model now
+    // Steps while paused: the estimate, which costs about three steps, is made again only once
+    // the Steps have paid for it as running steps do (every 60th), so a Step costs one step
+    const int paidFor = int(ui::RunDiagnostics::kEstimateSteps / ui::RunDiagnostics::kEstimateShare);
+    QCOMPARE(paidFor, 60);
+    const std::uint64_t estimates = runner.diagnostics().estimateCount();
+    for (int k = 1; k < paidFor; ++k) {
+        runner.apply(ui::StepOnce{});
+        runner.updateEstimate();
+    }
+    QCOMPARE(runner.state().step, std::uint64_t(paidFor - 1));
+    QCOMPARE(runner.diagnostics().estimateCount(), estimates);
+    QCOMPARE(runner.diagnostics().localErrorStep(), 0u);
     runner.apply(ui::StepOnce{});
     runner.updateEstimate();
-    QCOMPARE(runner.diagnostics().localErrorStep(), 1u);
+    QCOMPARE(runner.diagnostics().estimateCount(), estimates + 1);
+    QCOMPARE(runner.diagnostics().localErrorStep(), std::uint64_t(paidFor));
     QCOMPARE(*runner.diagnostics().localError(), core::StepDoubling().estimate(runner.model(), runner.state()).value());
+
+    // another integrator: the estimate of the state and model now
     const double symplectic = *runner.diagnostics().localError();
-    auto rk4 = std::make_shared<core::SceneDesc>(*springScene());
+    auto rk4 = std::make_shared<core::SceneDesc>(*springScene(100.0, 0.01));
     rk4->settings.integrator = core::Integrator::Rk4;
     runner.apply(ui::SetSceneEdit{rk4, ui::SceneChange::Parameters});
     runner.updateEstimate();
