@@ -77,6 +77,7 @@ private slots:
     void selectAllSaysWhatItSelected();
     void openingAnotherSceneClearsTheSelection();
     void framePacingStartsOverWithEachSceneAndPlay();
+    void undoAndRedoSayWhatTheyDid();
     void warningsGoWhenStale();
     void blowupPausesAndShowsInTheStatusBar();
     void arrowKeysSteerThePoolBall();
@@ -403,6 +404,28 @@ void TestMainWindow::framePacingStartsOverWithEachSceneAndPlay()
     QVERIFY2(controller().frameInterval() <= ui::FramePacer::kMostSecondsBetweenFrames,
              qPrintable(QString::number(controller().frameInterval())));
     press(Qt::Key_F4);
+}
+
+void TestMainWindow::undoAndRedoSayWhatTheyDid()
+{
+    // an edit (A: collisions off), then Undo and Redo: the status bar names the edit each time
+    press(Qt::Key_A);
+    QTRY_VERIFY(!m_window->document()->scene().settings.planeCollisions);
+    press(Qt::Key_Z, Qt::ControlModifier);
+    QTRY_VERIFY(m_window->document()->scene().settings.planeCollisions);
+    QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("Undid “Collisions off”"));
+    press(Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QTRY_VERIFY(!m_window->document()->scene().settings.planeCollisions);
+    QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("Redid “Collisions off”"));
+    // two at once, from the history (a click in View › Undo History): both counted, the
+    // earliest named; and back again
+    QUndoStack *stack = m_window->document()->undoStack();
+    stack->push(new QUndoCommand(QStringLiteral("Second")));
+    const int top = stack->index();
+    stack->setIndex(top - 2);
+    QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("Undid 2 edits, back to before “Collisions off”"));
+    stack->setIndex(top);
+    QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("Redid 2 edits, up to “Second”"));
 }
 
 void TestMainWindow::warningsGoWhenStale()

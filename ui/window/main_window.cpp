@@ -56,6 +56,8 @@ namespace {
 
 // how long the status bar shows what the accuracy planner picked, ms
 constexpr int kPlanMessageMs = 20000;
+// how long the status bar says what an Undo or Redo did, ms
+constexpr int kUndoMessageMs = 5000;
 
 // the right-hand docks' width on a first start (the view gets the rest), px
 constexpr int kDefaultDockWidth = 400;
@@ -122,6 +124,7 @@ MainWindow::MainWindow(QWidget *parent)
     // a warning about a value, a run or a file is stale once the scene has changed, been undone or
     // redone, or the run reset: it goes (a run still too fast says so again)
     connect(m_document->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::clearWarning);
+    connect(m_document->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::sayUndoOrRedo);
     connect(m_resetAction, &QAction::triggered, this, &MainWindow::clearWarning);
 
     readSettings();
@@ -605,6 +608,26 @@ void MainWindow::showWarning(const QString &message)
     // a new warning is seen at once, not after a passing message
     m_statusBar->clearMessage();
     m_statusBar->setWarning(message);
+}
+
+// the status bar says what Undo and Redo (or a click in the history) did: the index moved with
+// the count unchanged; a new edit changes the count and says its own
+void MainWindow::sayUndoOrRedo(int index)
+{
+    const QUndoStack *stack = m_document->undoStack();
+    const int count = stack->count();
+    if (count == m_undoCount && index < m_undoIndex)
+        statusBar()->showMessage(m_undoIndex - index == 1
+                                     ? tr("Undid “%1”").arg(stack->text(index))
+                                     : tr("Undid %1 edits, back to before “%2”").arg(m_undoIndex - index).arg(stack->text(index)),
+                                 kUndoMessageMs);
+    else if (count == m_undoCount && index > m_undoIndex)
+        statusBar()->showMessage(index - m_undoIndex == 1
+                                     ? tr("Redid “%1”").arg(stack->text(index - 1))
+                                     : tr("Redid %1 edits, up to “%2”").arg(index - m_undoIndex).arg(stack->text(index - 1)),
+                                 kUndoMessageMs);
+    m_undoIndex = index;
+    m_undoCount = count;
 }
 
 void MainWindow::clearWarning()

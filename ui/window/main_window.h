@@ -147,6 +147,7 @@ private:
     void frameArrived();
     void frameDrawn();
     void startFramePacingOver();
+    void sayUndoOrRedo(int index);
     // the timeline (main_window_timeline.cpp)
     void createTimeline();
     void showTimeline(const SimulationFrame &frame);
@@ -196,6 +197,8 @@ private:
     std::uint64_t m_captureRequest = 0;    // the captured state awaited from the worker; 0: none
     std::uint64_t m_recordingRequest = 0;  // the recording awaited from the worker; 0: none
     bool m_pairSpeedWarned = false;      // the latest frame's particles were past the pair speed limit
+    int m_undoIndex = 0;                 // the undo stack's index and count as last seen, to tell an
+    int m_undoCount = 0;                 // undo or redo (same count) from a new edit (count changed)
     QString m_pairSpeedWarning;          // what was said about it
     Viewport *m_viewport = nullptr;
     EditTools *m_tools = nullptr;
