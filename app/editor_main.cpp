@@ -5,6 +5,7 @@
 // frames/s it reached (ui/window/timed_play.h), to compare machines and for the benchmark.
 
 #include "ui/document/document_files.h"
+#include "ui/document/recent_files.h"
 #include "ui/window/main_window.h"
 #include "ui/window/timed_play.h"
 #include "ui/simulation/simulation_controller.h"
@@ -59,6 +60,9 @@ int main(int argc, char *argv[])
 
     ui::MainWindow window;
     window.show();
+    // a timed run measures the machine; the scenes it opens are not the user's recent files
+    if (parser.isSet(exitAfter))
+        window.files()->recentFiles()->setRemembering(false);
 
     // work a crash left behind is offered first; a scene that cannot be opened is reported (here
     // and in a message), and the example stays open

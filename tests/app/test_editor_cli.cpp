@@ -1,12 +1,14 @@
 // springlab --play --exit-after, end to end under a virtual X server: the editor plays the scene
 // for that long, then prints one line with the steps and frames it reached and ends; the figures
-// agree with each other and with the scene (the run never gets ahead of the wall clock); without
-// --play nothing steps; a duration that is not one is refused with exit code 2.
+// agree with each other and with the scene (the run never gets ahead of the wall clock), and the
+// scene stays out of the recent files; without --play nothing steps; a duration that is not one
+// is refused with exit code 2.
 
 #include "program_run.h"
 
 #include <QFile>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -96,6 +98,15 @@ void TestEditorCli::playsForTheTimeGivenAndSaysHowFast()
     QVERIFY2(line->steps * 0.0005 <= line->seconds + 0.1, run.out.constData());
     // the picture of the step it paused at comes with the answer or after it, never before
     QVERIFY2(line->shownSeconds >= line->pauseSeconds, run.out.constData());
+
+    // a timed run is not the user's: the scene stays out of File › Open Recent, while the
+    // window's other settings (its size, written on closing) were saved in the same file
+    const QString settings = m_dir.filePath(u"XDG_CONFIG_HOME/Springlab/Springlab.conf"_s);
+    QVERIFY2(QFile::exists(settings), qPrintable(settings));
+    const QSettings stored(settings, QSettings::IniFormat);
+    QVERIFY2(!stored.allKeys().isEmpty(), qPrintable(settings));
+    QVERIFY2(stored.value(u"files/recent"_s).toStringList().isEmpty(),
+             qPrintable(stored.value(u"files/recent"_s).toStringList().join(u", "_s)));
 }
 
 void TestEditorCli::withoutPlayNothingSteps()

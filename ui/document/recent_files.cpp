@@ -30,6 +30,8 @@ QStringList RecentFiles::paths() const
 
 void RecentFiles::add(const QString &path)
 {
+    if (!m_remembering)
+        return;
     const QString entry = canonical(path);
     QStringList paths = this->paths();
     paths.removeAll(entry);

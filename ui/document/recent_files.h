@@ -20,8 +20,12 @@ public:
     // absolute paths, most recent first
     QStringList paths() const;
 
-    // puts path first (moving it up if it is listed already) and drops the oldest beyond kMaximum
+    // puts path first (moving it up if it is listed already) and drops the oldest beyond kMaximum;
+    // nothing while not remembering
     void add(const QString &path);
+    // off for a run that is not the user's (springlab --exit-after, a benchmark): what it opens
+    // and saves stays out of the list
+    void setRemembering(bool on) { m_remembering = on; }
     // false if it was not listed
     bool remove(const QString &path);
     void clear();
@@ -31,6 +35,8 @@ signals:
 
 private:
     void store(const QStringList &paths);
+
+    bool m_remembering = true;
 };
 
 }  // namespace ui
