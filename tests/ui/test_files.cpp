@@ -141,6 +141,7 @@ private slots:
     void nextStartRecoversACrashedSession();
     void droppedSceneFileOpens();
     void commandLineFileOpens();
+    void openStartsInTheFolderLastUsed();
     void useCurrentStateAsInitialThenResetAndUndo();
     void undoHistoryAndRedoKeys();
     void helpListsTheFileKeys();
@@ -181,6 +182,7 @@ private:
     QList<Question> m_questions;
     QString m_chosenPath;
     QList<ui::MainWindow::FileDialogMode> m_dialogs;
+    QStringList m_dialogStarts;  // the path each file dialog started at
 };
 
 void TestFiles::initTestCase()
@@ -198,8 +200,9 @@ test::EditorOptions TestFiles::answered(bool show)
             m_questions << Question{icon, title, text, buttons};
             return buttons.testFlag(m_answer) ? m_answer : QMessageBox::Ok;
         });
-        window.setFileDialogFunction([this](ui::MainWindow::FileDialogMode mode, const QString &, const QString &) {
+        window.setFileDialogFunction([this](ui::MainWindow::FileDialogMode mode, const QString &, const QString &start) {
             m_dialogs << mode;
+            m_dialogStarts << start;
             return m_chosenPath;
         });
     };
@@ -216,6 +219,7 @@ void TestFiles::init()
     m_questions.clear();
     m_chosenPath.clear();
     m_dialogs.clear();
+    m_dialogStarts.clear();
 
     // shortcuts need an active window
     QVERIFY2(openEditor(answered(true)), qPrintable(editorFailure()));
@@ -703,6 +707,26 @@ void TestFiles::droppedSceneFileOpens()
     QVERIFY(document().scene() == particles);
     QVERIFY(!m_window->isWindowModified());
     QCOMPARE(m_window->files()->recentFiles()->paths().front(), QFileInfo(path).canonicalFilePath());
+}
+
+void TestFiles::openStartsInTheFolderLastUsed()
+{
+    // a scene opened from a folder of its own, then an example: Ctrl+O and Save As start in that
+    // folder, not the home folder (an example has no folder)
+    const QString folder = m_files.filePath(QStringLiteral("projects"));
+    QVERIFY(QDir().mkpath(folder));
+    QString error;
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("particles"), &error), qPrintable(error));
+    const QString path = QDir(folder).filePath(QStringLiteral("mine.json"));
+    QVERIFY(io::saveScene(path, document().scene()).ok());
+    QVERIFY2(m_window->files()->openScene(path, &error), qPrintable(error));
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("springs"), &error), qPrintable(error));
+    QVERIFY(document().filePath().isEmpty());
+    m_window->files()->openFromDialog();  // answered with no path: cancelled
+    QCOMPARE(m_dialogs, (QList<ui::MainWindow::FileDialogMode>{ui::MainWindow::FileDialogMode::Open}));
+    QCOMPARE(QDir(m_dialogStarts.front()).canonicalPath(), QDir(folder).canonicalPath());
+    m_window->files()->saveAs();
+    QCOMPARE(QFileInfo(m_dialogStarts.back()).dir().canonicalPath(), QDir(folder).canonicalPath());
 }
 
 void TestFiles::commandLineFileOpens()

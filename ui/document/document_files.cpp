@@ -185,11 +185,23 @@ QStringList DocumentFiles::exampleNames()
     return ordered + found;
 }
 
+QString DocumentFiles::dialogFolder() const
+{
+    // the scene's own folder; for an example or a new scene, the folder of the file last opened
+    // or saved (File › Open Recent's first), not the home folder every time
+    if (!m_document.filePath().isEmpty())
+        return m_document.folder();
+    const QStringList recent = m_recentFiles->paths();
+    if (!recent.isEmpty() && QFileInfo(QFileInfo(recent.first()).absolutePath()).isDir())
+        return QFileInfo(recent.first()).absolutePath();
+    return m_document.folder();
+}
+
 void DocumentFiles::openFromDialog()
 {
     if (!maybeSave())
         return;
-    const QString path = m_prompts.chooseFile(Prompts::FileDialogMode::Open, tr("Open scene"), m_document.folder());
+    const QString path = m_prompts.chooseFile(Prompts::FileDialogMode::Open, tr("Open scene"), dialogFolder());
     if (path.isEmpty())
         return;
     // the question about changes was asked already
@@ -237,7 +249,7 @@ bool DocumentFiles::save()
 bool DocumentFiles::saveAs()
 {
     const QString suggested = m_document.filePath().isEmpty()
-                                  ? QDir(m_document.folder()).filePath(m_document.displayName() + QStringLiteral(".json"))
+                                  ? QDir(dialogFolder()).filePath(m_document.displayName() + QStringLiteral(".json"))
                                   : m_document.filePath();
     QString path = m_prompts.chooseFile(Prompts::FileDialogMode::Save, tr("Save scene"), suggested);
     if (path.isEmpty())

@@ -80,6 +80,9 @@ public:
     static QString droppedScenePath(const QMimeData *mime);
 
     RecentFiles *recentFiles() const { return m_recentFiles; }
+    // where Open and Save As start: the scene's folder, or for a scene without a file (an example,
+    // a new one) the folder last used (the most recent file's), else the home folder
+    QString dialogFolder() const;
     Autosave *autosave() const { return m_autosave; }
 
 signals:
