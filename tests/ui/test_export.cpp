@@ -318,7 +318,8 @@ void TestExport::tooLargeASideIsSaidNotCut()
 
 void TestExport::dialogStartsBesideTheSceneAndRemembers()
 {
-    // a scene with a file: the export starts in its folder, named after it
+    // a scene with a file: the export starts in its folder, named after it; the last export is
+    // remembered for that scene, and another scene starts beside its own file
     QDir(m_files.path()).mkpath(u"scenes"_s);
     const QString sceneFile = m_files.filePath(u"scenes/moving.json"_s);
     m_window->document()->replace(movingScene(), sceneFile);
@@ -339,6 +340,19 @@ void TestExport::dialogStartsBesideTheSceneAndRemembers()
     QCOMPARE(dialog->findChild<QLineEdit *>(u"exportPath"_s)->text(), chosen);
     QCOMPARE(dialog->findChild<QSpinBox *>(u"exportWidth"_s)->value(), 640);
     QCOMPARE(dialog->findChild<QSpinBox *>(u"exportHeight"_s)->value(), 360);
+    dialog->reject();
+    QTRY_VERIFY(!m_window->findChild<ui::ExportDialog *>());
+
+    // another saved scene, in another folder: its export starts beside it again, named after it
+    QDir(m_files.path()).mkpath(u"other"_s);
+    const QString otherFile = m_files.filePath(u"other/second.json"_s);
+    core::SceneDesc second = movingScene();
+    second.name = "second";
+    m_window->document()->replace(second, otherFile);
+    dialog = openDialog("actionExportImage");
+    QVERIFY(dialog);
+    QCOMPARE(dialog->findChild<QLineEdit *>(u"exportPath"_s)->text(),
+             QDir(QFileInfo(otherFile).absolutePath()).filePath(u"second.png"_s));
     dialog->reject();
 }
 

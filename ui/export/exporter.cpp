@@ -124,7 +124,8 @@ void Exporter::showDialog(ExportKind kind)
     dialog->setMaximumSide(m_viewport.maxImageSide());
     dialog->setFfmpegFound(!VideoEncoder::findFfmpeg().isEmpty());
     dialog->setTimeStep(m_document.scene().settings.timeStep);
-    const QString &last = m_lastPath[std::size_t(kind)];
+    const QString last = m_lastPathScene[std::size_t(kind)] == m_document.filePath() ? m_lastPath[std::size_t(kind)]
+                                                                                          : QString();
     dialog->setPath(!last.isEmpty() ? last
                     : stem + (kind == ExportKind::Image       ? QStringLiteral(".png")
                               : kind == ExportKind::Trace     ? QStringLiteral(".csv")
@@ -152,20 +153,24 @@ void Exporter::showDialog(ExportKind kind)
         switch (dialog->kind()) {
         case ExportKind::Image:
             m_lastPath[std::size_t(ExportKind::Image)] = dialog->image().path;
+            m_lastPathScene[std::size_t(ExportKind::Image)] = m_document.filePath();
             m_lastImageSize = dialog->image().size;
             ok = exportImage(dialog->image(), &error);
             break;
         case ExportKind::Sequence:
             m_lastPath[std::size_t(ExportKind::Sequence)] = dialog->sequence().folder;
+            m_lastPathScene[std::size_t(ExportKind::Sequence)] = m_document.filePath();
             ok = startSequenceExport(dialog->sequence(), &error);
             break;
         case ExportKind::Trace:
             m_lastPath[std::size_t(ExportKind::Trace)] = dialog->trace().path;
+            m_lastPathScene[std::size_t(ExportKind::Trace)] = m_document.filePath();
             ok = startTraceExport(dialog->trace(), &error);
             break;
         case ExportKind::Animation:
             m_lastAnimation = dialog->animation();
             m_lastPath[std::size_t(ExportKind::Animation)] = m_lastAnimation.pc2Path;
+            m_lastPathScene[std::size_t(ExportKind::Animation)] = m_document.filePath();
             ok = startAnimationExport(m_lastAnimation, &error);
             break;
         }

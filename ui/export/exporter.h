@@ -75,6 +75,8 @@ private:
     std::function<QString()> m_folder;
     // what the last export of each kind was given, so that the next dialog of the kind starts there
     std::array<QString, 4> m_lastPath;  // by ExportKind
+    std::array<QString, 4> m_lastPathScene;  // the scene file each was made from: another scene
+                                             // starts beside its own file again
     MeshAnimationExport m_lastAnimation;
     QSize m_lastImageSize;
     QWidget *m_window;
