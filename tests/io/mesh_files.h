@@ -4,6 +4,8 @@
 #include "tests/test_meshes.h"
 #include "tests/test_files.h"
 
+#include "core/meshes/mesh_import.h"
+
 #include <QByteArray>
 #include <QString>
 
@@ -59,6 +61,25 @@ inline QByteArray stlBinary(const core::TriangleMesh &mesh)
         put(&attributes, 2);
     }
     return bytes;
+}
+
+// a flag: a rows × cols panel of a z-up file in centimetres (upright: it lies in the file's xz
+// plane), imported as cloth with its left side pinned, on a floor; *file (if given) is the panel
+inline core::SceneDesc flagScene(int rows, int cols, core::TriangleMesh *file = nullptr)
+{
+    const core::TriangleMesh mesh = panel(rows, cols, 10.0);
+    core::MeshImportOptions options;
+    options.name = "flag";
+    options.placement.scale = 0.01;
+    options.placement.zUp = true;
+    options.placement.at = Eigen::Vector3d(0.0, 1.0, 0.0);
+    options.pin = core::PinSide::Left;
+    core::SceneDesc scene;
+    if (!core::sceneFromMesh(scene, mesh, options).ok())
+        qFatal("the flag did not import");
+    if (file)
+        *file = mesh;
+    return scene;
 }
 
 }  // namespace test

@@ -41,23 +41,10 @@ std::vector<Eigen::Vector3f> objVertices(const QString &path)
     return vertices;
 }
 
-// a flag: a 6 × 8 panel of a z-up file in centimetres, its left side pinned, on a floor
+// the flag of these tests: 6 × 8 vertices
 core::SceneDesc flagScene(core::TriangleMesh *file = nullptr)
 {
-    // the panel lies in its file's xz plane: upright in a z-up file
-    const core::TriangleMesh mesh = test::panel(6, 8, 10.0);
-    core::MeshImportOptions options;
-    options.name = "flag";
-    options.placement.scale = 0.01;
-    options.placement.zUp = true;
-    options.placement.at = Eigen::Vector3d(0.0, 1.0, 0.0);
-    options.pin = core::PinSide::Left;
-    core::SceneDesc scene;
-    if (!core::sceneFromMesh(scene, mesh, options).ok())
-        qFatal("the flag did not import");
-    if (file)
-        *file = mesh;
-    return scene;
+    return test::flagScene(6, 8, file);
 }
 
 }  // namespace

@@ -251,16 +251,8 @@ private:
     // a flag of 35 vertices, in a file that is z-up and in centimetres, as a new scene
     core::TriangleMesh openFlag()
     {
-        const core::TriangleMesh flag = test::panel(5, 7, 10.0);
-        core::SceneDesc scene;
-        core::MeshImportOptions options;
-        options.name = "flag";
-        options.placement.scale = 0.01;
-        options.placement.zUp = true;
-        options.placement.at = Eigen::Vector3d(0.0, 1.0, 0.0);
-        options.pin = core::PinSide::Left;
-        if (!core::sceneFromMesh(scene, flag, options).ok())
-            qFatal("the flag cannot be imported");
+        core::TriangleMesh flag;
+        const core::SceneDesc scene = test::flagScene(5, 7, &flag);
         m_window->document()->replace(scene, QString());
         if (!test::settledFrame(controller()))
             qFatal("the flag's scene never reached the view");
