@@ -105,9 +105,15 @@ void TestNoAllocation::stepAllocatesNothing_data()
         if (integrator == core::Integrator::ImplicitEuler || integrator == core::Integrator::Projective)
             continue;
         const std::string_view name = core::integratorName(integrator);
-        for (int size : {6, 70})
+        for (int size : {6, 70}) {
+            // explicit Euler's large cloth needs thousands of sub-steps a step to stay whole (100 s
+            // for these four steps); its update is the one loop the small cloth runs as well, and
+            // the passes of the large one are those of every other integrator's row
+            if (integrator == core::Integrator::ExplicitEuler && size > 6)
+                continue;
             QTest::addRow("%.*s, %d × %d", int(name.size()), name.data(), size, size)
                 << int(integrator) << size << false;
+        }
         // vbd colours the torn cloth again after each break, which allocates
         if (integrator != core::Integrator::Vbd)
             QTest::addRow("%.*s, 6 × 6 tearing", int(name.size()), name.data()) << int(integrator) << 6 << true;
