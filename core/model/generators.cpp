@@ -58,6 +58,56 @@ void addGridTriangles(SceneDesc &scene, int rows, int cols)
         }
 }
 
+// the faces of the convex hull of points 0..n-1, all on one sphere about centre and sorted by
+// height (a Fibonacci lattice), wound counter-clockwise seen from outside: the surface a user
+// sees. A face's vertices lie within `reach` of its first (smallest) one, and only points within
+// twice that can lie outside its plane, so each point's search stays local.
+std::vector<std::array<int, 3>> sphereHullFaces(const std::vector<ParticleDesc> &points, int n,
+                                                const Eigen::Vector3d &centre, double reach, double heightPerIndex)
+{
+    std::vector<std::array<int, 3>> faces;
+    const auto at = [&points](int i) -> const Eigen::Vector3d & { return points[std::size_t(i)].position; };
+    std::vector<int> near, nearby;
+    for (int i = 0; i < n; ++i) {
+        near.clear();
+        nearby.clear();
+        const int span = int(2.0 * reach / heightPerIndex) + 1;
+        for (int j = std::max(0, i - span); j < std::min(n, i + span + 1); ++j) {
+            if (j == i)
+                continue;
+            const double d = (at(j) - at(i)).norm();
+            if (d <= 2.0 * reach)
+                nearby.push_back(j);
+            if (j > i && d <= reach)
+                near.push_back(j);
+        }
+        for (std::size_t a = 0; a < near.size(); ++a)
+            for (std::size_t b = a + 1; b < near.size(); ++b) {
+                int j = near[a], k = near[b];
+                Eigen::Vector3d normal = (at(j) - at(i)).cross(at(k) - at(i));
+                const double area2 = normal.norm();
+                if (area2 <= 0.0)
+                    continue;
+                if (normal.dot(at(i) + at(j) + at(k) - 3.0 * centre) < 0.0) {
+                    std::swap(j, k);
+                    normal = -normal;
+                }
+                // a hull face: no point beyond its plane (points on it, four on one circle, are
+                // let be: either split of their quadrilateral draws the same)
+                const double tolerance = 1e-12 * area2 * reach;
+                bool hull = true;
+                for (int q : nearby)
+                    if (q != j && q != k && normal.dot(at(q) - at(i)) > tolerance) {
+                        hull = false;
+                        break;
+                    }
+                if (hull)
+                    faces.push_back({i, j, k});
+            }
+    }
+    return faces;
+}
+
 }  // namespace
 
 SceneDesc makeNet(const NetOptions &o)
@@ -272,6 +322,11 @@ SceneDesc makeSoftBall(const SoftBallOptions &o)
             if (distance <= reach)
                 addSpring(scene, i, j, o.stiffness, o.damping);
         }
+
+    // its surface, drawn and (with sheet collisions on) collided with: the hull of the points,
+    // wound outwards (the triangles its springs span include fans to the centre and both windings)
+    const double spacing = o.ballRadius * std::sqrt(4.0 * std::numbers::pi / n);
+    scene.triangles = sphereHullFaces(scene.particles, n, centre, 1.9 * spacing, heightPerIndex);
 
     // the centre, joined to every surface point
     if (o.centre) {

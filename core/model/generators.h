@@ -115,17 +115,21 @@ SceneDesc makeBall(const BallOptions &options);
 // a soft ball: `points` particles spread evenly over a sphere (a Fibonacci lattice), each joined
 // by springs to its neighbours on the surface (those closer than 1.5 × the mean spacing
 // √(4π/points) × ballRadius), and, optionally, every one to a particle at the centre. Rest
-// lengths are the distances, so it starts at rest; its substeps are set by its springs.
+// lengths are the distances, so it starts at rest; its substeps are set by its springs. Its
+// surface, the hull of the points wound outwards, is listed as its triangles (for drawing; the
+// scene's sheet collisions stay as they are).
 struct SoftBallOptions {
     int points = 120;
     double ballRadius = 0.25;        // m
     double height = 1.0;             // m, of the centre
     double mass = 0.02;              // kg per particle
     double radius = 0.025;           // m
-    double stiffness = 200.0;        // N/m, the surface springs
+    // stiff enough that a drop of a few metres onto a floor dents it and no more (at 200 and 100
+    // N/m a 2 m drop crumpled the shell into a cone that stayed one)
+    double stiffness = 1000.0;       // N/m, the surface springs
     double damping = 0.05;           // N·s/m, every spring
     bool centre = true;              // add a centre particle joined to every surface particle
-    double centreStiffness = 100.0;  // N/m, the springs to the centre
+    double centreStiffness = 1000.0;  // N/m, the springs to the centre
 };
 SceneDesc makeSoftBall(const SoftBallOptions &options);
 // the most points a soft ball may have: its neighbour search grows as points^1.5

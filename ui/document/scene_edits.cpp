@@ -261,8 +261,9 @@ Selection addGenerated(core::SceneDesc &scene, const core::SceneDesc &generated,
         high = high.cwiseMax(p.position);
     }
     scene.settings.substeps = std::max(scene.settings.substeps, generated.settings.substeps);
-    // a generated sheet's thickness and self-collision (Generate › Cloth) become the scene's
-    if (!generated.triangles.empty()) {
+    // a generated sheet's thickness and self-collision (Generate › Cloth) become the scene's; a
+    // soft ball's triangles are its drawn surface, and leave the scene's collisions as they are
+    if (!generated.triangles.empty() && generated.settings.triangleCollisions) {
         if (generated.settings.thickness > 0.0)
             scene.settings.thickness = generated.settings.thickness;
         scene.settings.selfCollision = generated.settings.selfCollision;
