@@ -28,6 +28,8 @@
 #include "core/model/state.h"
 #include "core/integrators/stability.h"
 #include "core/step.h"
+#include "core/thread_chooser.h"
+#include "core/threads.h"
 
 #include "session/session_file.h"
 
@@ -42,6 +44,7 @@
 #include <system_error>
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
 #include <memory>
 #include <new>
@@ -302,6 +305,7 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
         summary.steps = state.step;
         summary.simulatedTime = state.time;
         summary.wallTime = static_cast<double>(nanoseconds) * 1e-9;
+        summary.threads = core::threadCount();
         summary.start = start;
         summary.end = end;
         summary.springBreaks = state.breaks.size();
@@ -361,6 +365,9 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
     // the run, in chunks between trace rows (every K steps, not the last step unless K divides it)
     // and frames; only stepping is timed
     const core::State initial = state;  // to explain a blow-up, should one happen
+    // the threads each step runs on, chosen from the steps' times: on a machine whose other cores
+    // are busy, threads that wait for a core made a run several times slower than one thread
+    core::ThreadChooser threads;
     QElapsedTimer timer;
     bool blewUp = false;
     while (state.step < *steps && !blewUp) {
@@ -373,11 +380,15 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
             until = std::min(until, std::max(state.step + 1, exported.nextStep(*steps)));
         timer.start();
         try {
-            while (state.step < until)
+            while (state.step < until) {
+                core::setThreadCount(threads.threads());
+                const auto began = std::chrono::steady_clock::now();
                 if (!core::step(*model, state, work)) {
                     blewUp = true;
                     break;
                 }
+                threads.stepped(std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count());
+            }
         } catch (const std::bad_alloc &) {
             work = core::Workspace{};  // the step's scratch let go before anything else is made
             // the steps before it stand; the state is half-way through a step, so its energies
@@ -486,7 +497,8 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
                                  static_cast<unsigned long long>(state.step), static_cast<unsigned long long>(*steps),
                                  blewUp ? " (stopped: blew up)" : "", state.time, seconds);
         if (seconds > 0.0)
-            out << QString::asprintf(" (%.4g steps/s)", static_cast<double>(state.step) / seconds);
+            out << QString::asprintf(" (%.4g steps/s, %s)", static_cast<double>(state.step) / seconds,
+                                     core::threadCount() == 1 ? "one thread" : qPrintable(u"%1 threads"_s.arg(core::threadCount())));
         out << "\n  energy (J) kinetic        gravitational  spring         total\n"
             << energyRow("start", start) << energyRow("end", end);
         if (!state.breaks.empty()) {

@@ -37,6 +37,7 @@ constexpr SummaryField kFields[] = {
     {"wallTime", true, [](const RunSummary &s) { return QJsonValue(s.wallTime); }},
     {"stepsPerSecond", true,
      [](const RunSummary &s) { return s.wallTime > 0.0 ? QJsonValue(double(s.steps) / s.wallTime) : QJsonValue(); }},
+    {"threads", true, [](const RunSummary &s) { return s.threads > 0 ? QJsonValue(s.threads) : QJsonValue(); }},
     {"kineticStart", true, [](const RunSummary &s) { return QJsonValue(s.start.kinetic); }},
     {"gravitationalStart", true, [](const RunSummary &s) { return QJsonValue(s.start.gravitational); }},
     {"springStart", true, [](const RunSummary &s) { return QJsonValue(s.start.spring); }},

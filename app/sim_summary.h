@@ -48,6 +48,7 @@ struct RunSummary {
     std::uint64_t steps = 0;  // run: fewer than requested when it blew up
     double simulatedTime = 0.0;  // s
     double wallTime = 0.0;       // s, stepping alone
+    int threads = 0;             // the threads the last steps ran on (core::ThreadChooser's choice)
     core::Energies start;        // J
     core::Energies end;          // J
     std::size_t springBreaks = 0;

@@ -8,7 +8,8 @@
 //   xvfb-run -a -s "-screen 0 1280x1024x24" build/release/bench/editor_throughput
 // With --no-contacts the scene's plane and particle contacts are off (a faster step, where what
 // the editor adds to each one weighs more); with --write-scene FILE it only writes the scene (any
-// size, 1000 × 1000 for 10⁶ particles).
+// size, 1000 × 1000 for 10⁶ particles). With --busy a loop keeps one core busy, and each program
+// runs with the threads it chooses beside the same with OMP_NUM_THREADS=1.
 
 #include "bench_common.h"
 
@@ -25,12 +26,18 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QProcessEnvironment>
+#include <QThread>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTextStream>
 
 #include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
 #include <optional>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -69,10 +76,18 @@ std::optional<EditorRun> parseEditorLine(const QString &output)
                      match.captured(4).toDouble(), match.captured(5).toDouble()};
 }
 
-// runs a program to its end; its standard output, or nothing (and why, in error)
-std::optional<QString> run(const QString &program, const QStringList &arguments, int timeoutMs, QString &error)
+// runs a program to its end; its standard output, or nothing (and why, in error). threads: with
+// OMP_NUM_THREADS set to it (1: what a user would set by hand on a busy machine; every core: what
+// OpenMP did before Springlab chose), 0: the program chooses
+std::optional<QString> run(const QString &program, const QStringList &arguments, int timeoutMs, QString &error,
+                           int threads = 0)
 {
     QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove(QStringLiteral("OMP_NUM_THREADS"));
+    if (threads > 0)
+        environment.insert(QStringLiteral("OMP_NUM_THREADS"), QString::number(threads));
+    process.setProcessEnvironment(environment);
     process.start(program, arguments);
     if (!process.waitForFinished(timeoutMs) || process.exitStatus() != QProcess::NormalExit ||
         process.exitCode() != 0) {
@@ -83,6 +98,102 @@ std::optional<QString> run(const QString &program, const QStringList &arguments,
         return std::nullopt;
     }
     return QString::fromLocal8Bit(process.readAllStandardOutput());
+}
+
+// a loop that keeps one core busy while it lives (the other program of a busy desktop)
+class BusyCore {
+public:
+    BusyCore()
+        : m_thread([this] {
+              volatile std::uint64_t spins = 0;
+              while (!m_stop.load(std::memory_order_relaxed))
+                  spins = spins + 1;
+          })
+    {
+    }
+    ~BusyCore()
+    {
+        m_stop = true;
+        m_thread.join();
+    }
+
+private:
+    std::atomic<bool> m_stop{false};
+    std::thread m_thread;
+};
+
+// --busy: the editor and springlab-sim with the threads they choose beside the same with one
+// thread and with every core (OMP_NUM_THREADS), a loop keeping one core busy all along; runs
+// alternate
+int compareWithOneThread(const QString &editorPath, const QString &simPath, const QString &scene, int runs,
+                         double seconds, const QString &dir)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    const BusyCore busy;
+    const int every = std::max(2, QThread::idealThreadCount());
+    out << "with a loop keeping one core busy all along; steps/s with the threads chosen, with one, with "
+        << every << "\n\n"
+        << "| run | springlab: chosen | one | " << every << " | one / chosen | springlab-sim: chosen | one | " << every
+        << " | one / chosen |\n"
+        << "|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    out.flush();
+    const int timeoutMs = static_cast<int>(seconds * 1000.0) + 600000;
+    std::vector<double> editorRatios, simRatios;
+    std::vector<double> editorRates[3], simRates[3];
+    const int counts[3] = {0, 1, every};
+    for (int i = 0; i < runs; ++i) {
+        double editorRate[3] = {0.0, 0.0, 0.0};
+        double simRate[3] = {0.0, 0.0, 0.0};
+        for (int c = 0; c < 3; ++c) {
+            QString error;
+            const std::optional<QString> output =
+                run(editorPath, {scene, QStringLiteral("--play"), QStringLiteral("--exit-after"), QString::number(seconds)},
+                    timeoutMs, error, counts[c]);
+            const std::optional<EditorRun> editor = output ? parseEditorLine(*output) : std::nullopt;
+            if (!editor || editor->steps < 1.0) {
+                err << "editor_throughput: " << (error.isEmpty() ? QStringLiteral("no steps from the editor") : error) << '\n';
+                return 1;
+            }
+            editorRate[c] = editor->steps / editor->seconds;
+            // the simulator over as many steps as the chosen threads' editor run took
+            const QString summary = dir + QStringLiteral("/summary.json");
+            const double steps = std::max(1.0, std::round(editorRate[0] * seconds));
+            if (!run(simPath, {scene, QStringLiteral("--steps"), QString::number(steps), QStringLiteral("--quiet"),
+                               QStringLiteral("--summary-json"), summary},
+                     timeoutMs, error, counts[c])) {
+                err << "editor_throughput: " << error << '\n';
+                return 1;
+            }
+            QFile file(summary);
+            file.open(QIODevice::ReadOnly);
+            simRate[c] = QJsonDocument::fromJson(file.readAll()).object().value(QStringLiteral("stepsPerSecond")).toDouble();
+            editorRates[c].push_back(editorRate[c]);
+            simRates[c].push_back(simRate[c]);
+        }
+        editorRatios.push_back(editorRate[1] / editorRate[0]);
+        simRatios.push_back(simRate[1] / simRate[0]);
+        out << "| " << i + 1;
+        for (int c = 0; c < 3; ++c)
+            out << " | " << QString::number(editorRate[c], 'f', 1);
+        out << " | " << QString::number(editorRatios.back(), 'f', 2);
+        for (int c = 0; c < 3; ++c)
+            out << " | " << QString::number(simRate[c], 'f', 1);
+        out << " | " << QString::number(simRatios.back(), 'f', 2) << " |\n";
+        out.flush();
+    }
+    using bench::median;
+    out << "| median";
+    for (int c = 0; c < 3; ++c)
+        out << " | " << QString::number(median(editorRates[c]), 'f', 1);
+    out << " | " << QString::number(median(editorRatios), 'f', 2);
+    for (int c = 0; c < 3; ++c)
+        out << " | " << QString::number(median(simRates[c]), 'f', 1);
+    out << " | " << QString::number(median(simRatios), 'f', 2) << " |\n\n"
+        << "one / chosen: one thread's steps/s over the chosen threads' (1.2 at most is the target); load average "
+           "at the end "
+        << bench::loadText() << '\n';
+    return 0;
 }
 
 }  // namespace
@@ -112,8 +223,10 @@ int main(int argc, char **argv)
                                          QStringLiteral("FILE"));
     const QCommandLineOption noContactsOption(QStringLiteral("no-contacts"),
                                               QStringLiteral("Turn the scene's plane and particle contacts off."));
-    parser.addOptions(
-        {rowsOption, colsOption, runsOption, secondsOption, editorOption, simOption, writeOption, noContactsOption});
+    const QCommandLineOption busyOption(
+        QStringLiteral("busy"), QStringLiteral("Keep one core busy, and compare the threads the programs choose with one thread."));
+    parser.addOptions({rowsOption, colsOption, runsOption, secondsOption, editorOption, simOption, writeOption,
+                       noContactsOption, busyOption});
     parser.process(app);
     QTextStream out(stdout);
     QTextStream err(stderr);
@@ -142,6 +255,8 @@ int main(int argc, char **argv)
     }
     out << bench::machineDescription() << ", load average " << bench::loadText() << "\n" << runs
         << " runs of each, alternating, the editor for " << seconds << " s a run\n\n";
+    if (parser.isSet(busyOption))
+        return compareWithOneThread(parser.value(editorOption), parser.value(simOption), path, runs, seconds, dir.path());
     out << "| run | springlab-sim steps/s | springlab steps/s | springlab frames/s | editor / sim | pause answered | its step shown |\n"
         << "|---:|---:|---:|---:|---:|---:|---:|\n";
     out.flush();

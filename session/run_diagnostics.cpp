@@ -1,6 +1,7 @@
 #include "run_diagnostics.h"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <utility>
 
@@ -33,6 +34,8 @@ void RunDiagnostics::resetCosts()
 void RunDiagnostics::restarted(const core::Model &model, const core::State &state)
 {
     m_initialEnergies = core::energies(model, state);
+    m_outsideWork = 0.0;
+    m_tickEnergyKnown = false;
 }
 
 void RunDiagnostics::editedBy(const core::Energies &before, const core::Energies &after)
@@ -40,6 +43,45 @@ void RunDiagnostics::editedBy(const core::Energies &before, const core::Energies
     m_initialEnergies.kinetic += after.kinetic - before.kinetic;
     m_initialEnergies.gravitational += after.gravitational - before.gravitational;
     m_initialEnergies.spring += after.spring - before.spring;
+    m_tickEnergyKnown = false;
+}
+
+std::optional<core::Blowup> RunDiagnostics::watchEnergy(const core::Model &model, const core::State &state,
+                                                        bool forcesFromOutside)
+{
+    const double now = core::energies(model, state).total();
+    const bool known = std::exchange(m_tickEnergyKnown, true);
+    const double last = std::exchange(m_tickEnergy, now);
+    if (forcesFromOutside) {
+        if (known)
+            m_outsideWork += now - last;
+        return std::nullopt;
+    }
+    // the scale: every energy the run started with, whatever its sign, and at the least the work
+    // of lifting its mass a metre against gravity and of moving it at 1 m/s (a scene at rest at
+    // the origin starts at 0 J)
+    const core::Energies &start = m_initialEnergies;
+    const double mass = model.mass.sum();
+    const double scale = std::abs(start.kinetic) + std::abs(start.gravitational) + std::abs(start.spring) +
+                         mass * model.gravity.norm() * 1.0 + 0.5 * mass * 1.0 * 1.0;
+    const double from = start.total() + m_outsideWork;
+    if (!(now - from > kEnergyGrowth * scale))
+        return std::nullopt;
+    core::Blowup blowup;
+    blowup.quantity = core::Blowup::Quantity::Energy;
+    blowup.value = now;
+    blowup.from = from;
+    blowup.step = state.step;
+    blowup.time = state.time;
+    // where: the fastest particle
+    if (state.velocity.cols() > 0) {
+        Eigen::Index fastest = 0;
+        blowup.speed = std::sqrt(state.velocity.colwise().squaredNorm().maxCoeff(&fastest));
+        blowup.particle = int(fastest);
+        for (int axis = 0; axis < 3; ++axis)
+            blowup.where[axis] = state.position(axis, fastest);
+    }
+    return blowup;
 }
 
 void RunDiagnostics::afterSteps(double seconds, bool blewUp, const std::shared_ptr<const core::Model> &model,

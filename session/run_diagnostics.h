@@ -93,6 +93,12 @@ public:
     // a step that could not be taken for want of memory, said by takeBlowupMessage() like a blow-up
     void ranOutOfMemory(std::string message) { m_outOfMemory = std::move(message); }
     std::optional<std::string> takeBlowupMessage(const core::Model &model, const core::State &state);
+    // after a tick's steps: a total energy kEnergyGrowth times its scale above what the run started
+    // with (the initial energies, the edits' changes and the work of forces from outside), a blow-up
+    // whose values are all still finite. While forcesFromOutside (a grab, the steering keys) act,
+    // what the energy gains is their work, and nothing is checked.
+    std::optional<core::Blowup> watchEnergy(const core::Model &model, const core::State &state, bool forcesFromOutside);
+    static constexpr double kEnergyGrowth = 1000.0;
     // the integrator and substeps for a tolerance (m per sub-step) at state, with the cost of a
     // force evaluation as measured in the run (profile), else timed now; an empty plan without a model
     static std::shared_ptr<const core::AccuracyPlan> planAccuracy(const std::shared_ptr<const core::Model> &model,
@@ -145,6 +151,9 @@ private:
     double m_stepSeconds = 0.0;
     double m_estimateSeconds = 0.0;
     core::Energies m_initialEnergies;
+    double m_outsideWork = 0.0;  // J the grabs and the steering added since the last reset
+    double m_tickEnergy = 0.0;   // J at the end of the last tick watched
+    bool m_tickEnergyKnown = false;
 };
 
 }  // namespace ui

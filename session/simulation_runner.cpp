@@ -5,6 +5,7 @@
 #include "core/model/state_hash.h"
 
 #include "core/step.h"
+#include "core/threads.h"
 
 #include <algorithm>
 #include <chrono>
@@ -93,7 +94,10 @@ void SimulationRunner::apply(const Message &message)
                    [this](const TiltEdit &e) { tilt(e); },
                    [this](const SteerEdit &e) { steer(e); },
                    [this](const GrabEdit &e) { grab(e); },
-                   [this](const Play &) { m_running = hasScene(); },
+                   [this](const Play &) {
+                       m_running = hasScene();
+                       m_threads.startOver();  // what the last run measured says nothing of this one
+                   },
                    [this](const Pause &) { m_running = false; },
                    [this](const StepOnce &) { stepOnceMessage(); },
                    [this](const Reset &) { reset(); },
@@ -177,11 +181,14 @@ bool SimulationRunner::takeOwedSteps()
 
 bool SimulationRunner::interruptibleStep(const core::State *start)
 {
+    core::setThreadCount(m_threads.threads());
     const auto began = Clock::now();
     m_work.interrupt = start ? m_interrupt : nullptr;
     const bool taken = stepOnce();
     m_work.interrupt = nullptr;
     m_lastStepSeconds = secondsSince(began);
+    if (taken)
+        m_threads.stepped(m_lastStepSeconds);
     if (!taken && m_work.interrupted) {
         m_state = *start;
         // cut short: whatever it took so far, it is slow enough to be cut again when retaken
@@ -265,6 +272,8 @@ void SimulationRunner::setScene(const SetSceneEdit &edit)
     const bool running = previousModel && edit.change != SceneChange::Replace && m_state.step > 0;
     const core::Energies before = running ? core::energies(*previousModel, m_state) : core::Energies{};
     m_scene = edit.scene;
+    if (edit.change == SceneChange::Replace)
+        m_threads.startOver();  // another scene: its steps cost what they cost
     // another scene is compiled afresh; an edit keeps the spring triangles if it left the springs
     m_model = core::compileModel(*m_scene, edit.change == SceneChange::Replace ? nullptr : m_model.get());
     // the run goes on through the edit as far as it can (carry_across_edit.h), else starts afresh
@@ -318,10 +327,13 @@ void SimulationRunner::tilt(const TiltEdit &edit)
     if (!hasScene())
         return;
     // every free particle gets a kick of up to `speed` per component, from one seeded generator
+    const core::Energies before = core::energies(*m_model, m_state);
     std::mt19937_64 random(edit.seed);
     for (int i : m_model->freeParticles)
         for (int axis = 0; axis < 3; ++axis)
             m_state.velocity(axis, i) += edit.speed * symmetricUnit(random);
+    // the kick is work done on the scene: neither drift nor a runaway
+    m_diagnostics.editedBy(before, core::energies(*m_model, m_state));
     m_diagnostics.stateChanged();
 }
 
@@ -444,6 +456,18 @@ SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double b
         if (m_interrupt && stepsAreSlow()) {
             m_stepStart = m_state;
             stepStart = &m_stepStart;
+        }
+    }
+    // a run whose energy ran away with every value still finite has blown up all the same: it
+    // stops at the tick's start, the last state the check passed
+    if (!blewUp && result.steps > 0) {
+        const HeldForces held = heldForces();
+        const bool outside = held.grabParticle >= 0 || (held.steerParticle >= 0 && !held.steerForce.isZero());
+        if (std::optional<core::Blowup> runaway = m_diagnostics.watchEnergy(*m_model, m_state, outside)) {
+            m_diagnostics.blewUp(std::move(runaway));
+            m_stepsTaken -= static_cast<std::uint64_t>(result.steps);
+            stopAtLastGood();
+            blewUp = true;
         }
     }
     m_diagnostics.afterSteps(secondsSince(start), blewUp, m_model, m_state);

@@ -35,6 +35,7 @@
 #include "core/model/snapshot.h"
 #include "core/model/state.h"
 #include "core/model/workspace.h"
+#include "core/thread_chooser.h"
 
 #include <atomic>
 #include <memory>
@@ -170,6 +171,8 @@ private:
     std::shared_ptr<const core::Model> m_model;
     core::State m_state;
     core::Workspace m_work;  // the steps' scratch and profile, for the run and the scrubs alike
+    // the threads the steps run on, chosen from their times (a busy core must not hold them up)
+    core::ThreadChooser m_threads;
     Scrubber m_scrubber;
     RunDiagnostics m_diagnostics;
     StepSampler m_samples;

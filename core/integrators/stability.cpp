@@ -350,6 +350,15 @@ std::string explainBlowup(const Model &model, const Blowup &blowup, const Stabil
                 << "planes to keep it in.";
             return out.str();
         }
+    } else if (blowup.quantity == Blowup::Quantity::Energy) {
+        out << "The total energy grew from " << format(blowup.from) << " J to " << format(blowup.value)
+            << " J by t = " << format(blowup.time) << " s (step " << blowup.step
+            << "), more than a thousandfold with no work done on the scene: the motion was running away";
+        if (blowup.particle >= 0)
+            out << " (fastest: particle " << blowup.particle << ", at " << format(blowup.speed) << " m/s at ("
+                << format(blowup.where[0]) << ", " << format(blowup.where[1]) << ", " << format(blowup.where[2])
+                << ") m)";
+        out << ".";
     } else if (blowup.quantity == Blowup::Quantity::SheetPairs) {
         out << "The sheets flew apart at t = " << format(blowup.time) << " s (step " << blowup.step
             << "): their collisions had more than " << format(blowup.value)
