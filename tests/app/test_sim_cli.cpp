@@ -422,7 +422,7 @@ void TestSimCli::outputOntoAFullDiskFails()
 
 void TestSimCli::outOfMemoryIsAMessage()
 {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(SPRINGLAB_UNDER_SANITIZERS)
     QSKIP("the sanitizers reserve terabytes of address space: ulimit -v cannot be set under them");
 #endif
     // 20 000 particles on one spot (a 1.8 MB file): a run of it peaks at about 245 MB resident, most
@@ -453,7 +453,7 @@ void TestSimCli::outOfMemoryIsAMessage()
 
 void TestSimCli::bigClothRunsInItsMemory()
 {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(SPRINGLAB_UNDER_SANITIZERS)
     QSKIP("the sanitizers reserve terabytes of address space: ulimit -v cannot be set under them");
 #endif
     // a cloth of 100 489 particles over a floor with both kinds of collision runs in 300 MB of

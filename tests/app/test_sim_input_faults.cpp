@@ -136,7 +136,7 @@ void TestSimInputFaults::endlessDeviceIsRefused()
 {
     // /dev/zero has no size and never ends: a replay of it read on until std::bad_alloc (134),
     // the scene loader until its limit or the memory ran out. Both stop at its first zero byte.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(SPRINGLAB_UNDER_SANITIZERS)
     QSKIP("the sanitizers reserve terabytes of address space: ulimit -v cannot be set under them");
 #endif
     QFETCH(bool, replay);
@@ -155,7 +155,7 @@ void TestSimInputFaults::largeReplayWithinALimitIsAMessage()
 {
     // a recording of 2 000 000 particles (about 300 MB) under a 600 MB address space: a load that
     // needs more than the limit says so, naming it; it ended in std::bad_alloc (134)
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(SPRINGLAB_UNDER_SANITIZERS)
     QSKIP("the sanitizers reserve terabytes of address space: ulimit -v cannot be set under them");
 #endif
     QTemporaryDir dir;
@@ -179,7 +179,7 @@ void TestSimInputFaults::sceneWithinALimitNamesIt()
     // a scene of 1 200 000 particles (120 MB) under a 200 MB address space: it said "more memory
     // than is free" with gigabytes free; the limit is the process's, and the message names it as
     // the step's does ("see ulimit -v")
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(SPRINGLAB_UNDER_SANITIZERS)
     QSKIP("the sanitizers reserve terabytes of address space: ulimit -v cannot be set under them");
 #endif
     QTemporaryDir dir;

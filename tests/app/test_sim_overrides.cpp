@@ -320,7 +320,7 @@ void TestSimOverrides::indexShownAsTyped()
 
 void TestSimOverrides::outOfMemoryInAStepHasItsStatus()
 {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(SPRINGLAB_UNDER_SANITIZERS)
     QSKIP("the sanitizers reserve terabytes of address space: ulimit -v cannot be set under them");
 #endif
     // 20 000 particles on one spot: the first step's contacts need far more than a 200 MB address

@@ -227,7 +227,7 @@ void TestSimSameFile::renderFramesNeverReplaceTheScene()
     // --render DIR removes DIR/frame-*.png and writes new ones: a scene or an output among them
     // would be lost. The refusal comes before any drawing, but --render needs an X display to
     // start at all (xvfb-run -a); without one the case is skipped
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(SPRINGLAB_UNDER_ASAN)
     // (under LeakSanitizer the X client library's connection, which Qt never frees, is reported
     // when the refused program exits, and turns its exit code 2 into 1)
     QSKIP("--render opens an X connection that LeakSanitizer reports at exit");

@@ -334,7 +334,7 @@ QStringList runScenes(const Draw &draw, std::uint32_t scenes)
     const QByteArray only = qgetenv("SPRINGLAB_INVARIANT_SEED");
     const QByteArray count = qgetenv("SPRINGLAB_INVARIANT_SCENES");
     const std::uint32_t first = only.isEmpty() ? 1u : only.toUInt();
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(SPRINGLAB_UNDER_SANITIZERS)
     // under the sanitizers a fifth of them: they look for memory faults, which the first scenes
     // meet as well as the rest, and each scene runs ten times slower (3.5 minutes for all three)
     scenes /= 5;

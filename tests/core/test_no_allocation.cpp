@@ -10,7 +10,7 @@
 #include <atomic>
 #include <cstdlib>
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(SPRINGLAB_UNDER_SANITIZERS)
 #define SPRINGLAB_SANITIZED 1  // the sanitizers own malloc: these counters cannot take it over
 #endif
 

@@ -317,7 +317,7 @@ void TestLoadMessages::checkedStringsReadAsQtReadsThem()
 
 void TestLoadMessages::outOfMemoryNamesTheProcessLimit()
 {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(SPRINGLAB_UNDER_SANITIZERS)
     QSKIP("the sanitizers reserve terabytes of address space: a cap on it cannot be set");
 #endif
     // a scene of 250 000 particles (21 MB) and a recording of it, with 8 MB more than the test

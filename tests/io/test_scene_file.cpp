@@ -1335,7 +1335,7 @@ void TestSceneFile::endlessDeviceRefused()
 
 void TestSceneFile::outOfMemoryIsAMessage()
 {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(SPRINGLAB_UNDER_SANITIZERS)
     QSKIP("the sanitizers reserve terabytes of address space: a cap on it cannot be set");
 #endif
     // a file of 300 000 particles (26 MB) with 8 MB more than the test has mapped: reading it

@@ -43,7 +43,7 @@ Peak loadInChild(const QString &path)
 
 // AddressSanitizer's red zones and quarantine inflate every peak several times over: under it the
 // loads still run (and are checked for memory errors), but the ratios mean nothing
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(SPRINGLAB_UNDER_ASAN)
 constexpr bool kSanitized = true;
 #else
 constexpr bool kSanitized = false;
