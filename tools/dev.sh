@@ -5,7 +5,7 @@
 #   tools/dev.sh run [SCENE.json]   build in Release and open the editor (default: the springs example)
 #   tools/dev.sh test               build with warnings as errors and run every test, then the unit
 #                                   tests under AddressSanitizer + UBSan with the spring kernels'
-#                                   default clone, the core's unit tests on the avx2 clone where the
+#                                   default clone, the kernels' tests on the avx2 clone where the
 #                                   CPU would pick AVX-512, and a minute of fuzzing
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -65,7 +65,7 @@ case "${1:-}" in
     build asan
     ctest --preset asan -L unit
     # on a CPU whose loader picks the AVX-512 clone, the avx2 clone gets a build of the core and
-    # its unit tests of its own
+    # of the core tests that check the kernels' bits (label kernels)
     clone="$(host_clone)"
     echo "spring kernels: build/ci runs the $clone clone, build/asan the default; the avx2 clone next where it is neither"
     if [ "$clone" = x86-64-v4 ]; then

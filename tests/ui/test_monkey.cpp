@@ -357,7 +357,17 @@ void TestMonkey::survivesRandomInput_data()
     QTest::addColumn<std::uint32_t>("seed");
     const QByteArray only = qgetenv("SPRINGLAB_MONKEY_SEED");
     const QStringList examples = ui::DocumentFiles::exampleNames();
+    // SPRINGLAB_MONKEY_PART=k/n: every n-th example from the k-th (1-based), so that CTest runs the
+    // examples as n tests side by side (tests/ui/CMakeLists.txt); each keeps its own seed
+    int part = 0, parts = 1;
+    const QList<QByteArray> split = qgetenv("SPRINGLAB_MONKEY_PART").split('/');
+    if (split.size() == 2 && split[1].toInt() > 0) {
+        parts = split[1].toInt();
+        part = split[0].toInt() - 1;
+    }
     for (int i = 0; i < examples.size(); ++i) {
+        if (i % parts != part)
+            continue;
         const std::uint32_t seed = only.isEmpty() ? 1000u + static_cast<std::uint32_t>(i) : only.toUInt();
         QTest::newRow(qPrintable(examples[i])) << examples[i] << seed;
     }
