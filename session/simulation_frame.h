@@ -56,6 +56,8 @@ struct SimulationFrame {
 
     // measured over the last second or so of running; 0 while paused or not yet measured
     double realTimeFactor = 0.0;  // simulated seconds per wall-clock second
+    // the speed the run was asked to play at (SimulationWorker::speed; 0: as fast as it goes)
+    double speed = 1.0;
     double stepsPerSecond = 0.0;  // steps per wall-clock second
 
     // the live accuracy figures: the local position error of one sub-step by step doubling, made

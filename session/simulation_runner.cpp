@@ -415,15 +415,17 @@ bool SimulationRunner::stopAtLastGood()
     return false;
 }
 
-SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double budgetSeconds)
+SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double budgetSeconds, double speed)
 {
     Advance result;
     if (!m_running || !hasScene())
         return result;
 
-    m_owed += wallSeconds;
     m_diagnostics.addWallTime(wallSeconds);
     const double h = m_model->timeStep;
+    // as fast as it goes: a step is always owed, until the budget is spent
+    const bool asFast = !(speed > kAsFastAsItGoes);
+    m_owed = asFast ? std::max(m_owed, h) : m_owed + wallSeconds * speed;
     if (m_owed < h)
         return result;
     m_lastGood = m_state;
@@ -443,12 +445,12 @@ SimulationRunner::Advance SimulationRunner::advance(double wallSeconds, double b
             m_stepsTaken -= static_cast<std::uint64_t>(result.steps);  // back at the tick's start
             break;
         }
-        m_owed -= h;
+        m_owed = asFast ? h : m_owed - h;
         ++result.steps;
         ++m_stepsTaken;
-        // out of time for this tick: give up what is still owed
+        // out of time for this tick: give up what is still owed (as fast as it goes owes nothing)
         if (secondsSince(start) > budgetSeconds) {
-            result.droppedSeconds = m_owed;
+            result.droppedSeconds = asFast ? 0.0 : m_owed;
             m_owed = 0.0;
             break;
         }

@@ -95,11 +95,13 @@ public:
     bool restoreRecordedStart(const SessionRecording &recording);
     bool stepForReplay();
 
-    // advances simulated time by wallSeconds (already capped by the caller) in whole steps; the
-    // remainder is owed to the next call. Stops early when the steps have taken budgetSeconds of
-    // computing, dropping what is still owed, so a slow scene runs slower than real time instead
-    // of piling up a backlog. Does nothing while paused.
-    Advance advance(double wallSeconds, double budgetSeconds);
+    // advances simulated time by wallSeconds (already capped by the caller) times speed, in whole
+    // steps; the remainder is owed to the next call. Stops early when the steps have taken
+    // budgetSeconds of computing, dropping what is still owed, so a slow scene runs slower than
+    // asked instead of piling up a backlog. speed kAsFastAsItGoes (0) takes steps until the
+    // budget is spent, whatever the wall time, and owes nothing. Does nothing while paused.
+    static constexpr double kAsFastAsItGoes = 0.0;
+    Advance advance(double wallSeconds, double budgetSeconds, double speed = 1.0);
 
     bool hasScene() const { return m_model != nullptr; }
     bool isRunning() const { return m_running; }

@@ -10,6 +10,7 @@
 #include "core/model/generators.h"
 #include "core/integrators/stability.h"
 #include "core/io/scene_file.h"
+#include "core/model/state_hash.h"
 #include "core/step.h"
 #include "tests/address_space_cap.h"
 
@@ -63,6 +64,8 @@ private slots:
     void advancesInWholeStepsAndOwesTheRest();
     void pausedDoesNotAdvance();
     void budgetDropsTheBacklog();
+    void speedScalesTheWallTime();
+    void asFastAsItGoesStepsUntilTheBudgetIsSpent();
     void stepOnceStepsAndPauses();
     void resetRestoresTheInitialStateExactly();
     void parameterChangeKeepsTheState();
@@ -138,6 +141,48 @@ void TestSimulationRunner::budgetDropsTheBacklog()
     QCOMPARE(advance.steps, 1);
     QCOMPARE(advance.droppedSeconds, 0.75);
     QCOMPARE(runner.advance(0.125, kNoBudgetLimit).steps, 0);
+}
+
+void TestSimulationRunner::speedScalesTheWallTime()
+{
+    // time step 0.25 s: at ×4 a quarter second of wall time is 1 s simulated, 4 steps; at ×¼ half a
+    // second is 0.125 s, owed, and the next half second makes it a step
+    ui::SimulationRunner runner = runnerWith(springScene(kStable));
+    runner.apply(ui::Play{});
+    QCOMPARE(runner.advance(0.25, kNoBudgetLimit, 4.0).steps, 4);
+    QCOMPARE(runner.state().time, 1.0);
+    // the same steps as a second at ×1, to the bit
+    ui::SimulationRunner realTime = runnerWith(springScene(kStable));
+    realTime.apply(ui::Play{});
+    QCOMPARE(realTime.advance(1.0, kNoBudgetLimit).steps, 4);
+    QCOMPARE(core::stateHash(realTime.state()), core::stateHash(runner.state()));
+    QCOMPARE(runner.advance(0.5, kNoBudgetLimit, 0.25).steps, 0);
+    QCOMPARE(runner.advance(0.5, kNoBudgetLimit, 0.25).steps, 1);
+    QCOMPARE(runner.state().time, 1.25);
+    // ×8 with a budget of nothing: one step, and the other 1.75 s asked for is given up
+    const ui::SimulationRunner::Advance capped = runner.advance(0.25, 0.0, 8.0);
+    QCOMPARE(capped.steps, 1);
+    QCOMPARE(capped.droppedSeconds, 1.75);
+}
+
+void TestSimulationRunner::asFastAsItGoesStepsUntilTheBudgetIsSpent()
+{
+    // whatever the wall time (none here), steps until the tick has computed for its budget, and
+    // nothing is dropped or owed after: back at ×1, 0.125 s of wall time is still no step
+    ui::SimulationRunner runner = runnerWith(springScene(kStable));
+    runner.apply(ui::Play{});
+    const double fast = ui::SimulationRunner::kAsFastAsItGoes;
+    const ui::SimulationRunner::Advance once = runner.advance(0.0, 0.0, fast);
+    QCOMPARE(once.steps, 1);
+    QCOMPARE(once.droppedSeconds, 0.0);
+    QElapsedTimer tick;
+    tick.start();
+    const ui::SimulationRunner::Advance spent = runner.advance(0.0, 0.02, fast);
+    QVERIFY(tick.nsecsElapsed() >= 20'000'000);
+    QVERIFY(spent.steps >= 1);
+    QCOMPARE(spent.droppedSeconds, 0.0);
+    QCOMPARE(runner.state().step, std::uint64_t(1 + spent.steps));
+    QCOMPARE(runner.advance(0.125, kNoBudgetLimit, 1.0).steps, 0);
 }
 
 void TestSimulationRunner::stepOnceStepsAndPauses()

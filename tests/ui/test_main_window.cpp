@@ -20,6 +20,7 @@
 #include "ui/panels/parameters_panel.h"
 #include "ui/document/scene_document.h"
 #include "ui/simulation/simulation_controller.h"
+#include "session/simulation_runner.h"
 #include "ui/panels/value_spin_box.h"
 #include "ui/viewport/viewport.h"
 
@@ -67,6 +68,7 @@ private slots:
     void opensOnTheSpringsExampleAndDrawsIt();
     void f4PlaysAndPauses();
     void f5RestoresTheInitialState();
+    void speedMenuKeysAndBoxAgree();
     void statusBarShowsTheRun();
     void statusBarShowsFramesBesideSteps();
     void inspectorShowsTheCurrentStateBesideTheInitial();
@@ -177,6 +179,44 @@ void TestMainWindow::f4PlaysAndPauses()
     QCOMPARE(later->snapshot->time, paused->snapshot->time);
     QCOMPARE(evenLater->snapshot->time, paused->snapshot->time);
     QVERIFY(paused->snapshot->time > 0.05);
+}
+
+void TestMainWindow::speedMenuKeysAndBoxAgree()
+{
+    // Simulation › Speed, the toolbar's box and [ ] set one speed, which the worker plays at
+    auto *box = m_window->findChild<QComboBox *>(QStringLiteral("speedBox"));
+    QVERIFY(box);
+    QCOMPARE(controller().speed(), 1.0);
+    QCOMPARE(box->currentText(), QStringLiteral("×1"));
+    m_window->findChild<QAction *>(QStringLiteral("actionSpeedFourTimes"))->trigger();
+    QCOMPARE(controller().speed(), 4.0);
+    QCOMPARE(box->currentText(), QStringLiteral("×4"));
+    press(Qt::Key_BracketRight);
+    QCOMPARE(controller().speed(), 8.0);
+    press(Qt::Key_BracketRight);
+    QCOMPARE(controller().speed(), ui::SimulationRunner::kAsFastAsItGoes);
+    QCOMPARE(box->currentText(), QStringLiteral("As fast as it goes"));
+    QVERIFY(m_window->findChild<QAction *>(QStringLiteral("actionSpeedAsFast"))->isChecked());
+    press(Qt::Key_BracketRight);  // the end of the list
+    QCOMPARE(controller().speed(), ui::SimulationRunner::kAsFastAsItGoes);
+
+    // as fast as it goes: the run steps and its frames and status bar say so
+    press(Qt::Key_F4);
+    QTRY_VERIFY(controller().frame()->running && controller().frame()->snapshot->time > 0.05);
+    QCOMPARE(controller().frame()->speed, ui::SimulationRunner::kAsFastAsItGoes);
+    auto *rate = m_window->findChild<QLabel *>(QStringLiteral("statusRate"));
+    QVERIFY(rate);
+    QTRY_VERIFY_WITH_TIMEOUT(rate->text().endsWith(QStringLiteral("as fast as it goes")), 20000);
+    press(Qt::Key_F4);
+
+    // the box picks ×¼, and the menu follows; [ from the start of the list stays there
+    emit box->activated(0);
+    QCOMPARE(controller().speed(), 0.25);
+    QVERIFY(m_window->findChild<QAction *>(QStringLiteral("actionSpeedQuarter"))->isChecked());
+    QVERIFY(!m_window->findChild<QAction *>(QStringLiteral("actionSpeedAsFast"))->isChecked());
+    press(Qt::Key_BracketLeft);
+    QCOMPARE(controller().speed(), 0.25);
+    QCOMPARE(box->currentText(), QStringLiteral("×¼"));
 }
 
 void TestMainWindow::f5RestoresTheInitialState()

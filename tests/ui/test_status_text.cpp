@@ -28,24 +28,32 @@ void TestStatusText::rate_data()
 {
     QTest::addColumn<bool>("running");
     QTest::addColumn<double>("factor");
+    QTest::addColumn<double>("speed");
     QTest::addColumn<QString>("text");
-    QTest::newRow("paused") << false << 1.0 << "paused";
-    QTest::newRow("not measured yet") << true << 0.0 << "×…";
-    QTest::newRow("real time") << true << 1.0 << "×1.00";
-    QTest::newRow("rounds to real time") << true << 0.996 << "×1.00";
-    QTest::newRow("slower") << true << 0.35 << "×0.35 — slower than real time";
-    QTest::newRow("just slower") << true << 0.99 << "×0.99 — slower than real time";
+    QTest::newRow("paused") << false << 1.0 << 1.0 << "paused";
+    QTest::newRow("not measured yet") << true << 0.0 << 1.0 << "×…";
+    QTest::newRow("real time") << true << 1.0 << 1.0 << "×1.00";
+    QTest::newRow("rounds to real time") << true << 0.996 << 1.0 << "×1.00";
+    QTest::newRow("slower") << true << 0.35 << 1.0 << "×0.35 — slower than real time";
+    QTest::newRow("just slower") << true << 0.99 << 1.0 << "×0.99 — slower than real time";
     // a step of 10 ms every 4.8 s: not ×0.00
-    QTest::newRow("far slower") << true << 0.0021 << "×0.0021 — slower than real time";
-    QTest::newRow("a tenth") << true << 0.1 << "×0.10 — slower than real time";
+    QTest::newRow("far slower") << true << 0.0021 << 1.0 << "×0.0021 — slower than real time";
+    QTest::newRow("a tenth") << true << 0.1 << 1.0 << "×0.10 — slower than real time";
+    // another speed chosen: measured against it
+    QTest::newRow("a quarter, kept up") << true << 0.25 << 0.25 << "×0.25";
+    QTest::newRow("four times, kept up") << true << 3.99 << 4.0 << "×3.99";
+    QTest::newRow("four times, behind") << true << 2.5 << 4.0 << "×2.50 — slower than the ×4 asked";
+    QTest::newRow("a half, behind") << true << 0.3 << 0.5 << "×0.30 — slower than the ×½ asked";
+    QTest::newRow("as fast as it goes") << true << 37.204 << 0.0 << "×37.20 — as fast as it goes";
 }
 
 void TestStatusText::rate()
 {
     QFETCH(bool, running);
     QFETCH(double, factor);
+    QFETCH(double, speed);
     QFETCH(QString, text);
-    QCOMPARE(ui::rateText(running, factor), text);
+    QCOMPARE(ui::rateText(running, factor, speed), text);
 }
 
 void TestStatusText::figures()

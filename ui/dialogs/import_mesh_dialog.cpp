@@ -24,10 +24,10 @@ namespace {
 // optional ones start at exactly 0, "the material's" (or "automatic")
 constexpr SliderScale kScaleScale{1e-4, 1e4, core::Scale::Log, false, 1000};
 constexpr SliderScale kDensityScale{1e-3, 1e4, core::Scale::Log, true, 1000};    // kg/m² or kg/m³
-constexpr SliderScale kStiffnessScale{1e-1, 1e7, core::Scale::Log, true, 1000};  // N/m
-constexpr SliderScale kDampingScale{1e-4, 1e3, core::Scale::Log, true, 1000};    // N·s/m
+constexpr SliderScale kMeshStiffnessScale{1e-1, 1e7, core::Scale::Log, true, 1000};  // N/m
+constexpr SliderScale kMeshDampingScale{1e-4, 1e3, core::Scale::Log, true, 1000};    // N·s/m
 constexpr SliderScale kSpacingScale{1e-3, 10.0, core::Scale::Log, true, 1000};   // m
-constexpr SliderScale kPositionScale{-10.0, 10.0, core::Scale::Linear, false, 1000};  // m
+constexpr SliderScale kMeshPositionScale{-10.0, 10.0, core::Scale::Linear, false, 1000};  // m
 
 // the kinds in the order of their box, and the sides in the order of theirs
 constexpr core::MeshKind kKinds[] = {core::MeshKind::Cloth, core::MeshKind::Soft, core::MeshKind::Collider};
@@ -99,10 +99,10 @@ ImportMeshDialog::ImportMeshDialog(BrowseFunction browse, QWidget *parent)
     m_densityUnit = new QLabel(this);
     m_density = valueBox(kDensityScale, "importDensity", 0.0, this);
     m_density->setToolTip(tr("0: the material's (a soft body: %1 kg/m³)").arg(core::kDefaultSoftDensity));
-    m_stiffness = valueBox(kStiffnessScale, "importStiffness", 0.0, this);
+    m_stiffness = valueBox(kMeshStiffnessScale, "importStiffness", 0.0, this);
     m_stiffness->setToolTip(tr("A cloth's edge springs (its shear and bend springs keep the material's proportions) "
                                "or every spring of a soft body; 0: the material's"));
-    m_damping = valueBox(kDampingScale, "importDamping", 0.0, this);
+    m_damping = valueBox(kMeshDampingScale, "importDamping", 0.0, this);
     m_damping->setToolTip(tr("Every spring's; 0: the material's (a soft body: 0.5 N·s/m)"));
     m_spacing = valueBox(kSpacingScale, "importSpacing", 0.0, this);
     m_spacing->setToolTip(tr("The soft body's lattice spacing; 0: a tenth of the longest side of its box"));
@@ -126,7 +126,7 @@ ImportMeshDialog::ImportMeshDialog(BrowseFunction browse, QWidget *parent)
     const char *names[] = {"importAtX", "importAtY", "importAtZ"};
     const double start[] = {0.0, 0.5, 0.0};
     for (int axis = 0; axis < 3; ++axis) {
-        m_at[axis] = valueBox(kPositionScale, names[axis], start[axis], this);
+        m_at[axis] = valueBox(kMeshPositionScale, names[axis], start[axis], this);
         m_at[axis]->setMinimumWidth(70);
         where->addWidget(m_at[axis], 1);
         connect(m_at[axis], &QDoubleSpinBox::valueChanged, this, &ImportMeshDialog::remake);

@@ -1,6 +1,9 @@
 #include "status_text.h"
 
 #include "ui/document/scene_edits.h"
+#include "ui/simulation/playback_speed.h"
+
+#include "session/simulation_runner.h"
 
 #include "core/model/parameters.h"
 #include "core/integrators/stability.h"
@@ -37,7 +40,7 @@ QString rateFigure(double perSecond)
 
 }  // namespace
 
-QString rateText(bool running, double realTimeFactor)
+QString rateText(bool running, double realTimeFactor, double speed)
 {
     if (!running)
         return tr("paused");
@@ -46,8 +49,11 @@ QString rateText(bool running, double realTimeFactor)
     // two decimals, or two significant digits where two decimals would read ×0.00
     const QString factor = realTimeFactor >= 0.1 ? QString::number(realTimeFactor, 'f', 2)
                                                  : QString::number(realTimeFactor, 'g', 2);
-    if (realTimeFactor < kRealTimeTolerance)
-        return tr("×%1 — slower than real time").arg(factor);
+    if (!(speed > SimulationRunner::kAsFastAsItGoes))
+        return tr("×%1 — as fast as it goes").arg(factor);
+    if (realTimeFactor < kRealTimeTolerance * speed)
+        return speed == 1.0 ? tr("×%1 — slower than real time").arg(factor)
+                            : tr("×%1 — slower than the %2 asked").arg(factor, speedText(speed));
     return QStringLiteral("×%1").arg(factor);
 }
 

@@ -20,8 +20,10 @@ inline constexpr double kRealTimeTolerance = 0.995;
 
 QString timeText(double seconds);
 // factor 0 while running means "not measured yet" ("×…"); below 0.1 it has two significant
-// digits ("×0.0021"), never "×0.00"
-QString rateText(bool running, double realTimeFactor);
+// digits ("×0.0021"), never "×0.00". speed is the one chosen (playback_speed.h): a run slower than
+// it says so ("slower than real time" at ×1, "slower than the ×4 asked"), and one as fast as it
+// goes says that instead
+QString rateText(bool running, double realTimeFactor, double speed = 1.0);
 // rates while running, empty while paused; 0 means "not measured yet" ("… steps/s"), and a slow
 // rate keeps two significant digits ("0.19 steps/s"), never "0 steps/s"; paused with steps that
 // Step asked for still owed, "taking a step…"

@@ -7,6 +7,7 @@
 
 #include <QThread>
 #include <algorithm>
+#include <cmath>
 #include <type_traits>
 #include <variant>
 
@@ -206,6 +207,17 @@ void SimulationController::setFrameInterval(double seconds)
 double SimulationController::frameInterval() const
 {
     return m_worker ? double(m_worker->frameIntervalNs().load(std::memory_order_relaxed)) * 1e-9 : 0.0;
+}
+
+void SimulationController::setSpeed(double speed)
+{
+    if (m_worker)
+        m_worker->speed().store(std::isfinite(speed) ? std::max(0.0, speed) : 1.0, std::memory_order_relaxed);
+}
+
+double SimulationController::speed() const
+{
+    return m_worker ? m_worker->speed().load(std::memory_order_relaxed) : 1.0;
 }
 
 void SimulationController::setRunning(bool running)

@@ -76,6 +76,10 @@ public:
     // window draws at (FramePacer); 0, the default: every tick's steps are shown
     void setFrameInterval(double seconds);
     double frameInterval() const;
+    // the speed a playing run goes at (playback_speed.h): a multiple of real time, or
+    // SimulationRunner::kAsFastAsItGoes; 1 until set
+    void setSpeed(double speed);
+    double speed() const;
 
     // the particle whose position and velocity the frames' plot samples carry from the worker's
     // next tick on (-1: none)

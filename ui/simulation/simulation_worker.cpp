@@ -126,12 +126,17 @@ void SimulationWorker::tick()
             const double elapsed = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
             m_clock.start();
             const double capped = std::min(elapsed, kMaxTickSeconds);
-            const SimulationRunner::Advance advance = m_runner.advance(capped, kStepBudgetSeconds);
+            const double speed = m_speed.load(std::memory_order_relaxed);
+            const double timeStep = m_runner.hasScene() ? m_runner.model()->timeStep : 0.0;
+            const SimulationRunner::Advance advance = m_runner.advance(capped, kStepBudgetSeconds, speed);
             stepped = advance.steps > 0;
             m_snapshotStale = m_snapshotStale || stepped;
-            // the rates over a window that holds a step, then a fresh window
-            if (m_rates.add(advance.steps, capped - advance.droppedSeconds,
-                            static_cast<double>(m_window.nsecsElapsed()) * 1e-9))
+            // the rates over a window that holds a step, then a fresh window; the simulated time
+            // the tick kept up with (as fast as it goes: the steps it took)
+            const double credited = speed > SimulationRunner::kAsFastAsItGoes
+                                        ? capped * speed - advance.droppedSeconds
+                                        : static_cast<double>(advance.steps) * timeStep;
+            if (m_rates.add(advance.steps, credited, static_cast<double>(m_window.nsecsElapsed()) * 1e-9))
                 m_window.start();
         }
     }
@@ -206,6 +211,7 @@ void SimulationWorker::publish(Frame kind)
     frame->running = m_runner.isRunning();
     frame->stepsOwed = m_runner.stepsOwed();
     frame->realTimeFactor = m_rates.realTimeFactor();
+    frame->speed = m_speed.load(std::memory_order_relaxed);
     frame->stepsPerSecond = m_rates.stepsPerSecond();
     const RunDiagnostics &diagnostics = m_runner.diagnostics();
     frame->localError = diagnostics.localError();

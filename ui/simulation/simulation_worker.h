@@ -56,6 +56,9 @@ public:
     // the shortest time between two frames that bring nothing but new steps (ns), set by the UI
     // side to the pace it draws at; a frame that answers a message goes at once
     std::atomic<std::int64_t> &frameIntervalNs() { return m_frameIntervalNs; }
+    // the speed a playing run goes at, set by the UI side: simulated seconds per wall-clock second,
+    // or SimulationRunner::kAsFastAsItGoes (playback_speed.h)
+    std::atomic<double> &speed() { return m_speed; }
     // how big a snapshot may be before a frame answering a message goes without it
     // (kSlowSnapshotElements); set before the worker runs (the tests set 0 to see every answer go first)
     void setSlowSnapshotElements(std::int64_t elements) { m_slowSnapshotElements = elements; }
@@ -96,6 +99,7 @@ private:
     std::atomic<bool> m_wakePending = false;
     std::uint64_t m_appliedMessage = 0;
     std::atomic<std::int64_t> m_frameIntervalNs = 0;
+    std::atomic<double> m_speed = 1.0;
     std::atomic<int> m_plottedParticle = -1;
     std::uint64_t m_lastSampleSent = 0;  // the sequence number of the newest sample a frame carried
     QElapsedTimer m_published;   // since the latest frame

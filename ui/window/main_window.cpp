@@ -17,6 +17,8 @@
 #include "ui/document/scene_commands.h"
 #include "ui/document/scene_document.h"
 #include "session/session_file.h"
+#include "ui/simulation/playback_speed.h"
+#include "session/simulation_runner.h"
 #include "ui/simulation/simulation_controller.h"
 #include "ui/panels/status_text.h"
 #include "camera_actions.h"
@@ -26,8 +28,12 @@
 
 #include "core/integrators/accuracy_planner.h"
 
+#include <algorithm>
+
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
+#include <QComboBox>
 #include <QCloseEvent>
 #include <QDateTime>
 #include <QDir>
@@ -209,6 +215,8 @@ void MainWindow::createActions()
         tr("Type a local error per step; the cheapest integrator and substeps that keep under it are applied"));
     connect(m_accuracyAction, &QAction::triggered, this, &MainWindow::showAccuracy);
 
+    createSpeedActions();
+
     // steering, for scenes with a steerable particle
     struct SteerKey {
         const char *name;
@@ -239,6 +247,56 @@ void MainWindow::createActions()
     }
 }
 
+void MainWindow::createSpeedActions()
+{
+    auto *group = new QActionGroup(this);
+    for (const PlaybackSpeed &speed : playbackSpeeds()) {
+        auto *action = new QAction(speedText(speed.factor), group);
+        action->setObjectName(QString::fromLatin1(speed.objectName));
+        action->setCheckable(true);
+        action->setChecked(speed.factor == 1.0);
+        action->setData(speed.factor);
+        action->setStatusTip(speed.factor > SimulationRunner::kAsFastAsItGoes
+                                 ? tr("Play %1 real time; faster fills the timeline ahead").arg(speedText(speed.factor))
+                                 : tr("Play as fast as the computer can, each frame shown as it comes"));
+        connect(action, &QAction::triggered, this, [this, factor = speed.factor] { setSpeed(factor); });
+        m_speedActions << action;
+    }
+    // [ and ] go one speed slower or faster, as far as the ends of the list
+    const auto neighbour = [this](int by) {
+        const int at = int(std::find_if(m_speedActions.begin(), m_speedActions.end(),
+                                         [](const QAction *a) { return a->isChecked(); }) -
+                           m_speedActions.begin());
+        const int next = std::clamp(at + by, 0, int(m_speedActions.size()) - 1);
+        setSpeed(m_speedActions[next]->data().toDouble());
+    };
+    auto *slower = new QAction(tr("Slower"), this);
+    slower->setObjectName(QStringLiteral("actionSpeedSlower"));
+    slower->setShortcut(Qt::Key_BracketLeft);
+    connect(slower, &QAction::triggered, this, [neighbour] { neighbour(-1); });
+    auto *faster = new QAction(tr("Faster"), this);
+    faster->setObjectName(QStringLiteral("actionSpeedFaster"));
+    faster->setShortcut(Qt::Key_BracketRight);
+    connect(faster, &QAction::triggered, this, [neighbour] { neighbour(+1); });
+    auto *separator = new QAction(this);
+    separator->setSeparator(true);
+    m_speedActions << separator << slower << faster;
+}
+
+void MainWindow::setSpeed(double speed)
+{
+    m_controller->setSpeed(speed);
+    for (QAction *action : std::as_const(m_speedActions))
+        if (action->isCheckable())
+            action->setChecked(action->data().toDouble() == speed);
+    if (m_speedBox)
+        m_speedBox->setCurrentIndex(m_speedBox->findData(speed));
+    m_statusBar->showMessage(speed > SimulationRunner::kAsFastAsItGoes
+                                 ? tr("Playing at %1 real time").arg(speedText(speed))
+                                 : tr("Playing as fast as it goes"),
+                             5000);
+}
+
 void MainWindow::createMenus()
 {
     createFileMenu();
@@ -256,6 +314,9 @@ void MainWindow::createMenus()
     simulation->addAction(m_kickAction);
     simulation->addAction(m_collisionsAction);
     simulation->addAction(m_accuracyAction);
+    QMenu *speed = simulation->addMenu(tr("S&peed"));
+    speed->setObjectName(QStringLiteral("menuSpeed"));
+    speed->addActions(m_speedActions);
     simulation->addSeparator();
     simulation->addActions(m_steerActions);
 
@@ -285,6 +346,16 @@ void MainWindow::createMenus()
     toolbar->addAction(m_playAction);
     toolbar->addAction(m_stepAction);
     toolbar->addAction(m_resetAction);
+    m_speedBox = new QComboBox(toolbar);
+    m_speedBox->setObjectName(QStringLiteral("speedBox"));
+    m_speedBox->setToolTip(tr("Playback speed: a multiple of real time ([ and ] change it), or as fast as it goes"));
+    m_speedBox->setFocusPolicy(Qt::TabFocus);
+    for (const QAction *action : std::as_const(m_speedActions))
+        m_speedBox->addItem(action->text().remove(QLatin1Char('&')), action->data());
+    m_speedBox->setCurrentIndex(m_speedBox->findData(1.0));
+    connect(m_speedBox, &QComboBox::activated, this,
+            [this](int index) { setSpeed(m_speedBox->itemData(index).toDouble()); });
+    toolbar->addWidget(m_speedBox);
     m_viewMenu->addAction(toolbar->toggleViewAction());
 }
 
@@ -585,7 +656,7 @@ void MainWindow::frameChanged()
     // the figures of the run
     const core::Snapshot &snapshot = *frame->snapshot;
     m_timeLabel->setText(timeText(snapshot.time));
-    m_rateLabel->setText(rateText(frame->running, frame->realTimeFactor));
+    m_rateLabel->setText(rateText(frame->running, frame->realTimeFactor, frame->speed));
     m_stepsLabel->setText(stepsText(frame->running, frame->stepsPerSecond, frame->stepsOwed));
     m_framesLabel->setText(framesText(frame->running, m_pacer.framesPerSecond()));
     m_energyLabel->setText(energyText(snapshot.energies));

@@ -16,6 +16,7 @@
 #include <cstdint>
 
 class QAction;
+class QComboBox;
 class QLabel;
 class QMenu;
 class QDockWidget;
@@ -130,6 +131,9 @@ protected:
 
 private:
     void createActions();
+    void createSpeedActions();
+    // plays at speed (playback_speed.h): the worker, the menu and the toolbar's box
+    void setSpeed(double speed);
     void createMenus();
     void createFileMenu();
     void createEditMenu();
@@ -233,6 +237,10 @@ private:
     QAction *m_captureAction = nullptr;
     QAction *m_recordAction = nullptr;
     QList<QAction *> m_steerActions;
+    // the playback speeds (playback_speed.h): checkable, one checked, in the Simulation menu's
+    // Speed submenu and the toolbar's speed box, which follow each other
+    QList<QAction *> m_speedActions;
+    QComboBox *m_speedBox = nullptr;
     QAction *m_revertAction = nullptr;
     QMenu *m_fileMenu = nullptr;
     QMenu *m_editMenu = nullptr;

@@ -48,7 +48,8 @@ void MainWindow::frameDrawn()
     if (m_frameArrival >= 0.0 && running) {
         // a run that does not keep up with real time gets the frames its drawing share allows
         m_pacer.drawn(now - m_frameArrival, now);
-        const bool behind = frame->realTimeFactor < kRealTimeTolerance;
+        // (as fast as it goes is always behind: the core, not the clock, sets the pace)
+        const bool behind = !(frame->speed > 0.0) || frame->realTimeFactor < kRealTimeTolerance * frame->speed;
         m_controller->setFrameInterval(m_pacer.interval(behind));
         m_framesLabel->setText(framesText(true, m_pacer.framesPerSecond()));
     }
