@@ -335,13 +335,16 @@ void TestCameraActions::smallGeneratedContentInViewKeepsTheCamera()
 
 void TestCameraActions::gridOnlyOnFloors()
 {
-    // two particles, no planes: no grid at all, from above
+    // two particles, no planes: no grid at all, from above. A grid is hundreds of grey pixels
+    // (over 500 below); a sphere's shaded rim can give one or two of that grey, depending on
+    // the view's size, so "none" is under 20
+    constexpr std::size_t kNoGrid = 20;
     core::SceneDesc scene = markers();
     scene.particles.resize(2);
     scene.particles[0].position = {-1.0, 0.5, 0.0};
     QVERIFY(show(scene));
     press(Qt::Key_7, Qt::ControlModifier);
-    QCOMPARE(gridPixels().size(), std::size_t(0));
+    QCOMPARE_LT(gridPixels().size(), kNoGrid);
 
     // a wall is not a floor
     core::PlaneDesc wall;
@@ -350,7 +353,7 @@ void TestCameraActions::gridOnlyOnFloors()
     scene.planes.push_back(wall);
     QVERIFY(show(scene));
     press(Qt::Key_7, Qt::ControlModifier);
-    QCOMPARE(gridPixels().size(), std::size_t(0));
+    QCOMPARE_LT(gridPixels().size(), kNoGrid);
 
     // a floor at y = -0.4: the grid, and seen edge on from the front, a line at its height
     core::PlaneDesc floor;

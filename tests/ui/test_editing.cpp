@@ -671,7 +671,7 @@ void TestEditing::measureToolShowsTheDistanceAndFollowsTheRun()
                                    .arg(QString::number(truth.norm(), 'g', 6))),
              qPrintable(status));
     QCOMPARE(tools()->selection().particles, (std::vector<int>{0, 1}));
-    QCOMPARE(m_window->inspector()->distanceField(QStringLiteral("current"))->text(), ui::distanceText(measured->delta));
+    QCOMPARE(m_window->inspector()->distanceField(QStringLiteral("current"))->text(), ui::distanceLines(measured->delta));
     // measuring changes nothing in the scene
     QCOMPARE(undo()->count(), 0);
 
@@ -695,7 +695,7 @@ void TestEditing::measureToolShowsTheDistanceAndFollowsTheRun()
                  qPrintable(line->painted() ? line->painted()->label : QStringLiteral("nothing painted")));
     QVERIFY((line->line().p2() - QPointF(pixelOf(positionIn(now, 2)))).manhattanLength() < 2.0);
     QCOMPARE(m_window->inspector()->distanceField(QStringLiteral("current"))->text(),
-             ui::distanceText(positionIn(now, 2) - positionIn(now, 0)));
+             ui::distanceLines(positionIn(now, 2) - positionIn(now, 0)));
     // the scene's initial positions are untouched
     QVERIFY(scene() == s);
 

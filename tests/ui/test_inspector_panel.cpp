@@ -770,20 +770,20 @@ void TestInspectorPanel::twoParticlesShowTheirDistance()
     select({2, 0});
     QVERIFY(m_panel->distanceGroup()->isVisible());
     QCOMPARE(m_panel->distanceGroup()->title(), QStringLiteral("Distance from particle 0 to 2"));
-    QCOMPARE(m_panel->distanceField(QStringLiteral("initial"))->text(), QStringLiteral("1 m (Δx 0, Δy 1, Δz 0)"));
+    QCOMPARE(m_panel->distanceField(QStringLiteral("initial"))->text(), QStringLiteral("1 m\n(Δx 0, Δy 1, Δz 0)"));
     QCOMPARE(m_panel->distanceField(QStringLiteral("current"))->text(), QStringLiteral("—"));
     auto snapshot = std::make_shared<core::Snapshot>();
     snapshot->positions = {0.0f, 1.0f, 0.0f, 1.0f, 1.0f, 0.0f, 3.0f, 5.0f, 0.0f};
     snapshot->radii = {0.1f, 0.1f, 0.1f};
     snapshot->velocities.assign(9, 0.0f);
     m_panel->showSnapshot(snapshot);
-    QCOMPARE(m_panel->distanceField(QStringLiteral("current"))->text(), QStringLiteral("5 m (Δx 3, Δy 4, Δz 0)"));
-    QCOMPARE(m_panel->distanceField(QStringLiteral("current"))->text(), ui::distanceText({3.0, 4.0, 0.0}));
+    QCOMPARE(m_panel->distanceField(QStringLiteral("current"))->text(), QStringLiteral("5 m\n(Δx 3, Δy 4, Δz 0)"));
+    QCOMPARE(m_panel->distanceField(QStringLiteral("current"))->text(), ui::distanceLines({3.0, 4.0, 0.0}));
 
     // an edit of an initial position shows at once
     m_document->modify([](core::SceneDesc &scene) { scene.particles[2].position = {0.0, 1.0, -2.0}; },
                        ui::SceneChange::InitialConditions);
-    QCOMPARE(m_panel->distanceField(QStringLiteral("initial"))->text(), QStringLiteral("2 m (Δx 0, Δy 0, Δz -2)"));
+    QCOMPARE(m_panel->distanceField(QStringLiteral("initial"))->text(), QStringLiteral("2 m\n(Δx 0, Δy 0, Δz -2)"));
 }
 
 QTEST_MAIN(TestInspectorPanel)

@@ -40,6 +40,9 @@
 #include <QLineEdit>
 #include <QRegularExpression>
 #include <QScopeGuard>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <numeric>
 #include <QtTest>
 
 #include "editor_fixture.h"
@@ -47,6 +50,7 @@
 
 namespace {
 
+using namespace Qt::StringLiterals;
 using test::frameAfter;
 using test::settledFrame;
 
@@ -69,6 +73,8 @@ private slots:
     void f4PlaysAndPauses();
     void f5RestoresTheInitialState();
     void speedMenuKeysAndBoxAgree();
+    void toolbarsShowEveryFieldAtAnyWidth();
+    void inspectorIsNeverCut();
     void statusBarShowsTheRun();
     void statusBarShowsFramesBesideSteps();
     void inspectorShowsTheCurrentStateBesideTheInitial();
@@ -195,7 +201,7 @@ void TestMainWindow::speedMenuKeysAndBoxAgree()
     QCOMPARE(controller().speed(), 8.0);
     press(Qt::Key_BracketRight);
     QCOMPARE(controller().speed(), ui::SimulationRunner::kAsFastAsItGoes);
-    QCOMPARE(box->currentText(), QStringLiteral("As fast as it goes"));
+    QCOMPARE(box->currentText(), QStringLiteral("Fastest"));
     QVERIFY(m_window->findChild<QAction *>(QStringLiteral("actionSpeedAsFast"))->isChecked());
     press(Qt::Key_BracketRight);  // the end of the list
     QCOMPARE(controller().speed(), ui::SimulationRunner::kAsFastAsItGoes);
@@ -217,6 +223,68 @@ void TestMainWindow::speedMenuKeysAndBoxAgree()
     press(Qt::Key_BracketLeft);
     QCOMPARE(controller().speed(), 0.25);
     QCOMPARE(box->currentText(), QStringLiteral("×¼"));
+}
+
+void TestMainWindow::toolbarsShowEveryFieldAtAnyWidth()
+{
+    // wide, as tested, and narrow: the tools, the new items' fields, Snap and its grid step and the
+    // speed box all show, none behind the toolbar's "»"
+    const QStringList names{u"speedBox"_s, u"defaultMass"_s, u"defaultRadius"_s, u"defaultStiffness"_s,
+                            u"defaultDamping"_s, u"defaultSnap"_s, u"gridStep"_s};
+    for (const int width : {1600, m_window->width(), 900}) {
+        m_window->resize(width, m_window->height());
+        for (const QString &name : names) {
+            auto *widget = m_window->findChild<QWidget *>(name);
+            QVERIFY2(widget, qPrintable(name));
+            QTRY_VERIFY2(widget->isVisible() && !widget->visibleRegion().isEmpty(),
+                         qPrintable(QStringLiteral("%1 hidden at %2 px").arg(name).arg(width)));
+        }
+    }
+}
+
+void TestMainWindow::inspectorIsNeverCut()
+{
+    // the inspector's dock as the window opens: two particles far apart, then 40 springs
+    auto *dock = m_window->findChild<QDockWidget *>(u"inspectorDock"_s);
+    QVERIFY(dock);
+    auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
+    QVERIFY(scroll);
+    const auto fitsWhole = [&](const QString &name) {
+        auto *label = dock->findChild<QLabel *>(name);
+        if (!label)
+            return name + u" missing"_s;
+        const QRect inViewport(label->mapTo(scroll->viewport(), QPoint(0, 0)), label->size());
+        if (label->width() < label->sizeHint().width() || label->height() < label->sizeHint().height())
+            return u"%1 is %2 x %3, its text needs %4 x %5"_s.arg(name).arg(label->width()).arg(label->height())
+                .arg(label->sizeHint().width()).arg(label->sizeHint().height());
+        if (inViewport.right() >= scroll->viewport()->width())
+            return u"%1 ends at %2, behind the scroll bar from %3"_s.arg(name).arg(inViewport.right())
+                .arg(scroll->viewport()->width());
+        return QString();
+    };
+    m_window->document()->modify([](core::SceneDesc &scene) { scene.particles[0].position = {-1.2345678, 0.5, 2.25}; },
+                                 ui::SceneChange::InitialConditions);
+    m_window->editTools()->setSelection(ui::Selection{{0, 57}, {}});
+    QCoreApplication::processEvents();
+    QTRY_COMPARE(fitsWhole(u"inspector-distance-initial"_s), QString());
+    QTRY_COMPARE(fitsWhole(u"inspector-distance-current"_s), QString());
+    QVERIFY(!scroll->horizontalScrollBar()->isVisible());
+    // a coordinate shows its 8 digits, in a field wide enough for them
+    m_window->editTools()->setSelection(ui::Selection{{0}, {}});
+    auto *x = dock->findChild<QAbstractSpinBox *>(u"inspector-position.x"_s);
+    QVERIFY(x);
+    QTRY_COMPARE(x->text(), u"-1.2345678"_s);
+    QVERIFY(x->width() >= x->fontMetrics().horizontalAdvance(x->text()));
+
+    std::vector<int> forty(40);
+    std::iota(forty.begin(), forty.end(), 0);
+    m_window->editTools()->setSelection(ui::Selection{{}, forty});
+    QTRY_COMPARE(fitsWhole(u"inspector-springEnds"_s), QString());
+    auto *ends = dock->findChild<QLabel *>(u"inspector-springEnds"_s);
+    auto *stiffness = dock->findChild<QWidget *>(u"inspector-stiffness"_s);
+    QVERIFY(ends && stiffness);
+    QVERIFY(ends->mapTo(dock, QPoint(0, ends->height())).y() <= stiffness->mapTo(dock, QPoint(0, 0)).y());
+    QVERIFY2(ends->text().endsWith(u" and 37 more"_s), qPrintable(ends->text()));
 }
 
 void TestMainWindow::f5RestoresTheInitialState()

@@ -166,6 +166,11 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
             particleForm->addRow(withUnit(tr(field.label), unit), box);
             continue;
         }
+        // three to a row: without arrow buttons (the keys and the wheel still step), and wide
+        // enough for a value's 8 significant digits with its sign and point
+        box->setButtonSymbols(QAbstractSpinBox::NoButtons);
+        box->setSignificantDigits(8);
+        box->setMinimumWidth(box->fontMetrics().horizontalAdvance(QStringLiteral("-12.345678")) + 12);
         if (field.axis == 0) {
             vectorRow = new QHBoxLayout;
             const QString name = field.vector == &core::ParticleDesc::position   ? tr("Initial position")
@@ -221,10 +226,8 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
     m_initialDistance = new QLabel(m_distanceGroup);
     m_initialDistance->setObjectName(QStringLiteral("inspector-distance-initial"));
     m_initialDistance->setToolTip(tr("The distance between the initial positions (where Reset puts them)"));
-    for (QLabel *value : {m_currentDistance, m_initialDistance}) {
+    for (QLabel *value : {m_currentDistance, m_initialDistance})
         value->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        value->setWordWrap(true);
-    }
     distanceForm->addRow(tr("Current"), m_currentDistance);
     distanceForm->addRow(tr("Initial"), m_initialDistance);
     layout->addWidget(m_distanceGroup);
@@ -236,7 +239,6 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
     springForm->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
     m_springEnds = new QLabel(m_springsGroup);
     m_springEnds->setObjectName(QStringLiteral("inspector-springEnds"));
-    m_springEnds->setWordWrap(true);
     springForm->addRow(tr("Joins"), m_springEnds);
     for (std::size_t f = 0; f < std::size(kSpringFields); ++f) {
         const SpringField &field = kSpringFields[f];
@@ -364,7 +366,7 @@ void InspectorPanel::refreshCurrent()
             const float *p = snapshot->positions.data() + 3 * i;
             return Eigen::Vector3d(double(p[0]), double(p[1]), double(p[2]));
         };
-        m_currentDistance->setText(distanceText(at(pair->second) - at(pair->first)));
+        m_currentDistance->setText(distanceLines(at(pair->second) - at(pair->first)));
     } else {
         m_currentDistance->setText(QStringLiteral("—"));
     }
@@ -422,7 +424,7 @@ void InspectorPanel::refresh()
     if (pair) {
         m_distanceGroup->setTitle(tr("Distance from particle %1 to %2").arg(pair->first).arg(pair->second));
         m_initialDistance->setText(
-            distanceText(scene.particles[pair->second].position - scene.particles[pair->first].position));
+            distanceLines(scene.particles[pair->second].position - scene.particles[pair->first].position));
     }
 
     // springs: the same, and which particles they join
@@ -432,16 +434,25 @@ void InspectorPanel::refresh()
             const auto read = [&](std::size_t i) { return scene.springs[i].*kSpringFields[f].member; };
             showIn(m_springFields[f], sharedValue(springs, read), read(springs.front()));
         }
-        constexpr std::size_t kListed = 6;  // more pairs than this make the line unreadable
-        QStringList pairs;
-        for (std::size_t k = 0; k < springs.size() && k < kListed; ++k)
-            pairs << QStringLiteral("%1–%2").arg(scene.springs[springs[k]].a).arg(scene.springs[springs[k]].b);
-        if (springs.size() > kListed)
-            pairs << QStringLiteral("…");
-        m_springEnds->setText(springs.size() == 1 ? tr("particles %1 and %2")
-                                                        .arg(scene.springs[springs.front()].a)
-                                                        .arg(scene.springs[springs.front()].b)
-                                                  : pairs.join(QStringLiteral(", ")));
+        // one line, whatever the count: the first pairs, then how many more (all of them, up to a
+        // screenful, in the tooltip)
+        constexpr std::size_t kListed = 3;
+        constexpr std::size_t kInTooltip = 60;
+        const auto pairsOf = [&](std::size_t count) {
+            QStringList pairs;
+            for (std::size_t k = 0; k < springs.size() && k < count; ++k)
+                pairs << QStringLiteral("%1–%2").arg(scene.springs[springs[k]].a).arg(scene.springs[springs[k]].b);
+            return pairs.join(QStringLiteral(", "));
+        };
+        if (springs.size() == 1)
+            m_springEnds->setText(
+                tr("particles %1 and %2").arg(scene.springs[springs.front()].a).arg(scene.springs[springs.front()].b));
+        else if (springs.size() <= kListed)
+            m_springEnds->setText(pairsOf(kListed));
+        else
+            m_springEnds->setText(tr("%1 and %n more", nullptr, int(springs.size() - kListed)).arg(pairsOf(kListed)));
+        m_springEnds->setToolTip(springs.size() > kInTooltip ? pairsOf(kInTooltip) + QStringLiteral(", …")
+                                                             : pairsOf(kInTooltip));
     }
 
     m_planes->refresh();

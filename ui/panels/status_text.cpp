@@ -192,6 +192,11 @@ QString distanceText(const Eigen::Vector3d &delta)
         .arg(number(delta.norm()), number(delta.x()), number(delta.y()), number(delta.z()));
 }
 
+QString distanceLines(const Eigen::Vector3d &delta)
+{
+    return distanceText(delta).replace(QStringLiteral(" ("), QStringLiteral("\n("));
+}
+
 QString particleLimitText(const QString &notDone, std::size_t total)
 {
     return tr("%1: the scene would have %2 particles, more than the %3 the editor allows; nothing was changed")

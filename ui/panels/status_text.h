@@ -58,6 +58,9 @@ QString lengthText(double metres);
 // a measured distance from one point to another, six significant digits with its parts:
 // "1.22474 m (Δx 1, Δy 0.5, Δz -0.5)"
 QString distanceText(const Eigen::Vector3d &delta);
+// the same as two lines, the distance over its parts, for the inspector (a label that wraps by
+// itself in a form is given one line's height and overlaps the row below)
+QString distanceLines(const Eigen::Vector3d &delta);
 
 // why an edit that would add particles past the editor's limit was refused: "Not duplicated: the
 // scene would have 400000 particles, more than the 200000 the editor allows; nothing was changed"

@@ -82,7 +82,7 @@ QString ValueSpinBox::textFromValue(double value) const
     // the word typed, while the clamped value it became is held
     if (m_typedNonFinite && std::abs(value) == std::numeric_limits<double>::max())
         return locale().toString(*m_typedNonFinite).toLower();
-    return numberLocale().toString(value, 'g', 6);
+    return numberLocale().toString(value, 'g', m_digits);
 }
 
 double ValueSpinBox::valueFromText(const QString &text) const

@@ -24,6 +24,9 @@ public:
     // lets "nan", "inf" and "-inf" be typed too, for a field whose owner refuses them with a
     // message rather than have the validator swallow them without a word
     void setNonFiniteTypable(bool typable) { m_nonFiniteTypable = typable; }
+    // significant digits shown (6 unless set): the inspector's coordinates show 8, as many as a
+    // user types for a position to the tenth of a micrometre
+    void setSignificantDigits(int digits) { m_digits = digits; }
     // the value as typed: value(), or the NaN or infinity typed last, which QDoubleSpinBox cannot
     // hold (it clamps them to its range); the field shows the word typed meanwhile
     double typedValue() const;
@@ -43,6 +46,7 @@ private:
 
     SliderScale m_scale;
     bool m_nonFiniteTypable = false;
+    int m_digits = 6;
     QString m_typedText;                       // typed since the field last finished editing
     std::optional<double> m_typedNonFinite;    // the value that field holds, when not finite
 };

@@ -22,6 +22,7 @@
 #include "ui/simulation/simulation_controller.h"
 #include "ui/panels/status_text.h"
 #include "camera_actions.h"
+#include "dock_scroll_area.h"
 #include "status_bar.h"
 #include "view_layer_actions.h"
 #include "ui/viewport/viewport.h"
@@ -35,6 +36,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QCloseEvent>
+#include <QResizeEvent>
 #include <QDateTime>
 #include <QDir>
 #include <QDockWidget>
@@ -247,6 +249,28 @@ void MainWindow::createActions()
     }
 }
 
+void MainWindow::resizeEvent(QResizeEvent *event)
+{
+    QMainWindow::resizeEvent(event);
+    fitToolBars();
+}
+
+void MainWindow::fitToolBars()
+{
+    // only while the user leaves the toolbars at the top, not floating
+    if (!m_itemsToolBar || toolBarArea(m_itemsToolBar) != Qt::TopToolBarArea || m_itemsToolBar->isFloating())
+        return;
+    int wanted = 0;
+    for (const QToolBar *bar : findChildren<QToolBar *>(Qt::FindDirectChildrenOnly))
+        if (!bar->isHidden() && !bar->isFloating() && toolBarArea(const_cast<QToolBar *>(bar)) == Qt::TopToolBarArea)
+            wanted += bar->sizeHint().width();
+    const bool fits = wanted <= width();
+    if (fits && toolBarBreak(m_itemsToolBar))
+        removeToolBarBreak(m_itemsToolBar);
+    else if (!fits && !toolBarBreak(m_itemsToolBar))
+        insertToolBarBreak(m_itemsToolBar);
+}
+
 void MainWindow::createSpeedActions()
 {
     auto *group = new QActionGroup(this);
@@ -350,8 +374,13 @@ void MainWindow::createMenus()
     m_speedBox->setObjectName(QStringLiteral("speedBox"));
     m_speedBox->setToolTip(tr("Playback speed: a multiple of real time ([ and ] change it), or as fast as it goes"));
     m_speedBox->setFocusPolicy(Qt::TabFocus);
+    // short names, so that the box leaves the tools' toolbar its room: "Fastest" for as fast as it goes
     for (const QAction *action : std::as_const(m_speedActions))
-        m_speedBox->addItem(action->text().remove(QLatin1Char('&')), action->data());
+        if (action->isCheckable())
+            m_speedBox->addItem(action->data().toDouble() > SimulationRunner::kAsFastAsItGoes ? action->text()
+                                                                                          : tr("Fastest"),
+                                action->data());
+    m_speedBox->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_speedBox->setCurrentIndex(m_speedBox->findData(1.0));
     connect(m_speedBox, &QComboBox::activated, this,
             [this](int index) { setSpeed(m_speedBox->itemData(index).toDouble()); });
@@ -361,12 +390,9 @@ void MainWindow::createMenus()
 
 QWidget *MainWindow::inScrollArea(QWidget *content)
 {
-    // a dock's content scrolls rather than forcing the window taller when it grows
-    auto *scroll = new QScrollArea;
-    scroll->setWidget(content);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    return scroll;
+    // a dock's content scrolls rather than forcing the window taller when it grows, and is never
+    // cut at its side (dock_scroll_area.h)
+    return new DockScrollArea(content);
 }
 
 void MainWindow::createDocks()

@@ -125,6 +125,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
     void dragEnterEvent(QDragEnterEvent *event) override;
     void dragMoveEvent(QDragMoveEvent *event) override;
     void dropEvent(QDropEvent *event) override;
@@ -132,6 +133,8 @@ protected:
 private:
     void createActions();
     void createSpeedActions();
+    // the New Items toolbar on the row above's end where it fits, else on a row of its own
+    void fitToolBars();
     // plays at speed (playback_speed.h): the worker, the menu and the toolbar's box
     void setSpeed(double speed);
     void createMenus();
@@ -207,6 +210,7 @@ private:
     Viewport *m_viewport = nullptr;
     EditTools *m_tools = nullptr;
     QToolBar *m_toolBar = nullptr;
+    QToolBar *m_itemsToolBar = nullptr;
     InspectorPanel *m_inspector = nullptr;
     ParametersPanel *m_parameters = nullptr;
     QDockWidget *m_parametersDock = nullptr;

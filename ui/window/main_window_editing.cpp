@@ -61,7 +61,11 @@ void MainWindow::createEditing()
     m_toolBar->setObjectName(QStringLiteral("toolsToolBar"));
     for (QAction *action : m_tools->toolActions())
         m_toolBar->addAction(action);
-    m_toolBar->addSeparator();
+    m_viewMenu->addAction(m_toolBar->toggleViewAction());
+    // what new particles and springs get, a toolbar of its own: on the tools' row where the window
+    // is wide enough, else on a row of its own (fitToolBars), never behind "»"
+    m_itemsToolBar = addToolBar(tr("New Items"));
+    m_itemsToolBar->setObjectName(QStringLiteral("newItemsToolBar"));
 
     const DefaultField fields[] = {
         {"defaultMass", QT_TR_NOOP("Mass"), QT_TR_NOOP("Mass of new particles, kg"), &ItemDefaults::mass,
@@ -74,8 +78,8 @@ void MainWindow::createEditing()
          {1e-3, 1e3, core::Scale::Log, true, 1000}},
     };
     for (const DefaultField &f : fields) {
-        auto *label = new QLabel(tr(f.label), m_toolBar);
-        auto *box = new ValueSpinBox(f.scale, m_toolBar);
+        auto *label = new QLabel(tr(f.label), m_itemsToolBar);
+        auto *box = new ValueSpinBox(f.scale, m_itemsToolBar);
         box->setObjectName(QString::fromLatin1(f.name));
         box->setToolTip(tr(f.tip));
         label->setToolTip(tr(f.tip));
@@ -95,14 +99,14 @@ void MainWindow::createEditing()
             }
             m_tools->defaults().*field = value;
         });
-        m_toolBar->addWidget(label);
-        m_toolBar->addWidget(box);
+        m_itemsToolBar->addWidget(label);
+        m_itemsToolBar->addWidget(box);
     }
 
-    auto *snap = new QCheckBox(tr("Snap"), m_toolBar);
+    auto *snap = new QCheckBox(tr("Snap"), m_itemsToolBar);
     snap->setObjectName(QStringLiteral("defaultSnap"));
     snap->setToolTip(tr("Place new particles on a grid"));
-    auto *step = new ValueSpinBox({1e-3, 10.0, core::Scale::Log, false, 1000}, m_toolBar);
+    auto *step = new ValueSpinBox({1e-3, 10.0, core::Scale::Log, false, 1000}, m_itemsToolBar);
     step->setObjectName(QStringLiteral("gridStep"));
     step->setToolTip(tr("Grid step, m"));
     step->setMaximumWidth(compactWidth(step));
@@ -121,9 +125,9 @@ void MainWindow::createEditing()
         }
         m_tools->defaults().gridStep = value;
     });
-    m_toolBar->addWidget(snap);
-    m_toolBar->addWidget(step);
-    m_viewMenu->addAction(m_toolBar->toggleViewAction());
+    m_itemsToolBar->addWidget(snap);
+    m_itemsToolBar->addWidget(step);
+    m_viewMenu->addAction(m_itemsToolBar->toggleViewAction());
 
     // the selection's actions join undo and redo in the Edit menu
     m_editMenu->addSeparator();

@@ -1,0 +1,35 @@
+#include "dock_scroll_area.h"
+
+#include <QEvent>
+#include <QScrollBar>
+
+namespace ui {
+
+DockScrollArea::DockScrollArea(QWidget *content, QWidget *parent) : QScrollArea(parent)
+{
+    setWidget(content);
+    setWidgetResizable(true);
+    setFrameShape(QFrame::NoFrame);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    content->installEventFilter(this);
+}
+
+QSize DockScrollArea::minimumSizeHint() const
+{
+    const QWidget *content = widget();
+    if (!content)
+        return QScrollArea::minimumSizeHint();
+    // room for the bar whether or not it shows now, so that its coming never narrows the content
+    const int bar = verticalScrollBar()->sizeHint().width();
+    const int frame = 2 * frameWidth();
+    return {content->minimumSizeHint().width() + bar + frame, QScrollArea::minimumSizeHint().height()};
+}
+
+bool DockScrollArea::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == widget() && event->type() == QEvent::LayoutRequest)
+        updateGeometry();
+    return QScrollArea::eventFilter(watched, event);
+}
+
+}  // namespace ui
