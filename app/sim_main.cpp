@@ -31,6 +31,7 @@
 #include "core/thread_chooser.h"
 #include "core/threads.h"
 
+#include "session/run_diagnostics.h"
 #include "session/session_file.h"
 
 #include <QCoreApplication>
@@ -368,6 +369,12 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
     // the threads each step runs on, chosen from the steps' times: on a machine whose other cores
     // are busy, threads that wait for a core made a run several times slower than one thread
     core::ThreadChooser threads;
+    // the editor's rule as well: a total energy grown a thousandfold its scale with no work done
+    // on the scene is a blow-up, even while every value is finite and inside the world (checked
+    // every few steps: the sum costs a fraction of a step)
+    constexpr std::uint64_t kEnergyCheckSteps = 8;
+    ui::RunDiagnostics energyWatch;
+    energyWatch.restarted(*model, state);
     QElapsedTimer timer;
     bool blewUp = false;
     while (state.step < *steps && !blewUp) {
@@ -388,6 +395,12 @@ void runScene(const app::SimOptions &options, app::RunSummary &summary)
                     break;
                 }
                 threads.stepped(std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count());
+                if (state.step % kEnergyCheckSteps == 0)
+                    if (std::optional<core::Blowup> runaway = energyWatch.watchEnergy(*model, state, false)) {
+                        work.blowup = std::move(runaway);
+                        blewUp = true;
+                        break;
+                    }
             }
         } catch (const std::bad_alloc &) {
             work = core::Workspace{};  // the step's scratch let go before anything else is made

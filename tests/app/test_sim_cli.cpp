@@ -13,6 +13,7 @@
 #include <QDir>
 #include <QFile>
 #include <QRegularExpression>
+#include <cmath>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
@@ -148,6 +149,7 @@ private slots:
     void summaryThatCannotBeWrittenFails();
     void linkLoopIsNamed();
     void energyGrowthIsAWarning();
+    void energyThatRunsAwayIsABlowup();
     void autoSubstepsSaysWhatRan();
     void runLeavingTheFileRangeBlowsUp();
     void outputsMustNotNameTheInputOrEachOther();
@@ -552,6 +554,35 @@ void TestSimCli::energyGrowthIsAWarning()
     QVERIFY(io::saveScene(file, scene).ok());
     const Run steady = sim({file, u"--steps"_s, u"200"_s});
     QVERIFY2(steady.out.contains("warnings   none"), steady.out.constData());
+}
+
+void TestSimCli::energyThatRunsAwayIsABlowup()
+{
+    // just over symplectic Euler's limit (ω h = 2.02), undamped: the swing grows a little each
+    // step, every value finite for hundreds of steps; past a thousandfold the start's energy with
+    // no work done, the run stops as blown up, as the editor's does, and writes no --output
+    core::OscillatorOptions options;
+    options.stiffness = std::pow(2.02 / 0.01, 2.0);
+    options.damping = 0.0;
+    core::SceneDesc scene = core::makeOscillator(options);
+    scene.settings.integrator = core::Integrator::SymplecticEuler;
+    scene.settings.timeStep = 0.01;
+    scene.settings.substeps = 1;
+    const QString file = path(u"runaway.json"_s);
+    QVERIFY(io::saveScene(file, scene).ok());
+    const QString out = path(u"runaway-out.json"_s);
+    QFile::remove(out);
+    const Run run = sim({file, u"--steps"_s, u"2000"_s, u"--output"_s, out});
+    QCOMPARE(run.exitCode, 3);
+    QVERIFY2(run.err.contains("The total energy grew from 5.1e+03 J to "), run.err.constData());
+    QVERIFY2(run.err.contains("the stability limit"), run.err.constData());
+    QVERIFY2(run.out.contains("(stopped: blew up)"), run.out.constData());
+    QVERIFY(!QFileInfo::exists(out));
+    // well before the world's bound: the editor's runner stops the same spring by step 64
+    const QRegularExpression ran(u"ran +(\\d+) of 2000 steps"_s);
+    const QRegularExpressionMatch match = ran.match(QString::fromUtf8(run.out));
+    QVERIFY2(match.hasMatch(), run.out.constData());
+    QVERIFY2(match.captured(1).toInt() <= 200, run.out.constData());
 }
 
 void TestSimCli::autoSubstepsSaysWhatRan()

@@ -291,7 +291,7 @@ void MainWindow::createSpeedActions()
         const int at = int(std::find_if(m_speedActions.begin(), m_speedActions.end(),
                                          [](const QAction *a) { return a->isChecked(); }) -
                            m_speedActions.begin());
-        const int next = std::clamp(at + by, 0, int(m_speedActions.size()) - 1);
+        const int next = std::clamp(at + by, 0, int(playbackSpeeds().size()) - 1);
         setSpeed(m_speedActions[next]->data().toDouble());
     };
     auto *slower = new QAction(tr("Slower"), this);
