@@ -120,6 +120,10 @@ void TestGenerateDialog::addsTheClothAsOneUndoStep()
         return;
     QVERIFY2(dialog->countText().startsWith(QStringLiteral("12 particle(s), 39 spring(s)")),
              qPrintable(dialog->countText()));
+    // and what it costs, timed here: a figure in ms and the speed it allows against real time
+    static const QRegularExpression cost(
+        QStringLiteral("; a step of it alone takes [0-9.e+-]+ ms here, [0-9.e+-]+× (faster|slower) than real time$"));
+    QVERIFY2(cost.match(dialog->countText()).hasMatch(), qPrintable(dialog->countText()));
     QVERIFY(dialog->problemText().isEmpty());
     // Return in a field only remade the preview
     QVERIFY(dialog->isVisible());

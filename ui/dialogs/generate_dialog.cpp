@@ -4,7 +4,13 @@
 #include "ui/panels/slider_scale.h"
 #include "ui/panels/value_spin_box.h"
 
+#include "core/model/model.h"
+#include "core/model/state.h"
+#include "core/model/workspace.h"
+#include "core/step.h"
+
 #include <QCheckBox>
+#include <QElapsedTimer>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -20,6 +26,34 @@
 namespace ui {
 
 namespace {
+
+// pieces up to this many particles and springs together, times their sub-steps, are timed as they
+// are made: a step of that much work takes a few milliseconds, which the dialog can spend on each
+// change; a bigger one would stall the typing
+constexpr std::size_t kTimedWork = 200000;
+
+std::size_t workOf(const core::SceneDesc &piece)
+{
+    return (piece.particles.size() + piece.springs.size()) * std::size_t(std::max(1, piece.settings.substeps));
+}
+
+// what the piece costs to run, by itself: the wall time of its second step here (the first also
+// sizes the step's scratch), or nothing when it is too big to time in the dialog or blows up alone
+std::optional<double> secondsAStep(const core::SceneDesc &piece)
+{
+    if (workOf(piece) > kTimedWork)
+        return std::nullopt;
+    const std::shared_ptr<const core::Model> model = core::compileModel(piece);
+    core::State state = core::makeState(*model, piece);
+    core::Workspace work;
+    if (!core::step(*model, state, work))
+        return std::nullopt;
+    QElapsedTimer clock;
+    clock.start();
+    if (!core::step(*model, state, work))
+        return std::nullopt;
+    return double(clock.nsecsElapsed()) * 1e-9;
+}
 
 // how the arrows step each kind of value (any value can be typed; the check says what is wrong)
 constexpr SliderScale kLengthScale{1e-3, 100.0, core::Scale::Log, false, 1000};      // m
@@ -341,6 +375,16 @@ void GenerateDialog::regenerate()
                         tr("%n spring(s)", nullptr, int(m_generated->springs.size()));
         if (m_generated->settings.substeps > 1)
             count += tr("; its springs need at least %1 substeps").arg(m_generated->settings.substeps);
+        // what it costs: a step of it alone, timed on this machine, and the speed that allows
+        if (const std::optional<double> seconds = secondsAStep(*m_generated)) {
+            const double factor = m_generated->settings.timeStep / std::max(*seconds, 1e-9);
+            count += tr("; a step of it alone takes %1 ms here, %2 real time")
+                         .arg(*seconds * 1e3, 0, 'g', 2)
+                         .arg(factor >= 1.0 ? tr("%1× faster than").arg(factor, 0, 'g', 3)
+                                            : tr("%1× slower than").arg(1.0 / factor, 0, 'g', 3));
+        } else if (workOf(*m_generated) > kTimedWork) {
+            count += tr("; too big to time here: run it to see its speed");
+        }
         m_count->setText(count);
         m_problem->clear();
     }
