@@ -261,8 +261,8 @@ void MainWindow::fitToolBars()
     if (!m_itemsToolBar || toolBarArea(m_itemsToolBar) != Qt::TopToolBarArea || m_itemsToolBar->isFloating())
         return;
     int wanted = 0;
-    for (const QToolBar *bar : findChildren<QToolBar *>(Qt::FindDirectChildrenOnly))
-        if (!bar->isHidden() && !bar->isFloating() && toolBarArea(const_cast<QToolBar *>(bar)) == Qt::TopToolBarArea)
+    for (QToolBar *bar : findChildren<QToolBar *>(Qt::FindDirectChildrenOnly))
+        if (!bar->isHidden() && !bar->isFloating() && toolBarArea(bar) == Qt::TopToolBarArea)
             wanted += bar->sizeHint().width();
     const bool fits = wanted <= width();
     if (fits && toolBarBreak(m_itemsToolBar))
