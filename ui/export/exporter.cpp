@@ -249,7 +249,7 @@ bool Exporter::startSequenceExport(const SequenceExport &settings, QString *erro
             return QString();
         },
         this);
-    return begin(run, tr("Writing the frames..."), [this, settings](int frames, QString *) {
+    return begin(run, tr("Writing the frames..."), [settings](int frames, QString *) {
         const QString written = tr("%n frame(s) of %1 × %2 px at %3 frames/s in %4", nullptr, frames)
                                     .arg(settings.size.width())
                                     .arg(settings.size.height())
