@@ -68,10 +68,12 @@ struct ParticlePath {
     {
         if (shape != PathShape::Hermite)
             return x0 + t * drift();
+        // (as x0 plus the way from it: the weights of x0 and x1 sum to one only up to rounding, so
+        // a row at rest across, all at one height, would drift apart across by an ulp an impact
+        // and, elastic impacts multiplying it, leave its line within a few steps)
         const double s = t / h;
         const double s2 = s * s, s3 = s2 * s;
-        return (2 * s3 - 3 * s2 + 1) * x0 + ((s3 - 2 * s2 + s) * h) * v0 + (3 * s2 - 2 * s3) * x1 +
-               ((s3 - s2) * h) * v1;
+        return x0 + ((s3 - 2 * s2 + s) * h) * v0 + (3 * s2 - 2 * s3) * (x1 - x0) + ((s3 - s2) * h) * v1;
     }
     Eigen::Vector3d velocity(double t) const
     {

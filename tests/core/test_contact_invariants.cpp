@@ -146,13 +146,20 @@ RandomScene makeScene(std::uint32_t seed, const Draw &draw)
     }
 
     // no two balls overlapping at the start (a cloud may have drawn them so, or the striker been
-    // drawn back into one): the later moved up
+    // drawn back into one): the later moved up above the earlier, and looked at again against all
+    // the earlier ones, since the move may have put it into one it had cleared (it only rises, so
+    // this ends)
     for (std::size_t i = 0; i < scene.particles.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j) {
-            core::ParticleDesc &p = scene.particles[i];
-            const core::ParticleDesc &q = scene.particles[j];
-            if ((p.position - q.position).norm() < 1.01 * (p.radius + q.radius))
-                p.position.y() = std::max(p.position.y(), q.position.y() + 1.01 * (p.radius + q.radius));
+        for (bool moved = true; moved;) {
+            moved = false;
+            for (std::size_t j = 0; j < i; ++j) {
+                core::ParticleDesc &p = scene.particles[i];
+                const core::ParticleDesc &q = scene.particles[j];
+                if ((p.position - q.position).norm() < 1.01 * (p.radius + q.radius)) {
+                    p.position.y() = std::max(p.position.y(), q.position.y() + 1.01 * (p.radius + q.radius));
+                    moved = true;
+                }
+            }
         }
 
     // the colliders: a floor (always under gravity), walls beyond the balls, a table clear of them
@@ -387,7 +394,8 @@ class TestContactInvariants : public QObject {
 private slots:
     void impactsKeepTheInvariants();
     void underGravityKeepTheEnergy();
-    void underGravityKeepTheInvariants();
+    void nothingPassesThroughAnything();
+    void handoutPassesKeepTheInvariants();
 };
 
 void TestContactInvariants::impactsKeepTheInvariants()
@@ -411,14 +419,25 @@ void TestContactInvariants::underGravityKeepTheEnergy()
                                             failures.mid(0, 10).join(u'\n')));
 }
 
-void TestContactInvariants::underGravityKeepTheInvariants()
+void TestContactInvariants::nothingPassesThroughAnything()
 {
-    // every invariant, nothing through anything included, and the handout's passes: not yet held
-    // (one of the iterative solver's 5000 scenes, seed 4031, has two balls of an elastic row struck
-    // at 155 m/s change places; the handout's pass gains energy by design, docs/physics.md). Run
-    // on demand (tools/long_tests.sh), never in CI
-    if (!qEnvironmentVariableIsSet("SPRINGLAB_INVARIANT_GRAVITY"))
-        QSKIP("known to fail: set SPRINGLAB_INVARIANT_GRAVITY=1 to run it");
+    // every invariant, that nothing ends a step inside another ball and that a struck row keeps
+    // its order included, with gravity or without (seed 4031, an elastic row struck at 155 m/s, had
+    // a ball overtake another unseen until the impacts' search advanced along the pair's relative
+    // path from where either path was last changed). The first 1000 seeds all hold; of 10^5, 9 do
+    // not (tools/long_tests.sh; what they are: docs/physics.md, "What holds")
+    const QStringList failures = runScenes(Draw{true, false, true}, 1000);
+    QVERIFY2(failures.isEmpty(), qPrintable(QStringLiteral("%1 scenes broke an invariant:\n").arg(failures.size()) +
+                                            failures.mid(0, 10).join(u'\n')));
+}
+
+void TestContactInvariants::handoutPassesKeepTheInvariants()
+{
+    // the same with the handout's passes among the solvers drawn: not held, by design (they move a
+    // ball out of what it sank into and reflect its velocity there, which gains energy and lets a
+    // fast ball through; docs/physics.md). Run on demand (tools/long_tests.sh), never in CI
+    if (!qEnvironmentVariableIsSet("SPRINGLAB_INVARIANT_HANDOUT"))
+        QSKIP("the handout's passes break these by design: set SPRINGLAB_INVARIANT_HANDOUT=1 to run it");
     const QStringList failures = runScenes(Draw{true, true, true}, 1000);
     QVERIFY2(failures.isEmpty(), qPrintable(QStringLiteral("%1 scenes broke an invariant:\n").arg(failures.size()) +
                                             failures.mid(0, 10).join(u'\n')));
