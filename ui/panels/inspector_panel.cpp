@@ -19,6 +19,7 @@
 #include <QStringList>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <initializer_list>
 #include <optional>
 
 namespace ui {
@@ -198,6 +199,9 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
         value->setObjectName(QStringLiteral("inspector-current-%1.%2").arg(key).arg(QLatin1Char(axis)));
         value->setToolTip(currentTip);
         value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        // as wide as the initial fields above, whatever the value: a width that followed the text
+        // would widen the dock, and narrow the view, as a run or a drag changes it
+        value->setMinimumWidth(value->fontMetrics().horizontalAdvance(QStringLiteral("-12.345678")) + 12);
         m_currentFields[c] = value;
         if (c % 3 == 0) {
             vectorRow = new QHBoxLayout;
@@ -281,6 +285,16 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
         m_edits->endSession();
         refresh();
     });
+    // as wide as its widest group from the start: the groups show as the selection changes, and a
+    // panel that widened with them narrowed the view under the cursor (by 38 pixels at the first
+    // particle selected, in the middle of a drag)
+    // (polished first: the style sets the frames' and fields' sizes)
+    int widest = 0;
+    for (QWidget *group : std::initializer_list<QWidget *>{m_particlesGroup, m_distanceGroup, m_springsGroup, m_planes}) {
+        group->ensurePolished();
+        widest = std::max(widest, group->minimumSizeHint().width());
+    }
+    setMinimumWidth(widest + layout->contentsMargins().left() + layout->contentsMargins().right());
     refresh();
 }
 
