@@ -12,7 +12,7 @@
 #    the editor's included, so that the clone a CPU without AVX-512 runs gives the same bits (a
 #    machine with AVX-512 picks that clone; tools/dev.sh test runs only the core's tests there).
 # 4. The scene loader fuzzed for an hour.
-# 5. The contact invariants on 10⁵ random scenes without gravity and 10⁴ with it (energy, momentum,
+# 5. The contact invariants on 10⁵ random scenes of each kind (energy, momentum, overlaps,
 #    colliders), and on 10⁴ with every invariant and the handout's passes (known to fail: a few
 #    swap in an elastic row struck at 155 m/s, and the handout's pass gains energy;
 #    see tests/core/test_contact_invariants.cpp); the last is reported, not required.

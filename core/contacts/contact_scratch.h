@@ -88,6 +88,14 @@ struct PathSegment {
 struct ContactScratch {
     Eigen::Matrix3Xd startPosition;  // m, at the sub-step's start
     Eigen::Matrix3Xd startVelocity;  // m/s
+    // m, where each particle ended the impacts (where a collider is two-sided; else empty): the
+    // side of a table it keeps in the resting solve. Not the side it began the sub-step on, as a
+    // ball may pass round the table's edge; the impacts let nothing through the top
+    Eigen::Matrix3Xd sidePosition;
+    Eigen::Vector3d sidePointOf(int i) const
+    {
+        return sidePosition.cols() > i ? sidePosition.col(i) : startPosition.col(i);
+    }
     Eigen::Matrix3Xd sweptCentre;    // m, the middle of each particle's move through the sub-step
     Eigen::VectorXd sweptRadius;     // m, a sphere about it holding the particle all along its path
     std::vector<int> fast;               // the particles that move too far for the grid this sub-step

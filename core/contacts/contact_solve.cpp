@@ -119,7 +119,7 @@ void gather(const Model &model, State &state, Workspace &work, double h)
                 const int i = model.freeParticles[std::size_t(f)];
                 for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k) {
                     const Collider &collider = model.colliders[std::size_t(k)];
-                    const double side = sideOf(collider, scratch.startPosition.col(i));
+                    const double side = sideOf(collider, scratch.sidePointOf(i));
                     const Separation s = separation(collider, state.position.col(i), side);
                     const double gap = s.distance - model.radius[i];
                     if (gap < std::min(reach, model.radius[i]))
@@ -648,7 +648,7 @@ void keepOutOfColliders(const Model &model, State &state, ContactScratch &scratc
     const auto keepOut = [&](int p) {
         for (const Collider &collider : model.colliders) {
             const Separation s =
-                separation(collider, state.position.col(p), sideOf(collider, scratch.startPosition.col(p)));
+                separation(collider, state.position.col(p), sideOf(collider, scratch.sidePointOf(p)));
             if (s.distance < model.radius[p])
                 state.position.col(p) += (model.radius[p] - s.distance) * s.normal;
         }

@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <vector>
@@ -149,6 +150,7 @@ RandomScene makeScene(std::uint32_t seed, const Draw &draw)
     // drawn back into one): the later moved up above the earlier, and looked at again against all
     // the earlier ones, since the move may have put it into one it had cleared (it only rises, so
     // this ends)
+    bool lifted = false;
     for (std::size_t i = 0; i < scene.particles.size(); ++i)
         for (bool moved = true; moved;) {
             moved = false;
@@ -157,10 +159,15 @@ RandomScene makeScene(std::uint32_t seed, const Draw &draw)
                 const core::ParticleDesc &q = scene.particles[j];
                 if ((p.position - q.position).norm() < 1.01 * (p.radius + q.radius)) {
                     p.position.y() = std::max(p.position.y(), q.position.y() + 1.01 * (p.radius + q.radius));
-                    moved = true;
+                    moved = lifted = true;
                 }
             }
         }
+    // a ball lifted off a row is off its line: the row's balls may pass under it untouched (seed
+    // 5953: the last ball of a row was lifted clear of its neighbour, which then passed under it
+    // 2.5 mm clear), so the order along x is no longer one they must keep
+    if (lifted)
+        made.alongX = false;
 
     // the colliders: a floor (always under gravity), walls beyond the balls, a table clear of them
     s.planeCollisions = gravity || random() % 2 == 0;
@@ -236,22 +243,45 @@ bool overOutline(const core::Collider &rectangle, const Eigen::Vector3d &point)
            std::abs(rectangle.axisV.dot(local)) <= rectangle.halfHeight;
 }
 
-// the side of a collider a ball must still be on after a step from `before` to `after`. A plane's
-// side never changes; a rectangle's (a table top) may: a ball beside it can pass round its edge to
-// the other side without touching it, and only a step whose path crosses the plane within the
-// outline (the straight line between the step's ends standing for the path, which bends from it
-// by g h² / 8 a step, far less than a radius) has gone through the sheet
-double sideToKeep(const core::Collider &collider, const Eigen::Vector3d &before, const Eigen::Vector3d &after)
+// where the straight line from `from` along `direction` (for a length of at most 1 of it) meets
+// the collider's plane, if it does
+std::optional<Eigen::Vector3d> meetsPlane(const core::Collider &collider, const Eigen::Vector3d &from,
+                                          const Eigen::Vector3d &direction)
+{
+    const double height = collider.normal.dot(from) - collider.offset;
+    const double rate = collider.normal.dot(direction);
+    if (rate == 0.0)
+        return std::nullopt;
+    const double at = -height / rate;
+    if (!(at >= 0.0 && at <= 1.0))
+        return std::nullopt;
+    return from + at * direction;
+}
+
+// the side of a collider a ball must still be on after a step of length h from `before` (moving at
+// vBefore) to `after` (at vAfter). A plane's side never changes; a rectangle's (a table top) may: a
+// ball beside it can pass round its edge to the other side without touching it. The check sees
+// the step's ends only, so the path is stood for by three straight lines, each of which bends from
+// it by at most g h² / 2, far less than a radius: the step's first leg (from `before` along
+// vBefore), its last (back from `after` along -vAfter), and the chord between its ends. A ball that
+// changed sides went round the edge where the first or the last leg meets the plane outside the
+// outline (the last after a bounce off a wall: seeds 19781, 23626, 61422), or, where neither meets
+// it within the step, where the chord does; else it went through the sheet
+double sideToKeep(const core::Collider &collider, const Eigen::Vector3d &before, const Eigen::Vector3d &after,
+                  const Eigen::Vector3d &vBefore, const Eigen::Vector3d &vAfter, double h)
 {
     const double side = core::sideOf(collider, before);
-    if (!collider.bounded || overOutline(collider, before))
+    if (!collider.bounded || core::sideOf(collider, after) == side)
         return side;
-    const double from = collider.normal.dot(before) - collider.offset;
-    const double to = collider.normal.dot(after) - collider.offset;
-    if ((from < 0.0) == (to < 0.0))
-        return side;
-    const Eigen::Vector3d crossing = before + (from / (from - to)) * (after - before);
-    return overOutline(collider, crossing) ? side : core::sideOf(collider, after);
+    const std::optional<Eigen::Vector3d> first = meetsPlane(collider, before, h * vBefore);
+    const std::optional<Eigen::Vector3d> last = meetsPlane(collider, after, -h * vAfter);
+    bool round = false;
+    if (first || last) {
+        round = (first && !overOutline(collider, *first)) || (last && !overOutline(collider, *last));
+    } else if (const std::optional<Eigen::Vector3d> chord = meetsPlane(collider, before, after - before)) {
+        round = !overOutline(collider, *chord);
+    }
+    return round ? core::sideOf(collider, after) : side;
 }
 
 // a broken invariant: which (for the minimiser: a smaller scene must break the same one), at which
@@ -293,6 +323,7 @@ Failure check(std::uint32_t seed, const RandomScene &made, const Draw &draw)
 
     for (int step = 0; step < made.steps; ++step) {
         const Eigen::Matrix3Xd before = sim.state.position;
+        const Eigen::Matrix3Xd velocityBefore = sim.state.velocity;
         if (!sim.step())
             return describe("blew up", QStringLiteral("blew up"), step);
         const core::State &state = sim.state;
@@ -331,7 +362,8 @@ Failure check(std::uint32_t seed, const RandomScene &made, const Draw &draw)
         // nothing inside a collider
         for (int i : model.freeParticles)
             for (const core::Collider &collider : model.colliders) {
-                const double side = sideToKeep(collider, before.col(i), state.position.col(i));
+                const double side = sideToKeep(collider, before.col(i), state.position.col(i), velocityBefore.col(i),
+                                               state.velocity.col(i), model.timeStep);
                 const core::Separation s = core::separation(collider, state.position.col(i), side);
                 if (s.distance < model.radius[i] * (1.0 - kColliderSlack) &&
                     core::separation(collider, before.col(i), side).distance >= model.radius[i] * (1.0 - kColliderSlack))
@@ -392,11 +424,38 @@ QStringList runScenes(const Draw &draw, std::uint32_t scenes)
 class TestContactInvariants : public QObject {
     Q_OBJECT
 private slots:
+    void theCheckTellsThroughFromRound();
     void impactsKeepTheInvariants();
     void underGravityKeepTheEnergy();
     void nothingPassesThroughAnything();
     void handoutPassesKeepTheInvariants();
 };
+
+void TestContactInvariants::theCheckTellsThroughFromRound()
+{
+    // the check of a table top itself, on steps made by hand (a 0.8 m table at y = 0.6, h = 0.01 s):
+    // a ball through the middle of the top, straight, or through it then off a wall, must keep the
+    // side it began on; one that passed round the edge, straight or off a wall, the side it came to
+    core::PlaneDesc desc{Eigen::Vector3d(0.0, 1.0, 0.0), 0.6};
+    desc.size = Eigen::Vector2d(0.8, 0.8);
+    desc.centre = Eigen::Vector3d(0.0, 0.6, 0.0);
+    desc.axis = Eigen::Vector3d(1.0, 0.0, 0.0);
+    core::SceneDesc scene;
+    scene.planes = {desc};
+    scene.particles = {test::particle(Eigen::Vector3d::Zero())};
+    const test::Sim sim = test::compile(scene);
+    const core::Collider &table = sim.model->colliders.front();
+    const double h = 0.01;
+    const Eigen::Vector3d up(0.0, 40.0, 0.0);
+    // straight up through the middle: below stays below
+    QCOMPARE(sideToKeep(table, {0.0, 0.4, 0.0}, {0.0, 0.8, 0.0}, up, up, h), -1.0);
+    // up through the top near its edge, then back off a wall at x = 0.45 (its last leg comes from the wall)
+    QCOMPARE(sideToKeep(table, {0.3, 0.45, 0.0}, {0.3, 0.75, 0.0}, {15.0, 30.0, 0.0}, {-10.0, 30.0, 0.0}, h), -1.0);
+    // up beside the edge and over the top in a straight line: above
+    QCOMPARE(sideToKeep(table, {0.8, 0.3, 0.0}, {0.4, 0.7, 0.0}, {-40.0, 40.0, 0.0}, {-40.0, 40.0, 0.0}, h), 1.0);
+    // up beside the edge, off a wall at x = 0.55 and back over the top (seed 61422's kind)
+    QCOMPARE(sideToKeep(table, {0.26, 0.03, 0.0}, {0.37, 0.72, 0.0}, {66.0, 97.0, 0.0}, {-36.5, 67.0, 0.0}, h), 1.0);
+}
 
 void TestContactInvariants::impactsKeepTheInvariants()
 {
@@ -424,7 +483,7 @@ void TestContactInvariants::nothingPassesThroughAnything()
     // every invariant, that nothing ends a step inside another ball and that a struck row keeps
     // its order included, with gravity or without (seed 4031, an elastic row struck at 155 m/s, had
     // a ball overtake another unseen until the impacts' search advanced along the pair's relative
-    // path from where either path was last changed). The first 1000 seeds all hold; of 10^5, 9 do
+    // path from where either path was last changed). The first 1000 seeds all hold; of 10^5, 3 do
     // not (tools/long_tests.sh; what they are: docs/physics.md, "What holds")
     const QStringList failures = runScenes(Draw{true, false, true}, 1000);
     QVERIFY2(failures.isEmpty(), qPrintable(QStringLiteral("%1 scenes broke an invariant:\n").arg(failures.size()) +
