@@ -150,6 +150,9 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
     m_particlesGroup->setObjectName(QStringLiteral("inspector-particles"));
     auto *particleForm = new QFormLayout(m_particlesGroup);
     particleForm->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
+    // a row's label goes above its fields where the dock is too narrow for both side by side: the
+    // three fields of a vector and its label need more than a 900-pixel window leaves the dock
+    particleForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
     const QString initialTip = tr("The scene's initial conditions, as saved in its file: the run starts from them "
                                   "(Reset returns to them); the running simulation's state is the Current row");
     QHBoxLayout *vectorRow = nullptr;
