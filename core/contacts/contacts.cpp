@@ -7,7 +7,6 @@
 
 #include "core/passes.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace core {
@@ -65,11 +64,10 @@ void solveContacts(const Model &model, State &state, Workspace &work)
     resolveImpacts(model, state, work, h);
     if (work.interrupted)
         return;
-    ContactScratch &scratch = work.contactSolver;
-    if (std::any_of(model.colliders.begin(), model.colliders.end(), [](const Collider &c) { return c.twoSided; }))
-        scratch.sidePosition = state.position;
+    if (model.plan.twoSidedColliders)
+        work.contactSolver.sidePosition = state.position;
     else
-        scratch.sidePosition.resize(3, 0);
+        work.contactSolver.sidePosition.resize(3, 0);
     solveRestingContacts(model, state, work, h);
 }
 

@@ -7,6 +7,7 @@
 #include "core/integrators/vertex_colours.h"
 #include "core/integrators/xpbd_layout.h"
 
+#include <algorithm>
 #include <cassert>
 
 namespace core {
@@ -129,6 +130,9 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *b
     plan.planeCollisions = anythingFree && s.planeCollisions && planes > 0;
     plan.particleCollisions = anythingFree && s.particleCollisions && n >= 2;
     plan.contactSolver = s.contactSolver == ContactSolver::Iterative && (plan.planeCollisions || plan.particleCollisions);
+    plan.twoSidedColliders = plan.contactSolver && plan.planeCollisions &&
+                             std::any_of(model->colliders.begin(), model->colliders.end(),
+                                         [](const Collider &c) { return c.twoSided; });
     // the particles turn where a contact can turn them, or one is given a spin
     const auto turns = [](double friction, double staticFriction, double rolling, double spinning) {
         return friction > 0.0 || staticFriction > 0.0 || rolling > 0.0 || spinning > 0.0;

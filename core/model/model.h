@@ -43,6 +43,9 @@ struct StepPlan {
     // the contacts go through the iterative solver (contacts.cpp) rather than the handout's passes:
     // its choice, and a contact pass planned
     bool contactSolver = false;
+    // the iterative solver and a two-sided plane or rectangle: the resting solve keeps each
+    // particle on the side of it where the impacts left it (ContactScratch::sidePosition)
+    bool twoSidedColliders = false;
     // the particles turn (State::angularVelocity, orientation): a contact can have friction,
     // rolling resistance or spinning friction, or a particle is given a spin. Without it a contact
     // acts at the centre and nothing turns, as in the handout

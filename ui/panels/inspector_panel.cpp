@@ -26,6 +26,13 @@ namespace ui {
 
 namespace {
 
+// the width of one axis of a vector, its field or its current value: 8 significant digits with
+// the sign and the point, whatever the value shown
+int vectorFieldWidth(const QWidget *widget)
+{
+    return widget->fontMetrics().horizontalAdvance(QStringLiteral("-12.345678")) + 12;
+}
+
 // one value of a particle: a scalar member, or one axis of a vector member
 struct ParticleField {
     const char *key;    // object name and undo merge key: "mass", "position.x"
@@ -174,7 +181,7 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
         // enough for a value's 8 significant digits with its sign and point
         box->setButtonSymbols(QAbstractSpinBox::NoButtons);
         box->setSignificantDigits(8);
-        box->setMinimumWidth(box->fontMetrics().horizontalAdvance(QStringLiteral("-12.345678")) + 12);
+        box->setMinimumWidth(vectorFieldWidth(box));
         if (field.axis == 0) {
             vectorRow = new QHBoxLayout;
             const QString name = field.vector == &core::ParticleDesc::position   ? tr("Initial position")
@@ -204,7 +211,7 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
         value->setTextInteractionFlags(Qt::TextSelectableByMouse);
         // as wide as the initial fields above, whatever the value: a width that followed the text
         // would widen the dock, and narrow the view, as a run or a drag changes it
-        value->setMinimumWidth(value->fontMetrics().horizontalAdvance(QStringLiteral("-12.345678")) + 12);
+        value->setMinimumWidth(vectorFieldWidth(value));
         m_currentFields[c] = value;
         if (c % 3 == 0) {
             vectorRow = new QHBoxLayout;
@@ -288,10 +295,10 @@ InspectorPanel::InspectorPanel(SceneDocument *document, EditTools *tools, QWidge
         m_edits->endSession();
         refresh();
     });
-    // as wide as its widest group from the start: the groups show as the selection changes, and a
-    // panel that widened with them narrowed the view under the cursor (by 38 pixels at the first
-    // particle selected, in the middle of a drag)
-    // (polished first: the style sets the frames' and fields' sizes)
+    // as wide as its widest group from the start (each polished first: the style sets its frames'
+    // and fields' sizes): the groups show as the selection changes, and a panel that widened with
+    // them narrowed the view under the cursor (the dock grew 38 pixels at the first particle
+    // selected, in the middle of a drag)
     int widest = 0;
     for (QWidget *group : std::initializer_list<QWidget *>{m_particlesGroup, m_distanceGroup, m_springsGroup, m_planes}) {
         group->ensurePolished();
