@@ -6,6 +6,7 @@
 #include <QThread>
 
 #include <algorithm>
+#include <cstdint>
 #include <ctime>
 
 namespace bench {
@@ -94,6 +95,21 @@ bool writeLines(const QDir &dir, const QString &name, const QStringList &lines, 
     }
     out << "wrote " << file.fileName() << '\n';
     return true;
+}
+
+BusyCore::BusyCore()
+    : m_thread([this] {
+          volatile std::uint64_t spins = 0;
+          while (!m_stop.load(std::memory_order_relaxed))
+              spins = spins + 1;
+      })
+{
+}
+
+BusyCore::~BusyCore()
+{
+    m_stop = true;
+    m_thread.join();
 }
 
 }  // namespace bench

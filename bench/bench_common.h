@@ -10,7 +10,9 @@
 #include <QStringList>
 #include <QTextStream>
 
+#include <atomic>
 #include <optional>
+#include <thread>
 #include <vector>
 
 namespace bench {
@@ -44,5 +46,19 @@ QString loadText();
 std::optional<QDir> outputFolder(const QString &path, QTextStream &out);
 // writes the lines (a CSV's) to dir/name whole or not at all, and says which on out
 bool writeLines(const QDir &dir, const QString &name, const QStringList &lines, QTextStream &out);
+
+// a loop that keeps one core busy while it lives (the other program of a busy desktop: a browser,
+// a build)
+class BusyCore {
+public:
+    BusyCore();
+    ~BusyCore();
+    BusyCore(const BusyCore &) = delete;
+    BusyCore &operator=(const BusyCore &) = delete;
+
+private:
+    std::atomic<bool> m_stop{false};
+    std::thread m_thread;
+};
 
 }  // namespace bench

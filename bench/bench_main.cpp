@@ -18,18 +18,22 @@
 //   springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]
 //                                                    one xpbd sub-step's cost: the core's pass beside
 //                                                    the colour-by-colour pass it replaced
-//   springlab-bench pause --scene FILE [--runs R] [--timeline-mb M]
+//   springlab-bench pause --scene FILE [--runs R] [--timeline-mb M] [--busy] [--window]
 //                                                    how long a Pause takes to stop a big scene's
 //                                                    step and to make the snapshot answering it;
-//                                                    then a Step and a scrub, paused
+//                                                    then a Step and a scrub, paused; --window: in
+//                                                    the editor's window, from the key to the
+//                                                    picture (under xvfb-run without a display);
+//                                                    --busy: with a loop keeping a core busy
 //   springlab-bench mesh-import [--out DIR] [--runs R] [--frames N] [--quick]
 //                                                    reading, making and compiling a model of
 //                                                    100 000 triangles as each kind of body, and
 //                                                    a streamed PC2 export's peak memory
 //   springlab-bench write-references DIR             the reference problems as scene files
 //
-// The plots are painted into images, which needs a QGuiApplication for the fonts but no display:
-// the program picks Qt's offscreen platform unless QT_QPA_PLATFORM says otherwise.
+// The plots are painted into images, which needs an application for the fonts but no display:
+// the program picks Qt's offscreen platform unless QT_QPA_PLATFORM says otherwise, or the mode
+// opens the editor's window (pause --window), which needs a display.
 
 #include "accuracy.h"
 #include "cloth_contacts.h"
@@ -37,6 +41,7 @@
 #include "rolling.h"
 #include "contacts.h"
 #include "pause_latency.h"
+#include "pause_on_screen.h"
 #include "reference_problems.h"
 #include "stability.h"
 #include "stiff.h"
@@ -44,13 +49,17 @@
 #include "xpbd_substep.h"
 
 #include "core/io/scene_file.h"
+#include "ui/viewport/viewport.h"
 
+#include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
-#include <QGuiApplication>
+#include <QSurfaceFormat>
 #include <QTextStream>
 
+#include <algorithm>
 #include <optional>
+#include <string_view>
 
 namespace {
 
@@ -67,7 +76,7 @@ const char *const kUsage =
     "       springlab-bench rolling [--out DIR]\n"
     "       springlab-bench stiff [--out DIR] [--quick] [--size N]... [--stiffness K]...\n"
     "       springlab-bench xpbd-substep [--size N] [--stiffness K] [--substeps S] [--runs R] [--drape SECONDS]\n"
-    "       springlab-bench pause --scene FILE [--runs R] [--timeline-mb M]\n"
+    "       springlab-bench pause --scene FILE [--runs R] [--timeline-mb M] [--busy] [--window]\n"
     "       springlab-bench mesh-import [--out DIR] [--runs R] [--frames N] [--quick]\n"
     "       springlab-bench write-references DIR\n";
 
@@ -314,7 +323,8 @@ int pause(const QStringList &arguments, QTextStream &out, QTextStream &err)
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("How long a Pause takes on a scene, without the window: the step cut short and put back, "
-                       "and the snapshot of the state it stopped at."));
+                       "and the snapshot of the state it stopped at; with --window, in the editor's window from "
+                       "the key to the picture of Pause, Step and Step Back."));
     parser.addHelpOption();
     const bench::PauseLatencyOptions defaults;
     const QCommandLineOption scene(QStringLiteral("scene"), QStringLiteral("The scene file to play."),
@@ -324,7 +334,11 @@ int pause(const QStringList &arguments, QTextStream &out, QTextStream &err)
     const QCommandLineOption timeline(QStringLiteral("timeline-mb"),
                                       QStringLiteral("The recording's budget, MB (the editor's default: 512)."),
                                       QStringLiteral("M"), QString::number(defaults.timelineMegabytes));
-    parser.addOptions({scene, runs, timeline});
+    const QCommandLineOption busy(QStringLiteral("busy"), QStringLiteral("Keep one core busy all along."));
+    const QCommandLineOption window(QStringLiteral("window"),
+                                    QStringLiteral("In the editor's window, from the key to the picture (needs a "
+                                                   "display: run under xvfb-run)."));
+    parser.addOptions({scene, runs, timeline, busy, window});
     if (const std::optional<int> done = parseMode(parser, arguments, out, err, QStringLiteral("pause")))
         return *done;
     bench::PauseLatencyOptions options;
@@ -338,7 +352,9 @@ int pause(const QStringList &arguments, QTextStream &out, QTextStream &err)
         return badArguments(err, QStringLiteral("pause: --runs must be a whole number of at least 1"));
     if (!timelineOk || options.timelineMegabytes < 0 || options.timelineMegabytes > (1 << 20))
         return badArguments(err, QStringLiteral("pause: --timeline-mb must be a whole number from 0 to 1048576"));
-    return bench::runPauseLatency(options, out, err);
+    options.busy = parser.isSet(busy);
+    options.window = parser.isSet(window);
+    return options.window ? bench::runPauseOnScreen(options, out, err) : bench::runPauseLatency(options, out, err);
 }
 
 // every reference problem's scene, saved as DIR/<name>.json
@@ -365,15 +381,22 @@ int writeReferences(const QStringList &arguments, QTextStream &out, QTextStream 
 
 int main(int argc, char *argv[])
 {
-    // painting text needs a platform, not a display
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+    // painting text needs a platform, not a display; the editor's window needs both, and OpenGL
+    // set up as the editor's main() sets it, before the application exists
+    const bool window = argc > 1 && std::string_view(argv[1]) == "pause" &&
+                        std::any_of(argv + 2, argv + argc, [](const char *a) { return std::string_view(a) == "--window"; });
+    if (window) {
+        QSurfaceFormat::setDefaultFormat(ui::Viewport::requestedFormat());
+        QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    } else if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
         qputenv("QT_QPA_PLATFORM", "offscreen");
-    QGuiApplication app(argc, argv);
+    }
+    QApplication app(argc, argv);
     QTextStream out(stdout);
     QTextStream err(stderr);
 
     // the first argument names the benchmark; the rest are its own
-    QStringList arguments = QGuiApplication::arguments();
+    QStringList arguments = QApplication::arguments();
     if (arguments.size() < 2)
         return badArguments(err, QStringLiteral("which benchmark?"));
     const QString name = arguments[1];

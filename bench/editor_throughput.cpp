@@ -100,28 +100,6 @@ std::optional<QString> run(const QString &program, const QStringList &arguments,
     return QString::fromLocal8Bit(process.readAllStandardOutput());
 }
 
-// a loop that keeps one core busy while it lives (the other program of a busy desktop)
-class BusyCore {
-public:
-    BusyCore()
-        : m_thread([this] {
-              volatile std::uint64_t spins = 0;
-              while (!m_stop.load(std::memory_order_relaxed))
-                  spins = spins + 1;
-          })
-    {
-    }
-    ~BusyCore()
-    {
-        m_stop = true;
-        m_thread.join();
-    }
-
-private:
-    std::atomic<bool> m_stop{false};
-    std::thread m_thread;
-};
-
 // --busy: the editor and springlab-sim with the threads they choose beside the same with one
 // thread and with every core (OMP_NUM_THREADS), a loop keeping one core busy all along; runs
 // alternate
@@ -130,7 +108,7 @@ int compareWithOneThread(const QString &editorPath, const QString &simPath, cons
 {
     QTextStream out(stdout);
     QTextStream err(stderr);
-    const BusyCore busy;
+    const bench::BusyCore busy;
     const int every = std::max(2, QThread::idealThreadCount());
     out << "with a loop keeping one core busy all along; steps/s with the threads chosen, with one, with "
         << every << "\n\n"

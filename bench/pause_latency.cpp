@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <thread>
 
 namespace bench {
@@ -44,7 +45,11 @@ int runPauseLatency(const PauseLatencyOptions &options, QTextStream &out, QTextS
     runner.apply(ui::Play{});
     const double h = runner.model()->timeStep;
     out << "pause latency: " << options.scene << ", " << runner.model()->particleCount() << " particles, "
-        << runner.model()->springCount() << " springs, " << runner.model()->substeps << " sub-steps a step\n";
+        << runner.model()->springCount() << " springs, " << runner.model()->substeps << " sub-steps a step"
+        << (options.busy ? "; a loop keeps one core busy" : "") << "\n";
+    std::optional<BusyCore> busy;
+    if (options.busy)
+        busy.emplace();
 
     // one whole step first: its length spaces the flags, and it makes the next one interruptible
     QElapsedTimer clock;

@@ -15,6 +15,8 @@ struct PauseLatencyOptions {
     QString scene;  // the scene file to play
     int runs = 7;   // Pauses timed, each at another point of a step
     int timelineMegabytes = 512;  // the recording's budget (the editor's default)
+    bool busy = false;    // a loop keeps one core busy all along (a busy desktop)
+    bool window = false;  // in the editor's window, from the key to the picture (pause_on_screen.h)
 };
 
 int runPauseLatency(const PauseLatencyOptions &options, QTextStream &out, QTextStream &err);

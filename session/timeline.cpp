@@ -11,13 +11,15 @@ std::size_t matrixBytes(const Eigen::Matrix3Xd &m)
     return static_cast<std::size_t>(m.size()) * sizeof(double);
 }
 
+// recycled: a state whose memory the copy may reuse (an aged tail keyframe's)
 TimelineKey makeKey(const std::shared_ptr<const core::Model> &model, const std::shared_ptr<const core::SceneDesc> &scene,
-                    const core::State &state, const HeldForces &held)
+                    const core::State &state, const HeldForces &held, core::State recycled = {})
 {
     TimelineKey key;
     key.model = model;
     key.scene = scene;
     key.held = held;
+    key.state = std::move(recycled);
     key.state = state;
     const core::State &kept = key.state;
     key.bytes = sizeof(TimelineKey) + matrixBytes(kept.position) + matrixBytes(kept.velocity) + matrixBytes(kept.applied) +
@@ -67,6 +69,7 @@ void Timeline::setBudget(std::size_t bytes)
 void Timeline::clear()
 {
     m_keys.clear();
+    m_spare = {};
     m_breakSteps.clear();
     m_used = 0;
     m_lastStep = 0;
@@ -81,12 +84,43 @@ void Timeline::afterStep(const std::shared_ptr<const core::Model> &model,
         return;  // recording is off
     if (!empty() && state.step <= m_lastStep)
         truncateAfter(state.step - 1);  // a step taken again after a roll-back: that future is gone
-    if (empty() || state.step >= m_keys.back().state.step + kKeyInterval) {
-        add(makeKey(model, scene, state, held));
+    const std::optional<std::uint64_t> lasting = lastLastingStep();
+    TimelineKey key = makeKey(model, scene, state, held, std::move(m_spare));
+    key.tail = lasting && state.step < *lasting + kKeyInterval;
+    m_spare = {};
+    add(std::move(key));
+    // the tail keyframes that are too old now (the newest is the one just added)
+    for (std::size_t i = m_keys.size(); i-- > 0;) {
+        if (m_keys[i].state.step + kTailSteps >= state.step)
+            continue;
+        if (m_keys[i].tail)
+            eraseKey(i);
+        else
+            break;  // lasting keyframes before it; any tail ones between went on earlier steps
+    }
+}
+
+std::optional<std::uint64_t> Timeline::lastLastingStep() const
+{
+    for (auto key = m_keys.rbegin(); key != m_keys.rend(); ++key)
+        if (!key->tail)
+            return key->state.step;
+    return std::nullopt;
+}
+
+void Timeline::eraseKey(std::size_t index)
+{
+    if (index == 0) {
+        dropOldest();
         return;
     }
-    m_lastStep = state.step;
-    m_lastTime = state.time;
+    TimelineKey &key = m_keys[index];
+    // a model is counted with the first keyframe of the run of keyframes that use it
+    const bool first = m_keys[index - 1].model != key.model;
+    const bool alone = first && (index + 1 == m_keys.size() || m_keys[index + 1].model != key.model);
+    m_used -= key.bytes + (alone ? modelBytes(key.model) : 0);
+    m_spare = std::move(key.state);
+    m_keys.erase(m_keys.begin() + static_cast<std::ptrdiff_t>(index));
 }
 
 void Timeline::afterEdit(const std::shared_ptr<const core::Model> &model,

@@ -1,6 +1,6 @@
 // The timeline, through the runner that owns it: a scrub to any recorded step gives the very bits
 // the run had there, edits (a slider, the mouse spring, a tilt, the steering) included; stepping
-// back and forth moves inside the recording; a replay cut short by waiting messages shows the
+// back and forth moves inside the recording, and back from the end replays nothing; a replay cut short by waiting messages shows the
 // steps it got to and goes on after them; play or an edit goes on from the step shown and drops
 // the recorded future; a long run stays within the memory budget; breaks are marked.
 
@@ -51,6 +51,7 @@ class TestTimeline : public QObject {
 private slots:
     void scrubGivesTheRecordedBits();
     void stepsBackAndForthInsideTheRecording();
+    void stepsBackFromTheEndReplayNothing();
     void scrubYieldsToMessages();
     void slowScrubShowsEachStep();
     void playGoesOnFromTheStepShown();
@@ -140,12 +141,45 @@ void TestTimeline::stepsBackAndForthInsideTheRecording()
     QCOMPARE(runner.scrubber().timeline().lastStep(), std::uint64_t(41));
 }
 
+void TestTimeline::stepsBackFromTheEndReplayNothing()
+{
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{clothScene(), ui::SceneChange::Replace});
+    Hashes hashes;
+    stepAndRecord(runner, 47, hashes);
+    const ui::Timeline &timeline = runner.scrubber().timeline();
+    constexpr int kTail = ui::Timeline::kTailSteps;
+    // each of the latest kTailSteps steps is a keyframe of its own; before them, one in
+    // kKeyInterval (the tail keyframes that aged went, memory and all)
+    for (std::uint64_t step = 47 - kTail; step <= 47; ++step)
+        QCOMPARE(timeline.keyAtOrBefore(step)->state.step, step);
+    QCOMPARE(timeline.keyAtOrBefore(47 - kTail - 1)->state.step, std::uint64_t(30));
+    QCOMPARE(timeline.keyAtOrBefore(29)->state.step, std::uint64_t(20));
+
+    // so stepping back from the end replays no step: each is shown from its own keyframe, exact,
+    // by a scrubber of that recording allowed to replay no step at all
+    ui::Scrubber scrubber;
+    scrubber.timeline() = timeline;
+    core::Workspace work;
+    for (std::uint64_t step = 46; step >= 47 - kTail; --step) {
+        QVERIFY(scrubber.show(step, work, nullptr, 0));
+        QVERIFY(!scrubber.pendingStep());
+        QCOMPARE(*scrubber.scrubStep(), step);
+        QCOMPARE(core::stateHash(scrubber.shown()->state), hashes[step]);
+    }
+    // further back, the replay from the keyframe before is still needed
+    QVERIFY(scrubber.show(33, work, nullptr, 0));
+    QCOMPARE(scrubber.pendingStep(), std::optional<std::uint64_t>(33));
+    QCOMPARE(*scrubber.scrubStep(), std::uint64_t(30));
+}
+
 void TestTimeline::scrubYieldsToMessages()
 {
     ui::SimulationRunner runner;
     runner.apply(ui::SetSceneEdit{clothScene(), ui::SceneChange::Replace});
     Hashes hashes;
-    stepAndRecord(runner, 25, hashes);
+    // (steps 30 to 40 have keyframes of their own; the replays below are before them)
+    stepAndRecord(runner, 40, hashes);
     std::atomic<bool> waiting{false};
     runner.setInterrupt(&waiting);
 
@@ -205,7 +239,8 @@ void TestTimeline::slowScrubShowsEachStep()
     ui::SimulationRunner runner;
     runner.apply(ui::SetSceneEdit{std::make_shared<const core::SceneDesc>(cloth), ui::SceneChange::Replace});
     Hashes hashes;
-    stepAndRecord(runner, 13, hashes);
+    // (steps 15 to 25 have keyframes of their own: stepsBackFromTheEndReplayNothing)
+    stepAndRecord(runner, 25, hashes);
     QVERIFY(runner.stepsAreSlow());
 
     runner.apply(ui::Scrub{12});

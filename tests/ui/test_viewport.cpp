@@ -695,21 +695,44 @@ void TestViewport::rendersOffscreenAtAnySize()
 
 void TestViewport::offscreenImagesAreSmoothedLikeTheView()
 {
-    // the view is multisampled here (Mesa's llvmpipe gives 4 samples), so outlines are smoothed
+    // OpenGL is drawn on the CPU here (Mesa's llvmpipe), so the view is not multisampled: a
+    // frame costs half as much. An exported image still is: where it differs from the view, the
+    // view has an outline within two pixels (a sphere or a line beside what is behind it), and
+    // nowhere else by more than a faint line's few levels
+    QVERIFY(ui::Viewport::drawnOnTheCpu());
     const QImage onScreen = grab().convertToFormat(QImage::Format_RGB32);
-    QCOMPARE_GT(m_viewport->samples(), 0);
+    QCOMPARE(m_viewport->samples(), 0);
 
-    // an image of the view's own size is the view's picture to the pixel, smoothed outlines
-    // included; an image drawn without samples differs from it all round every sphere, and one
-    // whose coverage was read as alpha has bright rims
     QString error;
     const QImage image = m_viewport->renderImage(onScreen.size(), &error);
     QVERIFY2(!image.isNull(), qPrintable(error));
-    int differing = 0;
+    // an outline: within two pixels of (x, y) the view has a colour far from the one at (x, y)
+    const auto nearOutline = [&](int x, int y) {
+        const QColor centre = onScreen.pixelColor(x, y);
+        for (int dy = -2; dy <= 2; ++dy)
+            for (int dx = -2; dx <= 2; ++dx) {
+                const QColor c = onScreen.pixelColor(std::clamp(x + dx, 0, onScreen.width() - 1),
+                                                     std::clamp(y + dy, 0, onScreen.height() - 1));
+                if (std::max({std::abs(c.red() - centre.red()), std::abs(c.green() - centre.green()),
+                              std::abs(c.blue() - centre.blue())}) > 32)
+                    return true;
+            }
+        return false;
+    };
+    int differing = 0, awayFromOutlines = 0;
     for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x)
-            differing += image.pixel(x, y) != onScreen.pixel(x, y);
-    QCOMPARE(differing, 0);
+        for (int x = 0; x < image.width(); ++x) {
+            if (image.pixel(x, y) == onScreen.pixel(x, y))
+                continue;
+            ++differing;
+            // (faint lines, a few levels from the background, are drawn a little differently)
+            const QColor a = image.pixelColor(x, y), b = onScreen.pixelColor(x, y);
+            const int by = std::max({std::abs(a.red() - b.red()), std::abs(a.green() - b.green()),
+                                     std::abs(a.blue() - b.blue())});
+            awayFromOutlines += by > 16 && !nearOutline(x, y);
+        }
+    QCOMPARE_GT(differing, 0);
+    QCOMPARE(awayFromOutlines, 0);
 }
 
 void TestViewport::refusesImagesLargerThanTheDriverDraws()
@@ -736,8 +759,9 @@ void TestViewport::clothIsDrawnAsASheet()
     m_viewport->camera().setAngles(30.0f, 55.0f);
     QCOMPARE(m_viewport->surfaceTriangles(), 18);
 
-    const QPointF middle = m_viewport->camera().project(0.25f * (positionOf(*snapshot, 5) + positionOf(*snapshot, 6) +
-                                                                 positionOf(*snapshot, 9) + positionOf(*snapshot, 10))).value();
+    // (a corner cell: the middle one has the axes' origin at its centre, drawn over the sheet)
+    const QPointF middle = m_viewport->camera().project(0.25f * (positionOf(*snapshot, 0) + positionOf(*snapshot, 1) +
+                                                                 positionOf(*snapshot, 4) + positionOf(*snapshot, 5))).value();
     QImage image = grab();
     QVERIFY2(isSheet(colourAt(image, *m_viewport, middle)), qPrintable(colourAt(image, *m_viewport, middle).name()));
     QVERIFY2(isSheet(colourAt(image, *m_viewport, projected(5))), qPrintable(colourAt(image, *m_viewport, projected(5)).name()));

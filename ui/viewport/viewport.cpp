@@ -6,9 +6,11 @@
 #include <QKeyEvent>
 #include <QLineF>
 #include <QMouseEvent>
+#include <QOffscreenSurface>
 #include <QOpenGLBuffer>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
+#include <QOpenGLFunctions>
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
 #include <QRegularExpression>
@@ -121,7 +123,10 @@ struct Viewport::Gpu {
 
 Viewport::Viewport(QWidget *parent) : QOpenGLWidget(parent)
 {
-    setFormat(requestedFormat());
+    QSurfaceFormat format = requestedFormat();
+    if (drawnOnTheCpu())
+        format.setSamples(0);
+    setFormat(format);
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
     m_camera.setViewportSize(size());
@@ -361,6 +366,24 @@ int Viewport::springAt(const QPointF &pixel) const
         }
     }
     return nearest;
+}
+
+bool Viewport::drawnOnTheCpu()
+{
+    static const bool software = [] {
+        QOpenGLContext context;
+        context.setFormat(requestedFormat());
+        QOffscreenSurface surface;
+        surface.setFormat(context.format());
+        surface.create();
+        if (!context.create() || !context.makeCurrent(&surface))
+            return false;
+        const auto *name = reinterpret_cast<const char *>(context.functions()->glGetString(GL_RENDERER));
+        const QByteArray renderer = QByteArray(name ? name : "").toLower();
+        context.doneCurrent();
+        return renderer.contains("llvmpipe") || renderer.contains("softpipe") || renderer.contains("swrast");
+    }();
+    return software;
 }
 
 void Viewport::initializeGL()
