@@ -513,6 +513,12 @@ std::shared_ptr<const core::Snapshot> SimulationRunner::snapshot() const
     return core::makeSnapshot(*shownModel(), shownState());
 }
 
+void SimulationRunner::fillSnapshot(core::Snapshot &into) const
+{
+    if (hasScene())
+        core::fillSnapshot(into, *shownModel(), shownState());
+}
+
 std::optional<std::string> SimulationRunner::takeBlowupMessage()
 {
     if (!hasScene())

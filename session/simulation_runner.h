@@ -119,6 +119,8 @@ public:
     std::shared_ptr<const core::SceneDesc> shownScene() const;
     // the state shown, packed for drawing
     std::shared_ptr<const core::Snapshot> snapshot() const;
+    // the same into a snapshot nobody reads any more, its memory reused (core::fillSnapshot)
+    void fillSnapshot(core::Snapshot &into) const;
 
     // the plots' samples of every step the run keeps (off until the editor turns them on)
     StepSampler &samples() { return m_samples; }

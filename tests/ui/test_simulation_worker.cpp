@@ -2,7 +2,8 @@
 // answering a message on a scene whose snapshot is slow to make goes at once with the snapshot
 // before it, marked behind, and the snapshot of the state it stopped at follows in the same tick;
 // where the snapshot is quick, the answer brings it. A Step on a scene whose steps are slow is
-// answered by a frame that owes it before it is taken. Waits are on frames, never fixed sleeps.
+// answered by a frame that owes it before it is taken. A snapshot the window let go is filled
+// again for a later frame; one it holds is never touched. Waits are on frames, never fixed sleeps.
 
 #include "ui/simulation/simulation_worker.h"
 
@@ -11,6 +12,7 @@
 #include <QtTest>
 
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace {
@@ -69,6 +71,7 @@ private slots:
     void pauseOnASlowSnapshotIsAnsweredBeforeItsPicture();
     void pauseOnAQuickSnapshotBringsIt();
     void stepOnASlowSceneIsAnsweredBeforeItIsTaken();
+    void snapshotsLetGoAreFilledAgainOthersKept();
 };
 
 void TestSimulationWorker::pauseOnASlowSnapshotIsAnsweredBeforeItsPicture()
@@ -141,6 +144,36 @@ void TestSimulationWorker::stepOnASlowSceneIsAnsweredBeforeItIsTaken()
     QVERIFY(QTest::qWaitFor([&] { return w.frames.back()->stepsOwed == 0; }, 30000));
     QCOMPARE(w.frames.back()->shownStep, from + 1);
     QCOMPARE(w.frames.back()->snapshot->step, from + 1);
+}
+
+void TestSimulationWorker::snapshotsLetGoAreFilledAgainOthersKept()
+{
+    core::ClothOptions options;
+    options.rows = options.cols = 8;
+    Worker w;
+    QVERIFY(w.send(ui::SetSceneEdit{std::make_shared<core::SceneDesc>(core::makeCloth(options)), ui::SceneChange::Replace}));
+    // a frame held all along, as the view holds the one it draws, and a copy of what it showed
+    const std::optional<std::size_t> heldAt = w.send(ui::StepOnce{});
+    QVERIFY(heldAt);
+    const std::shared_ptr<const ui::SimulationFrame> held = w.frames[*heldAt];
+    const std::uint64_t heldStep = held->snapshot->step;
+    const std::vector<float> heldPositions = held->snapshot->positions;
+
+    // Steps, each frame let go once the next is in: their snapshots' memory goes round a few
+    std::set<const float *> memory;
+    std::uint64_t step = heldStep;
+    for (int i = 0; i < 12; ++i) {
+        QVERIFY(w.send(ui::StepOnce{}));
+        const std::shared_ptr<const ui::SimulationFrame> frame = w.frames.back();
+        QCOMPARE(frame->snapshot->step, ++step);
+        memory.insert(frame->snapshot->positions.data());
+        w.frames = {frame};
+    }
+    QCOMPARE_LE(memory.size(), std::size_t(3));
+    // the held one is as it was
+    QCOMPARE(held->snapshot->step, heldStep);
+    QCOMPARE(held->snapshot->positions, heldPositions);
+    QVERIFY(!memory.count(held->snapshot->positions.data()));
 }
 
 QTEST_GUILESS_MAIN(TestSimulationWorker)
