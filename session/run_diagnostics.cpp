@@ -200,14 +200,15 @@ std::optional<std::string> RunDiagnostics::takeBlowupMessage(const core::Model &
 
 std::shared_ptr<const core::AccuracyPlan> RunDiagnostics::planAccuracy(const std::shared_ptr<const core::Model> &model,
                                                                        const core::State &state,
-                                                                       const core::Profile &profile, double tolerance)
+                                                                       const core::Profile &profile, double tolerance,
+                                                                       const std::atomic<bool> *stop)
 {
     auto plan = std::make_shared<core::AccuracyPlan>();
     if (model) {
         double secondsPerEvaluation = core::profiledSecondsPerEvaluation(profile);
         if (!(secondsPerEvaluation > 0.0))
             secondsPerEvaluation = core::timedSecondsPerEvaluation(*model, state);
-        *plan = core::planAccuracy(*model, state, tolerance, secondsPerEvaluation);
+        *plan = core::planAccuracy(*model, state, tolerance, secondsPerEvaluation, stop);
     }
     return plan;
 }

@@ -100,10 +100,12 @@ public:
     std::optional<core::Blowup> watchEnergy(const core::Model &model, const core::State &state, bool forcesFromOutside);
     static constexpr double kEnergyGrowth = 1000.0;
     // the integrator and substeps for a tolerance (m per sub-step) at state, with the cost of a
-    // force evaluation as measured in the run (profile), else timed now; an empty plan without a model
+    // force evaluation as measured in the run (profile), else timed now; an empty plan without a
+    // model; a raised `stop` ends it, stopped (core::planAccuracy)
     static std::shared_ptr<const core::AccuracyPlan> planAccuracy(const std::shared_ptr<const core::Model> &model,
                                                                   const core::State &state,
-                                                                  const core::Profile &profile, double tolerance);
+                                                                  const core::Profile &profile, double tolerance,
+                                                                  const std::atomic<bool> *stop = nullptr);
 
     // the limit of the model as it is now (nullopt before the first scene)
     const std::optional<core::StabilityLimit> &stability() const { return m_stability; }

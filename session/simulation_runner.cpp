@@ -104,7 +104,8 @@ void SimulationRunner::apply(const Message &message)
                    [](const Sync &) {},
                    [this](const PlanAccuracy &e) {
                        m_replies.push_back(AccuracyPlanReply{
-                           e.request, RunDiagnostics::planAccuracy(m_model, m_state, m_work.profile, e.tolerance)});
+                           e.request, RunDiagnostics::planAccuracy(m_model, m_state, m_work.profile, e.tolerance,
+                                                                   m_planStop)});
                    },
                    [this](const CaptureState &e) { captureState(e); },
                    [this](const StartRecording &) { startRecording(); },

@@ -60,6 +60,9 @@ public:
 
     // the flag that stops a long step for waiting messages (MessageQueue::waiting); null: never
     void setInterrupt(const std::atomic<bool> *flag);
+    // the flag that stops an accuracy plan (which can take minutes, and does not yield to
+    // messages): raised when the editor closes, so that it need not wait for the plan
+    void setPlanStop(const std::atomic<bool> *flag) { m_planStop = flag; }
     // steps asked for by StepOnce and not taken yet: cut short, or slow (with an interrupt flag
     // set, a slow step is owed at once, so that the Step is answered before it is taken)
     std::uint64_t stepsOwed() const { return m_stepsOwed; }
@@ -182,6 +185,7 @@ private:
     StepSampler m_samples;
     core::State m_lastGood;  // the state before the latest steps, restored if they blow up
     const std::atomic<bool> *m_interrupt = nullptr;
+    const std::atomic<bool> *m_planStop = nullptr;
     core::State m_stepStart;      // where the step in progress began, when it is slow (see above)
     std::uint64_t m_stepsOwed = 0;  // StepOnce steps still to take (cut short or slow)
     double m_lastStepSeconds = 0.0;  // computing time of the latest step, s (a cut one: so far)

@@ -748,6 +748,13 @@ void resolveImpacts(const Model &model, State &state, Workspace &work, double h)
     std::uint64_t events = 0;
     for (int round = 0;; ++round) {
         while (!scratch.impacts.empty()) {
+            // a stop asked for (a Pause, the editor closing an accuracy plan) is heard between two
+            // impacts too: a jam's can take seconds. Not a counted stop point (stopAtPoint numbers
+            // the stages), and the caller puts the state back as at any other
+            if (interruptRequested(work)) {
+                work.interrupted = true;
+                break;
+            }
             std::pop_heap(scratch.impacts.begin(), scratch.impacts.end(), later);
             const Impact impact = scratch.impacts.back();
             scratch.impacts.pop_back();

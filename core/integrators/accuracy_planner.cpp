@@ -53,11 +53,15 @@ std::string format(double value)
 // step-doubling measurements of one integrator at several substep counts, each made once
 class Probe {
 public:
-    Probe(const Model &model, Integrator integrator, const State &state, double omega)
-        : m_base(model), m_state(state), m_omega(omega)
+    Probe(const Model &model, Integrator integrator, const State &state, double omega, const std::atomic<bool> *stop)
+        : m_base(model), m_state(state), m_omega(omega), m_stop(stop)
     {
         setIntegrator(m_base, integrator);
+        m_doubling.setInterrupt(stop);
     }
+
+    // whether the plan was asked to stop (a trial it cut short measured nothing)
+    bool stopped() const { return m_stop && m_stop->load(std::memory_order_relaxed); }
 
     // the error measure of one sub-step at this count; nullopt when a trial blew up
     std::optional<double> errorAt(int substeps)
@@ -72,6 +76,8 @@ public:
             if (m_omega > 0.0)
                 measure = std::max(*measure, error->velocity / m_omega);
         }
+        if (stopped())
+            return std::nullopt;  // not a measurement: kept out of the table
         m_errors.emplace(substeps, measure);
         return measure;
     }
@@ -120,12 +126,13 @@ private:
     Model m_base;
     const State &m_state;
     double m_omega;
+    const std::atomic<bool> *m_stop;
     StepDoubling m_doubling;
     std::map<int, std::optional<double>> m_errors;
 };
 
 PlanCandidate planOne(const Model &model, const State &state, Integrator integrator, double tolerance,
-                      double secondsPerEvaluation, const StabilityLimit &limit)
+                      double secondsPerEvaluation, const StabilityLimit &limit, const std::atomic<bool> *stop)
 {
     PlanCandidate row;
     row.integrator = integrator;
@@ -149,12 +156,18 @@ PlanCandidate planOne(const Model &model, const State &state, Integrator integra
         return row;
     }
 
-    Probe probe(model, integrator, state, limit.omegaMax);
+    Probe probe(model, integrator, state, limit.omegaMax, stop);
+    const auto stopped = [&] {
+        row.reason = "planning stopped";
+        return row;
+    };
 
     // measure, solve error = C h^(p+1) for the count, measure there, until the count settles
     int substeps = std::clamp(model.substeps, fewest, cap);
     for (int round = 0; round < kExtrapolations; ++round) {
         const std::optional<double> error = probe.errorAt(substeps);
+        if (probe.stopped())
+            return stopped();
         int next = 0;
         if (!error) {
             next = std::min(2 * substeps, cap);  // blew up: smaller sub-steps
@@ -178,7 +191,7 @@ PlanCandidate planOne(const Model &model, const State &state, Integrator integra
         return std::nullopt;
     };
     std::optional<int> high = smallestMeeting();
-    while (!high && probe.count() < kMaxProbes) {
+    while (!high && probe.count() < kMaxProbes && !probe.stopped()) {
         const int largest = probe.errors().rbegin()->first;
         if (largest >= cap)
             break;
@@ -186,6 +199,8 @@ PlanCandidate planOne(const Model &model, const State &state, Integrator integra
         if (probe.meets(next, tolerance))
             high = next;
     }
+    if (probe.stopped())
+        return stopped();
     if (!high) {
         row.substeps = cap;
         const std::optional<double> error = probe.errorAt(cap);
@@ -207,13 +222,15 @@ PlanCandidate planOne(const Model &model, const State &state, Integrator integra
         else
             low = *high - 1;
     }
-    while (*high - low > 1 && probe.count() < kMaxProbes) {
+    while (*high - low > 1 && probe.count() < kMaxProbes && !probe.stopped()) {
         const int middle = low + (*high - low) / 2;
         if (probe.meets(middle, tolerance))
             high = middle;
         else
             low = middle;
     }
+    if (probe.stopped())
+        return stopped();
 
     // the figures at that count
     row.substeps = *high;
@@ -230,7 +247,8 @@ PlanCandidate planOne(const Model &model, const State &state, Integrator integra
 
 }  // namespace
 
-AccuracyPlan planAccuracy(const Model &model, const State &state, double tolerance, double secondsPerEvaluation)
+AccuracyPlan planAccuracy(const Model &model, const State &state, double tolerance, double secondsPerEvaluation,
+                          const std::atomic<bool> *stop)
 {
     AccuracyPlan plan;
     plan.tolerance = tolerance;
@@ -244,7 +262,15 @@ AccuracyPlan planAccuracy(const Model &model, const State &state, double toleran
     for (Integrator integrator : kIntegrators) {
         if (integrator == Integrator::AdaptiveRk45)
             continue;
-        plan.candidates.push_back(planOne(model, state, integrator, tolerance, secondsPerEvaluation, limit));
+        if (stop && stop->load(std::memory_order_relaxed)) {
+            plan.stopped = true;
+            return plan;
+        }
+        plan.candidates.push_back(planOne(model, state, integrator, tolerance, secondsPerEvaluation, limit, stop));
+    }
+    if (stop && stop->load(std::memory_order_relaxed)) {
+        plan.stopped = true;
+        return plan;
     }
 
     // the cheapest feasible row; a tie goes to the one listed first

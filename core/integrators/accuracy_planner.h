@@ -40,6 +40,7 @@
 #include "core/profile.h"
 #include "core/model/state.h"
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,9 @@ struct AccuracyPlan {
     double secondsPerEvaluation = 0.0;  // s, the measured cost of one force evaluation
     std::vector<PlanCandidate> candidates;  // every fixed-step integrator, in kIntegrators order
     int chosen = -1;  // index of the cheapest feasible candidate; -1 when none is feasible
+    // the stop flag was raised before the plan was done (the editor closing): nothing is chosen,
+    // and the rows are not to be trusted
+    bool stopped = false;
 
     const PlanCandidate *pick() const { return chosen >= 0 ? &candidates[static_cast<std::size_t>(chosen)] : nullptr; }
 };
@@ -74,8 +78,11 @@ struct AccuracyPlan {
 // the margin kept below an explicit scheme's stability limit
 inline constexpr double kStabilityMargin = 0.9;
 
-// plans for the model's timeStep from the state; tolerance in m (> 0), secondsPerEvaluation > 0
-AccuracyPlan planAccuracy(const Model &model, const State &state, double tolerance, double secondsPerEvaluation);
+// plans for the model's timeStep from the state; tolerance in m (> 0), secondsPerEvaluation > 0.
+// A plan can take minutes (a row may bisect up to the cap of substeps): a raised `stop` ends it
+// between two sub-steps of its trials, stopped
+AccuracyPlan planAccuracy(const Model &model, const State &state, double tolerance, double secondsPerEvaluation,
+                          const std::atomic<bool> *stop = nullptr);
 
 // the measured cost of one force evaluation: the force stages' seconds in a run's profile over
 // its evaluations; 0 while it has too few evaluations to say

@@ -53,6 +53,7 @@ private slots:
     void staysBelowTheStabilityLimit();
     void countsTheForceEvaluations();
     void measuresTheCostOfAnEvaluation();
+    void aRaisedStopEndsThePlan();
 };
 
 void TestAccuracyPlanner::meetsTheToleranceWhenRun_data()
@@ -232,6 +233,23 @@ void TestAccuracyPlanner::measuresTheCostOfAnEvaluation()
         QVERIFY(sim.step());
     QVERIFY(core::profiledSecondsPerEvaluation(sim.work.profile) > 0.0);
     QVERIFY(core::timedSecondsPerEvaluation(*sim.model, sim.state) > 0.0);
+}
+
+void TestAccuracyPlanner::aRaisedStopEndsThePlan()
+{
+    // the editor closing raises the flag: the plan ends stopped, nothing chosen; lowered, the same
+    // plan goes to its end
+    const core::OscillatorOptions o;
+    const test::Sim sim = oscillatorAt(o, 0.0);
+    std::atomic<bool> stop{true};
+    const core::AccuracyPlan stopped = core::planAccuracy(*sim.model, sim.state, 1e-7, kSecondsPerEvaluation, &stop);
+    QVERIFY(stopped.stopped);
+    QVERIFY(stopped.candidates.empty());
+    QVERIFY(stopped.pick() == nullptr);
+    stop = false;
+    const core::AccuracyPlan done = core::planAccuracy(*sim.model, sim.state, 1e-7, kSecondsPerEvaluation, &stop);
+    QVERIFY(!done.stopped);
+    QVERIFY(done.pick() != nullptr);
 }
 
 QTEST_APPLESS_MAIN(TestAccuracyPlanner)

@@ -63,6 +63,8 @@ void SimulationController::shutDown()
     disconnect(m_frameConnection);
     disconnect(m_blowUpConnection);
     disconnect(m_repliesConnection);
+    // an accuracy plan under way stops (it may have minutes to go, and does not yield to messages)
+    m_worker->quitting().store(true, std::memory_order_relaxed);
     // the worker's event loop ends, its timer stops with it, and the worker is deleted on its thread
     handOverRelease(m_worker);
     // a message raises the flag that stops a long step, so that the thread can end now

@@ -38,6 +38,7 @@ SimulationWorker::SimulationWorker(MessageQueue &messages, ReplyQueue &replies, 
     connect(m_timer, &QTimer::timeout, this, &SimulationWorker::tick);
     // a long step stops for the messages that arrive while it runs
     m_runner.setInterrupt(&m_messages.waiting());
+    m_runner.setPlanStop(&m_quitting);
     // the plots have every step, however seldom the window draws
     m_runner.samples().setEnabled(true);
 }

@@ -54,6 +54,8 @@ public:
 
     // the UI side sets this before queueing wake(), so that a burst of messages queues one wake
     std::atomic<bool> &wakePending() { return m_wakePending; }
+    // raised by the UI side as it shuts the worker down: an accuracy plan under way stops
+    std::atomic<bool> &quitting() { return m_quitting; }
     // the shortest time between two frames that bring nothing but new steps (ns), set by the UI
     // side to the pace it draws at; a frame that answers a message goes at once
     std::atomic<std::int64_t> &frameIntervalNs() { return m_frameIntervalNs; }
@@ -98,6 +100,7 @@ private:
     QTimer *m_timer = nullptr;
     QElapsedTimer m_clock;  // wall time since the previous tick while running
     std::atomic<bool> m_wakePending = false;
+    std::atomic<bool> m_quitting = false;
     std::uint64_t m_appliedMessage = 0;
     std::atomic<std::int64_t> m_frameIntervalNs = 0;
     std::atomic<double> m_speed = 1.0;
