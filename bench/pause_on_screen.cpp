@@ -51,6 +51,9 @@ struct KeyTimes {
     double queued = 0.0;   // from the press until the window handled the key
     double answer = 0.0;   // from then until the frame arrived
     double drawing = 0.0;  // from then until it was on screen
+    // from the press to the first frame on screen that says the key was taken (a Step owed,
+    // "taking a step…" in the status bar), where that comes before the picture; else the total
+    double acknowledged = 0.0;
 };
 
 class Keyboard {
@@ -61,7 +64,7 @@ public:
     // like one from the keyboard, and returns the times from the press to the swap of the first
     // frame for which `answered` holds with its snapshot drawn; nullopt after `timeout` seconds
     std::optional<KeyTimes> press(Qt::Key key, Qt::KeyboardModifiers modifiers, double delay, const Shown &answered,
-                                  double timeout)
+                                  double timeout, const Shown &acknowledges = {})
     {
         ui::Viewport &viewport = *m_window.viewport();
         QEventLoop loop;
@@ -69,6 +72,7 @@ public:
         // pressedAt is written by the presser before it posts the key, read here after it is handled
         Clock::time_point pressedAt, handledAt, arrivedAt;
         bool handled = false, arrived = false;
+        std::optional<double> acknowledged;
         const auto answers = [&](const std::shared_ptr<const ui::SimulationFrame> &frame) {
             return frame && frame->snapshot && !frame->snapshotBehind && answered(*frame);
         };
@@ -76,12 +80,15 @@ public:
             if (!handled || times)
                 return;
             const std::shared_ptr<const ui::SimulationFrame> frame = m_window.controller()->frame();
+            if (!acknowledged && acknowledges && frame && acknowledges(*frame))
+                acknowledged = secondsBetween(pressedAt, Clock::now());
             if (answers(frame) && viewport.snapshot() == frame->snapshot) {
                 const Clock::time_point now = Clock::now();
                 if (!arrived)
                     arrivedAt = now;
                 times = KeyTimes{secondsBetween(pressedAt, now), secondsBetween(pressedAt, handledAt),
-                                 secondsBetween(handledAt, arrivedAt), secondsBetween(arrivedAt, now)};
+                                 secondsBetween(handledAt, arrivedAt), secondsBetween(arrivedAt, now),
+                                 acknowledged.value_or(secondsBetween(pressedAt, now))};
                 loop.quit();
             }
         };
@@ -159,8 +166,8 @@ QString timesText(const std::optional<KeyTimes> &times)
 {
     if (!times)
         return QStringLiteral("not shown");
-    return QStringLiteral("%1 ms (queued %2, answered %3, drawn %4)")
-        .arg(ms(times->total), ms(times->queued), ms(times->answer), ms(times->drawing));
+    return QStringLiteral("%1 ms (queued %2, answered %3, drawn %4; acknowledged on screen %5)")
+        .arg(ms(times->total), ms(times->queued), ms(times->answer), ms(times->drawing), ms(times->acknowledged));
 }
 
 void printFigure(QTextStream &out, const char *what, const std::vector<KeyTimes> &times, int runs)
@@ -181,7 +188,7 @@ void printFigure(QTextStream &out, const char *what, const std::vector<KeyTimes>
     out << what << ": median " << ms(medianOf(&KeyTimes::total)) << " ms, largest " << ms(largest) << " ms ("
         << times.size() << " of " << runs << " shown; medians: queued " << ms(medianOf(&KeyTimes::queued))
         << ", answered " << ms(medianOf(&KeyTimes::answer)) << ", drawn " << ms(medianOf(&KeyTimes::drawing))
-        << ")\n";
+        << ", acknowledged on screen " << ms(medianOf(&KeyTimes::acknowledged)) << ")\n";
 }
 
 }  // namespace
@@ -259,7 +266,7 @@ int runPauseOnScreen(const PauseLatencyOptions &options, QTextStream &out, QText
         const std::uint64_t before = frame()->snapshot->step;
         const std::optional<KeyTimes> step = keyboard.press(
             Qt::Key_F6, Qt::NoModifier, 0.2, [&](const ui::SimulationFrame &f) { return f.snapshot->step == before + 1; },
-            timeout);
+            timeout, [](const ui::SimulationFrame &f) { return f.stepsOwed > 0; });
         if (step)
             steps.push_back(*step);
         const QImage stepped = window.viewport()->grabFramebuffer();
