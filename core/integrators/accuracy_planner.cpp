@@ -157,7 +157,7 @@ PlanCandidate planOne(const Model &model, const State &state, Integrator integra
     }
 
     Probe probe(model, integrator, state, limit.omegaMax, stop);
-    const auto stopped = [&] {
+    const auto giveUp = [&] {
         row.reason = "planning stopped";
         return row;
     };
@@ -167,7 +167,7 @@ PlanCandidate planOne(const Model &model, const State &state, Integrator integra
     for (int round = 0; round < kExtrapolations; ++round) {
         const std::optional<double> error = probe.errorAt(substeps);
         if (probe.stopped())
-            return stopped();
+            return giveUp();
         int next = 0;
         if (!error) {
             next = std::min(2 * substeps, cap);  // blew up: smaller sub-steps
@@ -200,7 +200,7 @@ PlanCandidate planOne(const Model &model, const State &state, Integrator integra
             high = next;
     }
     if (probe.stopped())
-        return stopped();
+        return giveUp();
     if (!high) {
         row.substeps = cap;
         const std::optional<double> error = probe.errorAt(cap);
@@ -230,7 +230,7 @@ PlanCandidate planOne(const Model &model, const State &state, Integrator integra
             low = middle;
     }
     if (probe.stopped())
-        return stopped();
+        return giveUp();
 
     // the figures at that count
     row.substeps = *high;
@@ -259,17 +259,15 @@ AccuracyPlan planAccuracy(const Model &model, const State &state, double toleran
 
     // one row per fixed-step integrator, from the same state and the same stability analysis
     const StabilityLimit limit = stabilityLimit(model, state);
+    const auto raised = [stop] { return stop && stop->load(std::memory_order_relaxed); };
     for (Integrator integrator : kIntegrators) {
-        if (integrator == Integrator::AdaptiveRk45)
+        if (integrator == Integrator::AdaptiveRk45 || raised())
             continue;
-        if (stop && stop->load(std::memory_order_relaxed)) {
-            plan.stopped = true;
-            return plan;
-        }
         plan.candidates.push_back(planOne(model, state, integrator, tolerance, secondsPerEvaluation, limit, stop));
     }
-    if (stop && stop->load(std::memory_order_relaxed)) {
+    if (raised()) {
         plan.stopped = true;
+        plan.candidates.clear();  // rows cut short are not to be read
         return plan;
     }
 

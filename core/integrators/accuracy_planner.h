@@ -68,8 +68,8 @@ struct AccuracyPlan {
     double secondsPerEvaluation = 0.0;  // s, the measured cost of one force evaluation
     std::vector<PlanCandidate> candidates;  // every fixed-step integrator, in kIntegrators order
     int chosen = -1;  // index of the cheapest feasible candidate; -1 when none is feasible
-    // the stop flag was raised before the plan was done (the editor closing): nothing is chosen,
-    // and the rows are not to be trusted
+    // the stop flag was raised before the plan was done (the editor closing): no rows, nothing
+    // chosen
     bool stopped = false;
 
     const PlanCandidate *pick() const { return chosen >= 0 ? &candidates[static_cast<std::size_t>(chosen)] : nullptr; }

@@ -176,31 +176,35 @@ void SimulationWorker::tick()
         publish();
 }
 
-void SimulationWorker::makeSnapshot()
+std::shared_ptr<core::Snapshot> SimulationWorker::freeSnapshot(const core::Model &model)
 {
-    const std::shared_ptr<const core::Model> model = m_runner.shownModel();
-    std::shared_ptr<core::Snapshot> into;
     for (std::shared_ptr<core::Snapshot> &pooled : m_snapshotPool) {
         if (pooled.use_count() != 1)
             continue;  // the window (or a frame on its way) still reads it
         // only the pool holds it: the window's last reads of it came before it let go
         std::atomic_thread_fence(std::memory_order_acquire);
         // one of another size is another scene's: its memory goes rather than stay unused
-        if (!model || pooled->particleCount() != model->particleCount() ||
-            pooled->springCount() != model->springCount())
+        if (pooled->particleCount() != model.particleCount() || pooled->springCount() != model.springCount())
             pooled = std::make_shared<core::Snapshot>();
-        into = pooled;
-        break;
+        return pooled;
     }
-    if (!into) {
-        into = std::make_shared<core::Snapshot>();
-        if (m_snapshotPool.size() < kPooledSnapshots)
-            m_snapshotPool.push_back(into);
-    }
-    m_runner.fillSnapshot(*into);
-    m_snapshot = model ? std::move(into) : nullptr;
-    m_snapshotModel = model;
+    auto fresh = std::make_shared<core::Snapshot>();
+    if (m_snapshotPool.size() < kPooledSnapshots)
+        m_snapshotPool.push_back(fresh);
+    return fresh;
+}
+
+void SimulationWorker::makeSnapshot()
+{
+    m_snapshotModel = m_runner.shownModel();
     m_snapshotStale = false;
+    if (!m_snapshotModel) {
+        m_snapshot = nullptr;
+        return;
+    }
+    std::shared_ptr<core::Snapshot> into = freeSnapshot(*m_snapshotModel);
+    m_runner.fillSnapshot(*into);
+    m_snapshot = std::move(into);
 }
 
 void SimulationWorker::publish(Frame kind)

@@ -92,6 +92,8 @@ private:
     void publish(Frame kind = Frame::Regular);
     // the snapshot of the state shown
     void makeSnapshot();
+    // a snapshot of the pool that only the pool holds, else a new one (pooled while there is room)
+    std::shared_ptr<core::Snapshot> freeSnapshot(const core::Model &model);
 
     MessageQueue &m_messages;
     ReplyQueue &m_replies;
