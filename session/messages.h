@@ -1,7 +1,7 @@
 #pragma once
 // Messages: everything the UI asks of the running simulation, applied by the worker between two
-// steps. Edits change the scene or the run (SetSceneEdit, TiltEdit, SteerEdit, GrabEdit; their
-// names say so); the rest control the run (play, pause, step, reset), move through the timeline
+// steps. Edits change the scene or the run (SetSceneEdit, TiltEdit, SteerEdit, GrabEdit,
+// StrikeEdit; their names say so); the rest control the run (play, pause, step, reset), move through the timeline
 // (scrub, step back) or ask for a one-off answer, which comes back once as a reply (replies.h).
 // The UI thread pushes, the worker drains at the start of each tick, so the worker's State is
 // never read or written from the UI thread (MuJoCo's `simulate` applies its pending actions the
@@ -50,6 +50,15 @@ struct GrabEdit {
     Eigen::Vector3d target = Eigen::Vector3d::Zero();  // m
 };
 
+// a blow to one particle: its velocity and its spin change at once, as a cue's stroke changes both
+// (a pinned particle keeps still but takes the spin; the spin is kept where the scene can turn,
+// core::StepPlan::spin, and has no effect elsewhere)
+struct StrikeEdit {
+    int particle = -1;
+    Eigen::Vector3d velocityChange = Eigen::Vector3d::Zero();  // m/s
+    Eigen::Vector3d spinChange = Eigen::Vector3d::Zero();      // rad/s
+};
+
 // run control
 struct Play {};
 struct Pause {};
@@ -86,7 +95,7 @@ struct SetTimelineBudget {
     std::size_t bytes = 0;
 };
 
-using Message = std::variant<SetSceneEdit, TiltEdit, SteerEdit, GrabEdit, Play, Pause, StepOnce, Reset, Sync,
+using Message = std::variant<SetSceneEdit, TiltEdit, SteerEdit, GrabEdit, StrikeEdit, Play, Pause, StepOnce, Reset, Sync,
                              PlanAccuracy, CaptureState, StartRecording, StopRecording, Scrub, StepBack,
                              SetTimelineBudget>;
 

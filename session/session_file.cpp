@@ -146,6 +146,10 @@ QByteArray messageJson(const Message &message)
             else if constexpr (std::is_same_v<E, GrabEdit>)
                 return "\"edit\": \"grab\", \"particle\": " + QByteArray::number(e.particle) +
                        ", \"target\": " + vector(e.target);
+            else if constexpr (std::is_same_v<E, StrikeEdit>)
+                return "\"edit\": \"strike\", \"particle\": " + QByteArray::number(e.particle) +
+                       ", \"velocityChange\": " + vector(e.velocityChange) +
+                       ", \"spinChange\": " + vector(e.spinChange);
             else
                 return "\"edit\": \"none\"";  // requests that change nothing are never recorded
         },
@@ -464,6 +468,13 @@ public:
             GrabEdit e;
             if (!particle(object.value("particle"_L1), path + u".particle"_s, current, e.particle) ||
                 !vector3(object.value("target"_L1), path + u".target"_s, e.target))
+                return false;
+            out = e;
+        } else if (kind == u"strike"_s) {
+            StrikeEdit e;
+            if (!particle(object.value("particle"_L1), path + u".particle"_s, current, e.particle) ||
+                !vector3(object.value("velocityChange"_L1), path + u".velocityChange"_s, e.velocityChange) ||
+                !vector3(object.value("spinChange"_L1), path + u".spinChange"_s, e.spinChange))
                 return false;
             out = e;
         } else {

@@ -46,7 +46,8 @@ bool changesTheRun(const Message &message)
 {
     return std::holds_alternative<SetSceneEdit>(message) || std::holds_alternative<Play>(message) ||
            std::holds_alternative<TiltEdit>(message) || std::holds_alternative<SteerEdit>(message) ||
-           std::holds_alternative<GrabEdit>(message) || std::holds_alternative<StartRecording>(message);
+           std::holds_alternative<GrabEdit>(message) || std::holds_alternative<StrikeEdit>(message) ||
+           std::holds_alternative<StartRecording>(message);
 }
 
 // what a session recording keeps: the edits and run control; requests for copies and plans, the
@@ -64,7 +65,7 @@ bool startsAKeyframe(const Message &message)
 {
     return std::holds_alternative<SetSceneEdit>(message) || std::holds_alternative<Reset>(message) ||
            std::holds_alternative<TiltEdit>(message) || std::holds_alternative<SteerEdit>(message) ||
-           std::holds_alternative<GrabEdit>(message);
+           std::holds_alternative<GrabEdit>(message) || std::holds_alternative<StrikeEdit>(message);
 }
 
 // the messages after which a step asked for and cut short is no longer wanted: Pause, Play (the
@@ -94,6 +95,7 @@ void SimulationRunner::apply(const Message &message)
                    [this](const TiltEdit &e) { tilt(e); },
                    [this](const SteerEdit &e) { steer(e); },
                    [this](const GrabEdit &e) { grab(e); },
+                   [this](const StrikeEdit &e) { strike(e); },
                    [this](const Play &) {
                        m_running = hasScene();
                        m_threads.startOver();  // what the last run measured says nothing of this one
@@ -334,6 +336,22 @@ void SimulationRunner::tilt(const TiltEdit &edit)
         for (int axis = 0; axis < 3; ++axis)
             m_state.velocity(axis, i) += edit.speed * symmetricUnit(random);
     // the kick is work done on the scene: neither drift nor a runaway
+    m_diagnostics.editedBy(before, core::energies(*m_model, m_state));
+    m_diagnostics.stateChanged();
+}
+
+void SimulationRunner::strike(const StrikeEdit &edit)
+{
+    if (!hasScene() || edit.particle < 0 || edit.particle >= m_model->particleCount())
+        return;
+    const core::Energies before = core::energies(*m_model, m_state);
+    // a pinned particle does not move, but turns if spun (a post spun in place)
+    if (!m_model->isPinned(edit.particle))
+        m_state.velocity.col(edit.particle) += edit.velocityChange;
+    // a scene that cannot turn keeps no spins (StepPlan::spin): there the blow moves the particle alone
+    if (m_state.angularVelocity.cols() == m_model->particleCount())
+        m_state.angularVelocity.col(edit.particle) += edit.spinChange;
+    // the blow is work done on the scene, as a kick is
     m_diagnostics.editedBy(before, core::energies(*m_model, m_state));
     m_diagnostics.stateChanged();
 }

@@ -153,6 +153,7 @@ private:
     void stepOnceMessage();
     void tilt(const TiltEdit &edit);
     void steer(const SteerEdit &edit);
+    void strike(const StrikeEdit &edit);
     void applySteering();
     void grab(const GrabEdit &edit);
     void applyGrab();

@@ -1,5 +1,5 @@
 // Session recordings: a runner records a session full of edits (tilts, steering, the mouse spring,
-// parameter and structure changes, a step, a reset, a blow-up that the runner takes back) and a
+// a strike with spin, parameter and structure changes, a step, a reset, a blow-up that the runner takes back) and a
 // replay on a fresh runner ends with the same bits, straight from memory and through a file; a
 // recording changed by one step no longer matches; a damaged file is refused with its path.
 
@@ -28,7 +28,15 @@ std::shared_ptr<const core::SceneDesc> netScene()
     scene.settings.viscosity = 0.05;
     scene.settings.particleCollisions = true;
     scene.settings.planeCollisions = true;
+    scene.settings.friction = 0.3;  // so that it turns, and a strike's spin is kept
     return std::make_shared<const core::SceneDesc>(scene);
+}
+
+ui::SimulationRunner runnerWith(std::shared_ptr<const core::SceneDesc> scene)
+{
+    ui::SimulationRunner runner;
+    runner.apply(ui::SetSceneEdit{std::move(scene), ui::SceneChange::Replace});
+    return runner;
 }
 
 // the recording a StopRecording handed back, and the request it answers
@@ -52,6 +60,8 @@ std::shared_ptr<const ui::SessionRecording> recordSession(ui::SimulationRunner &
     runner.advance(0.07, kNoBudgetLimit);
     runner.apply(ui::TiltEdit{42, 1.5});
     runner.advance(0.031, kNoBudgetLimit);
+    runner.apply(ui::StrikeEdit{5, Eigen::Vector3d(0.4, 0.2, 0.0), Eigen::Vector3d(0.0, 30.0, -10.0)});
+    runner.advance(0.02, kNoBudgetLimit);
     runner.apply(ui::GrabEdit{7, Eigen::Vector3d(0.3, 1.2, -0.1)});
     runner.advance(0.04, kNoBudgetLimit);
     runner.apply(ui::GrabEdit{7, Eigen::Vector3d(0.5, 1.0, 0.2)});
@@ -120,8 +130,13 @@ void TestSessionRecording::replayEndsWithTheRecordedBits()
     QCOMPARE(request, std::uint64_t(1));
     QVERIFY(!runner.isRecording());
     // every kind of edit is in it, Sync is not; the steering held from before starts it
-    QCOMPARE(recording->entries.size(), std::size_t(13));
+    QCOMPARE(recording->entries.size(), std::size_t(14));
     QVERIFY(std::holds_alternative<ui::SteerEdit>(recording->entries.front().message));
+    QVERIFY(std::any_of(recording->entries.begin(), recording->entries.end(), [](const auto &entry) {
+        return std::holds_alternative<ui::StrikeEdit>(entry.message);
+    }));
+    // the net turns, so the strike's spin is part of the run replayed
+    QVERIFY(runnerWith(netScene()).state().angularVelocity.cols() > 0);
     QCOMPARE(recording->entries.front().steps, std::uint64_t(0));
     for (const auto &entry : recording->entries)
         QVERIFY(!std::holds_alternative<ui::Sync>(entry.message));

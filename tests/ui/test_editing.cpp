@@ -4,6 +4,7 @@
 // after. Waits are on the worker's frames, never fixed sleeps.
 
 #include "ui/viewport/edit_tools.h"
+#include "core/model/generators.h"
 #include "ui/panels/inspector_panel.h"
 #include "ui/panels/status_text.h"
 #include "ui/viewport/guide_line.h"
@@ -15,6 +16,8 @@
 #include <QLabel>
 #include <QStatusBar>
 #include <QUndoStack>
+#include <QWheelEvent>
+#include <numbers>
 #include <QtTest>
 
 #include "editor_fixture.h"
@@ -72,6 +75,7 @@ private slots:
     void dragWhilePausedMovesTheSelectionAsOneStep();
     void selectingKeepsTheViewItsSize();
     void dragWhileRunningPullsTheParticleAndLetsGo();
+    void wheelWhileDraggingSpinsTheParticle();
     void buildTheHandoutNetByMouse();
     void measureToolShowsTheDistanceAndFollowsTheRun();
     void measureToolDragsABandWithTheDistance();
@@ -595,6 +599,60 @@ void TestEditing::dragWhileRunningPullsTheParticleAndLetsGo()
     settle();
     const auto frame = controller().frame();
     QVERIFY(frame->snapshot->positions[0] > 0.1f);
+}
+
+void TestEditing::wheelWhileDraggingSpinsTheParticle()
+{
+    // a floor far below with friction: the scene can turn, so a spin given is kept
+    core::SceneDesc s = stillScene();
+    s.settings.planeCollisions = true;
+    s.settings.friction = 0.5;
+    s.planes = {core::floorPlane(-10.0)};
+    s.particles = {particle({0.0, 0.0, 0.0})};
+    open(s);
+    key(Qt::Key_5);
+    key(Qt::Key_F4);
+    QTRY_VERIFY(controller().isRunning());
+    const float scale = viewport()->camera().worldPerPixel();
+
+    // hold it and turn the wheel two notches away: two turns a second about the line of sight,
+    // counter-clockwise as the view shows it; one notch back leaves one
+    const QPoint at = pixelOf(s.particles[0].position);
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, at);
+    QCOMPARE(tools()->grabbed(), 0);
+    const auto turnWheel = [&](int eighths) {
+        QWheelEvent wheel(at, viewport()->mapToGlobal(at), QPoint(), QPoint(0, eighths), Qt::LeftButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(viewport(), &wheel);
+    };
+    turnWheel(2 * 120);
+    QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("spun 2 turns/s counter-clockwise")),
+             qPrintable(m_window->statusBar()->currentMessage()));
+    turnWheel(-120);
+    turnWheel(2 * 120);
+    QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("spun 3 turns/s counter-clockwise")),
+             qPrintable(m_window->statusBar()->currentMessage()));
+    QCOMPARE(viewport()->camera().worldPerPixel(), scale);  // the wheel spun, it did not zoom
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, at);
+    QCOMPARE(tools()->grabbed(), -1);
+    settle();
+
+    const auto frame = controller().frame();
+    QCOMPARE(frame->snapshot->angularVelocities.size(), std::size_t(3));
+    const Eigen::Vector3d spin(frame->snapshot->angularVelocities[0], frame->snapshot->angularVelocities[1],
+                               frame->snapshot->angularVelocities[2]);
+    const QVector3D back = -viewport()->camera().forward();
+    const Eigen::Vector3d expected = 3.0 * 2.0 * std::numbers::pi * Eigen::Vector3d(back.x(), back.y(), back.z()).normalized();
+    QVERIFY2((spin - expected).norm() < 1e-4 * expected.norm(),
+             qPrintable(QStringLiteral("%1 %2 %3").arg(spin.x()).arg(spin.y()).arg(spin.z())));
+    // the spin is the run's, not the scene's: nothing to undo
+    QCOMPARE(undo()->count(), 0);
+
+    // let go, the wheel zooms again
+    QWheelEvent wheel(at, viewport()->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QApplication::sendEvent(viewport(), &wheel);
+    QCOMPARE_LT(viewport()->camera().worldPerPixel(), scale);
 }
 
 void TestEditing::buildTheHandoutNetByMouse()

@@ -89,6 +89,7 @@ private slots:
     void warningsGoWhenStale();
     void blowupPausesAndShowsInTheStatusBar();
     void arrowKeysSteerThePoolBall();
+    void cueStrikesThePoolBallWithSpin();
     void kickIsTheSameForTheSameSeed();
     void aSwitchesCollisions();
     void f2SavesAScreenshot();
@@ -671,6 +672,51 @@ void TestMainWindow::arrowKeysSteerThePoolBall()
         press(Qt::Key_Down);
     QCOMPARE(m_window->steering().level, 0);
     QCOMPARE(steeringPixels(), 0);
+}
+
+void TestMainWindow::cueStrikesThePoolBallWithSpin()
+{
+    QString error;
+    QVERIFY2(m_window->files()->openExample(QStringLiteral("pool"), &error), qPrintable(error));
+    const core::SceneDesc &scene = m_window->document()->scene();
+    const auto ball = std::size_t(scene.steerable);
+    const double mass = scene.particles[ball].mass, radius = scene.particles[ball].radius;
+    QVERIFY(settledFrame(controller())->model->plan.spin);  // the felt has friction
+
+    // S strikes; Shift+Up makes the stroke faster, Page Down moves the cue below the centre
+    auto *strike = m_window->findChild<QAction *>(QStringLiteral("actionStrikeCueBall"));
+    QVERIFY(strike && strike->isEnabled());
+    QCOMPARE(strike->shortcut(), QKeySequence(Qt::Key_S));
+    press(Qt::Key_Up, Qt::ShiftModifier);
+    press(Qt::Key_Up, Qt::ShiftModifier);
+    for (int i = 0; i < 3; ++i)
+        press(Qt::Key_PageDown);
+    QCOMPARE(m_window->steering().strikeSpeed(), 5.0);
+    QCOMPARE(m_window->steering().cueHeight, -3);
+    QCOMPARE(m_window->steering().level, 0);  // the push is left alone
+    auto *figure = m_window->statusBar()->findChild<QLabel *>(QStringLiteral("statusSteer"));
+    QVERIFY(figure);
+    QCOMPARE(figure->text(), QStringLiteral("push 0 N 0°; cue 5 m/s −0.3r"));
+
+    // struck paused, then a step: along +x at 5 m/s with backspin 5 s h / (2 r²) = 7.5 rad/s about
+    // up × x = -z, which friction has barely touched in one step
+    press(Qt::Key_S);
+    QVERIFY2(m_window->statusBar()->currentMessage().startsWith(
+                 QStringLiteral("Particle %1 struck at 5 m/s, 0.3 r below the centre: spin 7.5 rad/s").arg(ball)),
+             qPrintable(m_window->statusBar()->currentMessage()));
+    press(Qt::Key_F6);
+    const auto struck = settledFrame(controller());
+    QCOMPARE(struck->snapshot->step, 1u);
+    const double speed = struck->snapshot->momentum.x() / mass;
+    const double spinZ = struck->snapshot->angularVelocities[3 * ball + 2];
+    const double expectedSpin = 5.0 * 5.0 * 0.3 * radius / (2.0 * radius * radius);
+    QVERIFY2(std::abs(speed - 5.0) < 0.05, qPrintable(QString::number(speed)));
+    QVERIFY2(std::abs(spinZ - expectedSpin) < 0.05 * expectedSpin, qPrintable(QString::number(spinZ)));
+    // backspin: the point touching the felt slides forward faster than the ball
+    QVERIFY(speed + radius * spinZ > speed);
+    // a Reset takes the stroke back, as it does every edit of the run
+    press(Qt::Key_F5);
+    QCOMPARE(settledFrame(controller())->snapshot->momentum.x(), 0.0);
 }
 
 void TestMainWindow::kickIsTheSameForTheSameSeed()

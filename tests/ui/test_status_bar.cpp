@@ -83,7 +83,7 @@ void TestStatusBar::longestTextsFitAtTheDefaultSize()
 
     // the widest figures: a long run, slower than real time, a big scene's energy, the drift in
     // joules, a tiny local error, and the pool's steering
-    setFigure("statusSteer", tr("push %1 N towards %2°").arg(12345.67, 0, 'g', 4).arg(345));
+    setFigure("statusSteer", ui::steerText(12345.67, 345.0, 10.0, -5));
     setFigure("statusTime", ui::timeText(99999.999));
     setFigure("statusRate", ui::rateText(true, 0.0123));
     setFigure("statusSteps", ui::stepsText(true, 1234567.0));

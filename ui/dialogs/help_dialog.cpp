@@ -49,8 +49,9 @@ HelpDialog::HelpDialog(const QMenuBar &menus, QWidget *parent) : QDialog(parent)
              tr("Click one particle, then another, or drag from one to another: a spring with the toolbar's k "
                 "and kc, at rest at their distance; a dashed line follows the cursor meanwhile"));
     addEntry(tr("Drag tool (5)"),
-             tr("Running: hold a particle to pull it toward the cursor. Paused: drag to move the selection (one "
-                "undo step)"));
+             tr("Running: hold a particle to pull it toward the cursor, and turn the wheel meanwhile to spin it "
+                "about the line of sight (a turn per second a notch), so that it flies off spinning. Paused: drag "
+                "to move the selection (one undo step)"));
     addEntry(tr("Measure tool (6)"),
              tr("Click one particle, then another, or drag from one to another: a line between them labelled with "
                 "their distance, which follows them while the run plays; the status bar gives the distance with its "

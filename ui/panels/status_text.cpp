@@ -29,6 +29,25 @@ QString timeText(double seconds)
     return tr("t = %1 s").arg(seconds, 0, 'f', 3);
 }
 
+QString cueHeightText(int tenths, bool brief)
+{
+    if (tenths == 0)
+        return brief ? tr("centre") : tr("at the centre");
+    const QString height = QString::number(std::abs(tenths) / 10.0, 'g', 2);
+    if (brief)
+        return (tenths > 0 ? QStringLiteral("+%1r") : QStringLiteral("−%1r")).arg(height);
+    return (tenths > 0 ? tr("%1 r above the centre") : tr("%1 r below the centre")).arg(height);
+}
+
+QString steerText(double pushNewtons, double degrees, double cueSpeed, int cueTenths)
+{
+    return tr("push %1 N %2°; cue %3 m/s %4")
+        .arg(pushNewtons, 0, 'g', 4)
+        .arg(degrees, 0, 'f', 0)
+        .arg(cueSpeed, 0, 'g', 3)
+        .arg(cueHeightText(cueTenths, true));
+}
+
 namespace {
 
 // a rate as it reads best: whole from 10 up, two significant digits below ("4.2", "0.19"),

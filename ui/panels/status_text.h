@@ -19,6 +19,11 @@ namespace ui {
 inline constexpr double kRealTimeTolerance = 0.995;
 
 QString timeText(double seconds);
+// where the cue meets the ball, in tenths of its radius: "0.3 r below the centre", or briefly
+// "−0.3r", "centre"
+QString cueHeightText(int tenths, bool brief = false);
+// the steering figure: the push and the cue, "push 3 N 45°; cue 4 m/s −0.3r"
+QString steerText(double pushNewtons, double degrees, double cueSpeed, int cueTenths);
 // factor 0 while running means "not measured yet" ("×…"); below 0.1 it has two significant
 // digits ("×0.0021"), never "×0.00". speed is the one chosen (playback_speed.h): a run slower than
 // it says so ("slower than real time" at ×1, "slower than the ×4 asked"), and one as fast as it

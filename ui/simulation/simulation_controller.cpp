@@ -162,6 +162,12 @@ std::uint64_t SimulationController::grab(int particle, const Eigen::Vector3d &ta
     return post(GrabEdit{particle, target});
 }
 
+std::uint64_t SimulationController::strike(int particle, const Eigen::Vector3d &velocityChange,
+                                           const Eigen::Vector3d &spinChange)
+{
+    return post(StrikeEdit{particle, velocityChange, spinChange});
+}
+
 std::uint64_t SimulationController::sync()
 {
     return post(Sync{});

@@ -1,5 +1,9 @@
 #include "steering.h"
 
+#include "core/model/model.h"
+
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -18,6 +22,24 @@ void Steering::change(int presses)
     level = std::clamp(level + presses, 0, kMaxLevel);
 }
 
+void Steering::changeCue(int presses)
+{
+    cueLevel = std::clamp(cueLevel + presses, 1, kMaxCueLevel);
+}
+
+void Steering::raiseCue(int presses)
+{
+    cueHeight = std::clamp(cueHeight + presses, -kMaxCueHeight, kMaxCueHeight);
+}
+
+void Steering::apply(const Change &change)
+{
+    turn(change.turn);
+    this->change(change.push);
+    changeCue(change.cue);
+    raiseCue(change.height);
+}
+
 Eigen::Vector3d Steering::direction() const
 {
     // counter-clockwise seen from +y turns +x towards -z
@@ -33,6 +55,26 @@ double Steering::strength(double mass) const
 Eigen::Vector3d Steering::force(double mass) const
 {
     return strength(mass) * direction();
+}
+
+double Steering::strikeSpeed() const
+{
+    return cueLevel * kStrikeSpeedPerLevel;
+}
+
+Steering::Stroke Steering::stroke(double radius) const
+{
+    // an impulse J = m s d through the point h up from the centre: Δv = s d, and Δω = I⁻¹ (h up × J)
+    // with I = (2/5) m r², so the mass drops out. At h = 2r/5 the ball leaves rolling (Δω r = s)
+    Stroke stroke;
+    const double speed = strikeSpeed();
+    stroke.velocityChange = speed * direction();
+    if (radius > 0.0) {
+        const double height = cueHeight / 10.0 * radius;
+        stroke.spinChange = height * speed / (core::kSolidSphereInertia * radius * radius) *
+                            Eigen::Vector3d::UnitY().cross(direction());
+    }
+    return stroke;
 }
 
 }  // namespace ui

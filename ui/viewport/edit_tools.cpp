@@ -12,11 +12,13 @@
 #include <QActionGroup>
 #include <QMouseEvent>
 #include <QRubberBand>
+#include <QWheelEvent>
 #include <QUndoStack>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 namespace ui {
@@ -296,6 +298,8 @@ bool EditTools::eventFilter(QObject *watched, QEvent *event)
         return move(static_cast<QMouseEvent *>(event));
     case QEvent::MouseButtonRelease:
         return release(static_cast<QMouseEvent *>(event));
+    case QEvent::Wheel:
+        return m_gesture == Gesture::Grab && spinGrabbed(static_cast<QWheelEvent *>(event));
     case QEvent::Leave:
         m_viewport->setHover(-1, -1);
         return false;
@@ -403,6 +407,7 @@ bool EditTools::press(QMouseEvent *event)
         if (m_controller->isRunning()) {
             m_gesture = Gesture::Grab;
             m_grabbed = particle;
+            m_grabSpin = 0.0;
             m_controller->grab(particle, m_dragPlanePoint);
             return true;
         }
@@ -451,6 +456,29 @@ bool EditTools::move(QMouseEvent *event)
         return true;
     }
     return false;
+}
+
+bool EditTools::spinGrabbed(QWheelEvent *event)
+{
+    const double notches = event->angleDelta().y() / 120.0;
+    if (notches == 0.0)
+        return false;
+    // about the line of sight, towards the viewer: a notch away from the user turns the particle
+    // counter-clockwise as the view shows it (right-hand rule)
+    const QVector3D towardsViewer = -m_viewport->camera().forward();
+    const Eigen::Vector3d axis(towardsViewer.x(), towardsViewer.y(), towardsViewer.z());
+    m_grabSpin += notches * kFlickTurnsPerNotch;
+    m_controller->strike(m_grabbed, Eigen::Vector3d::Zero(),
+                         notches * kFlickTurnsPerNotch * 2.0 * std::numbers::pi * axis.normalized());
+    const auto frame = m_controller->frame();
+    const bool turns = frame && frame->model && frame->model->plan.spin;
+    emit message(turns ? tr("Particle %1 spun %2 turns/s %3 as seen: let go to flick it")
+                             .arg(m_grabbed)
+                             .arg(std::abs(m_grabSpin), 0, 'g', 3)
+                             .arg(m_grabSpin >= 0.0 ? tr("counter-clockwise") : tr("clockwise"))
+                       : tr("Nothing in this scene has friction, so particle %1 takes no spin").arg(m_grabbed));
+    event->accept();
+    return true;
 }
 
 bool EditTools::release(QMouseEvent *event)

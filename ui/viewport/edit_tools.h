@@ -28,6 +28,7 @@
 class QAction;
 class QActionGroup;
 class QMouseEvent;
+class QWheelEvent;
 class QRubberBand;
 
 namespace ui {
@@ -55,6 +56,9 @@ class EditTools : public QObject {
     Q_OBJECT
 
 public:
+    // the spin one wheel notch gives the particle the Drag tool holds, turns per second
+    static constexpr double kFlickTurnsPerNotch = 1.0;
+
     EditTools(Viewport *viewport, SceneDocument *document, SimulationController *controller, QObject *parent = nullptr);
 
     Tool tool() const { return m_tool; }
@@ -127,6 +131,9 @@ private:
     bool press(QMouseEvent *event);
     bool move(QMouseEvent *event);
     bool release(QMouseEvent *event);
+    // the wheel while the Drag tool holds a particle (running): spins it about the line of sight,
+    // kFlickTurnsPerNotch a notch, so that letting go flicks it with spin
+    bool spinGrabbed(QWheelEvent *event);
     void hover(const QPointF &pixel);
     // the Spring and Measure tools: the rubber band from their first particle to the pixel (to the
     // centre of a particle there, labelled with its distance while measuring), hidden when none is
@@ -186,6 +193,7 @@ private:
     int m_measuredTo = -1;
     int m_particleCount = 0;  // the scene's, as last seen
     int m_grabbed = -1;
+    double m_grabSpin = 0.0;  // turns/s the wheel gave the held particle, counter-clockwise as seen
     Eigen::Vector3d m_dragPlanePoint = Eigen::Vector3d::Zero();  // the plane the drag moves in
     Eigen::Vector3d m_dragStart = Eigen::Vector3d::Zero();       // where the cursor met it at the press
     std::vector<int> m_moving;                                    // particles a paused drag moves

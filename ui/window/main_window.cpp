@@ -219,34 +219,57 @@ void MainWindow::createActions()
 
     createSpeedActions();
 
-    // steering, for scenes with a steerable particle
+    // steering, for scenes with a steerable particle: the push (arrow keys) and the cue
     struct SteerKey {
         const char *name;
         const char *text;
         const char *tip;
-        Qt::Key key;
-        int turn;
-        int change;
+        QKeySequence key;
+        Steering::Change change;
     };
     const SteerKey steerKeys[] = {
         {"actionSteerLeft", QT_TR_NOOP("Steer &Left"),
-         QT_TR_NOOP("Turn the push on the steerable particle 15° to the left, seen from above"), Qt::Key_Left, 1, 0},
+         QT_TR_NOOP("Turn the push and the cue on the steerable particle 15° to the left, seen from above"),
+         QKeySequence(Qt::Key_Left), {.turn = 1}},
         {"actionSteerRight", QT_TR_NOOP("Steer R&ight"),
-         QT_TR_NOOP("Turn the push on the steerable particle 15° to the right, seen from above"), Qt::Key_Right, -1, 0},
+         QT_TR_NOOP("Turn the push and the cue on the steerable particle 15° to the right, seen from above"),
+         QKeySequence(Qt::Key_Right), {.turn = -1}},
         {"actionSteerStronger", QT_TR_NOOP("Push &Harder"),
          QT_TR_NOOP("Push the steerable particle harder (the pool's cue ball); an arrow at it shows the push"),
-         Qt::Key_Up, 0, 1},
+         QKeySequence(Qt::Key_Up), {.push = 1}},
         {"actionSteerWeaker", QT_TR_NOOP("Push &Softer"),
-         QT_TR_NOOP("Push the steerable particle more softly, down to not at all"), Qt::Key_Down, 0, -1},
+         QT_TR_NOOP("Push the steerable particle more softly, down to not at all"), QKeySequence(Qt::Key_Down),
+         {.push = -1}},
+        {"actionCueHarder", QT_TR_NOOP("Cue Fas&ter"),
+         QT_TR_NOOP("Strike the cue ball 0.5 m/s faster (S strikes)"), QKeySequence(Qt::SHIFT | Qt::Key_Up),
+         {.cue = 1}},
+        {"actionCueSofter", QT_TR_NOOP("Cue Slo&wer"),
+         QT_TR_NOOP("Strike the cue ball 0.5 m/s slower (S strikes)"), QKeySequence(Qt::SHIFT | Qt::Key_Down),
+         {.cue = -1}},
+        {"actionCueHigher", QT_TR_NOOP("Cue Hi&gher"),
+         QT_TR_NOOP("Strike the cue ball a tenth of its radius higher: above the centre gives topspin, so it "
+                    "follows the ball it hits"),
+         QKeySequence(Qt::Key_PageUp), {.height = 1}},
+        {"actionCueLower", QT_TR_NOOP("Cue Lo&wer"),
+         QT_TR_NOOP("Strike the cue ball a tenth of its radius lower: below the centre gives backspin, so it "
+                    "draws back from the ball it hits"),
+         QKeySequence(Qt::Key_PageDown), {.height = -1}},
     };
     for (const SteerKey &key : steerKeys) {
         auto *action = new QAction(tr(key.text), this);
         action->setObjectName(QString::fromLatin1(key.name));
         action->setShortcut(key.key);
         action->setStatusTip(tr(key.tip));
-        connect(action, &QAction::triggered, this, [this, key] { steer(key.turn, key.change); });
+        connect(action, &QAction::triggered, this, [this, change = key.change] { steer(change); });
         m_steerActions << action;
     }
+    auto *strike = new QAction(tr("Stri&ke Cue Ball"), this);
+    strike->setObjectName(QStringLiteral("actionStrikeCueBall"));
+    strike->setShortcut(Qt::Key_S);
+    strike->setStatusTip(tr("Strike the steerable particle with the cue: along the push's direction, at the cue's "
+                            "speed and height"));
+    connect(strike, &QAction::triggered, this, &MainWindow::strikeCue);
+    m_steerActions << strike;
 }
 
 void MainWindow::resizeEvent(QResizeEvent *event)
@@ -459,7 +482,8 @@ void MainWindow::createStatusBar()
 {
     // the passing message or the latest warning on the left (StatusBar), the figures of the run
     // on the right, each as wide as its text
-    m_steerLabel = m_statusBar->addFigure("statusSteer", QString(), tr("The push on the steerable particle (arrow keys)"));
+    m_steerLabel = m_statusBar->addFigure("statusSteer", QString(), tr("The push on the steerable particle (arrow keys), and the cue's speed (Shift+Up, "
+                                                     "Shift+Down) and height (Page Up, Page Down); S strikes"));
     m_timeLabel = m_statusBar->addFigure("statusTime", timeText(100.0), tr("Simulated time"));
     m_rateLabel = m_statusBar->addFigure("statusRate", rateText(true, 1.0),
                                          tr("Simulated seconds per second of wall-clock time"));
@@ -749,9 +773,8 @@ void MainWindow::updateSteerActions()
     m_steerLabel->setVisible(steerable);
     if (steerable) {
         const double mass = scene.particles[static_cast<std::size_t>(scene.steerable)].mass;
-        m_steerLabel->setText(tr("push %1 N towards %2°")
-                                  .arg(m_steering.strength(mass), 0, 'g', 4)
-                                  .arg(m_steering.angle, 0, 'f', 0));
+        m_steerLabel->setText(
+            steerText(m_steering.strength(mass), m_steering.angle, m_steering.strikeSpeed(), m_steering.cueHeight));
     }
     // and the arrow in the view, while there is a push
     const Eigen::Vector3d d = m_steering.direction();
@@ -911,16 +934,41 @@ void MainWindow::applyCapturedState(const CapturedState &captured)
         kPlanMessageMs);
 }
 
-void MainWindow::steer(int turn, int change)
+void MainWindow::steer(const Steering::Change &change)
 {
     const core::SceneDesc &scene = m_document->scene();
     if (scene.steerable < 0 || scene.steerable >= static_cast<int>(scene.particles.size()))
         return;
-    m_steering.turn(turn);
-    m_steering.change(change);
-    const double mass = scene.particles[static_cast<std::size_t>(scene.steerable)].mass;
-    m_controller->steer(scene.steerable, m_steering.force(mass));
+    const bool pushChanged = change.turn != 0 || change.push != 0;
+    m_steering.apply(change);
+    if (pushChanged) {
+        const double mass = scene.particles[static_cast<std::size_t>(scene.steerable)].mass;
+        m_controller->steer(scene.steerable, m_steering.force(mass));
+    }
     updateSteerActions();
+}
+
+void MainWindow::strikeCue()
+{
+    const core::SceneDesc &scene = m_document->scene();
+    if (scene.steerable < 0 || scene.steerable >= static_cast<int>(scene.particles.size()))
+        return;
+    const core::ParticleDesc &ball = scene.particles[static_cast<std::size_t>(scene.steerable)];
+    if (ball.pinned) {
+        m_statusBar->showMessage(tr("Particle %1 is pinned: the cue does not move it").arg(scene.steerable));
+        return;
+    }
+    const Steering::Stroke stroke = m_steering.stroke(ball.radius);
+    m_controller->strike(scene.steerable, stroke.velocityChange, stroke.spinChange);
+    // the spin is kept where the scene can turn: the latest frame's model says whether it can
+    const auto frame = m_controller->frame();
+    const bool turns = frame && frame->model && frame->model->plan.spin;
+    QString text = tr("Particle %1 struck at %2 m/s, %3").arg(scene.steerable).arg(m_steering.strikeSpeed(), 0, 'g', 3)
+                       .arg(cueHeightText(m_steering.cueHeight));
+    if (m_steering.cueHeight != 0)
+        text += turns ? tr(": spin %1 rad/s").arg(stroke.spinChange.norm(), 0, 'g', 3)
+                      : tr(": no spin, as nothing in this scene has friction");
+    m_statusBar->showMessage(text);
 }
 
 }  // namespace ui

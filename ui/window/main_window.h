@@ -190,7 +190,9 @@ private:
     void planAccuracy(double tolerance, bool apply);
     void applyPlan(const core::AccuracyPlan &plan);
     void useAdaptive(double tolerance);
-    void steer(int turn, int change);
+    void steer(const Steering::Change &change);
+    // the cue strikes the steerable particle (S): along the push's direction, at the cue's speed and height
+    void strikeCue();
     void showGenerate();
     void addGenerated();
     void showImportMesh();
