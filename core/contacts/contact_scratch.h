@@ -122,6 +122,15 @@ struct ContactScratch {
     bool spin = false;     // the plan's spin: contacts act at the particles' surfaces and turn them
 
     std::vector<Contact> contacts;  // as found, then in the order they are solved (sorted by level)
+    // where the particles were when the contacts were gathered, and what the solve found after:
+    // which particles it moved farther than their gathering allowed for, and the pairs already
+    // contacts (as i · n + j, i < j, sorted), so that a pair it pushed together is found
+    // (contact_solve.cpp, gatherNewOverlaps)
+    Eigen::Matrix3Xd gatherPosition;
+    std::vector<std::uint8_t> movedFar;
+    std::vector<int> movers;
+    std::vector<std::uint64_t> pairKeys;
+    std::uint64_t overlapsCaught = 0;  // pairs the solve pushed together, found and solved, for the tests
     std::vector<int> place;         // while sorting: where each contact goes
     // the pair contacts as an adjacency list, for the levels: particle p's neighbours are
     // neighbours[neighbourStart[p] .. neighbourStart[p + 1])
