@@ -14,6 +14,7 @@
 // Impulses act on the sub-step's motion (x1 - x0) and on the end velocity, shared among a
 // triangle's corners or an edge's ends by their weights in the closest points and their masses.
 
+#include "core/contacts/contact_spin.h"
 #include "core/contacts/triangle_geometry.h"
 #include "core/parallel.h"
 #include "core/passes.h"
@@ -753,10 +754,45 @@ void applyVelocity(Eigen::Matrix3Xd &v1, const std::array<int, 4> &v, const Weig
             v1.col(v[a]) += (k.c[a] * k.w[a]) * impulse;
 }
 
+// With spin (the plan's), the point of a point–triangle pair, when it is a ball rather than a
+// sheet's particle, touches the sheet at −r n from its centre (n towards it): its surface there
+// slides over the sheet at the relative velocity less r ω × n, and friction's impulse −F on it turns
+// it by a r n × F (contact_spin.h; the sheet's corners do not turn). Stopping that slip costs
+// F (Σ c² w + a r²), so a ball struck across a sheet turns to rolling on it as on a floor, and a
+// sheet pulled from under a ball turns it
+struct PointSpin {
+    int particle = -1;  // -1: the pair does not turn anything
+    ContactLevers levers;
+};
+
+PointSpin pointSpin(const Model &model, const ClothSurface &surface, const PairView &pair)
+{
+    if (!model.plan.spin || pair.kind != PairKind::PointTriangle)
+        return {};
+    const int p = pair.v[0];
+    if (surface.vertexSheet[std::size_t(p)] >= 0 || !(model.invInertia[p] > 0.0) || !(model.radius[p] > 0.0))
+        return {};
+    PointSpin spin;
+    spin.particle = p;
+    spin.levers.ri = model.radius[p];
+    spin.levers.ai = model.invInertia[p];
+    return spin;
+}
+
+// the sliding of the pair along the surface, ut, and the inverse mass that stops it, with the
+// point's spin where it turns
+Vec slideWithSpin(const State &state, const PointSpin &spin, const Vec &ut, const Vec &n, double &weight)
+{
+    if (spin.particle < 0)
+        return ut;
+    weight += spin.levers.turning();
+    return ut + spinSlip(spin.levers, state.angularVelocity.col(spin.particle), Vec::Zero(), n);
+}
+
 // the end velocity after a contact along n that closed at `closing` (< 0, m/s): separating at the
 // restitution's share of that speed at least, with friction
 void answerVelocity(const Model &model, State &state, const std::array<int, 4> &v, const Weights4 &k, const Vec &n,
-                    double closing)
+                    double closing, const PointSpin &spin)
 {
     const Vec u = relative(state.velocity, v, k.c);
     const double un = u.dot(n);
@@ -764,14 +800,20 @@ void answerVelocity(const Model &model, State &state, const std::array<int, 4> &
     if (un >= target)
         return;
     const double j = (target - un) / k.sum;
-    const Vec ut = u - un * n;
-    applyVelocity(state.velocity, v, k, j * n - frictionImpulse(model, ut, j, k.sum));
+    double weight = k.sum;
+    const Vec slide = slideWithSpin(state, spin, u - un * n, n, weight);
+    const Vec friction = frictionImpulse(model, slide, j, weight);
+    applyVelocity(state.velocity, v, k, j * n - friction);
+    if (spin.particle >= 0) {
+        Vec unused = Vec::Zero();
+        turnBy(spin.levers, n, -friction, state.angularVelocity.col(spin.particle), unused);
+    }
 }
 
 // a pair closer than its distance at the sub-step's end: pushed apart to it along the line between
 // its closest points, its closing velocity taken away (restitution as a contact's)
 bool answerProximity(const Model &model, State &state, const Eigen::Matrix3Xd &x0, const PairView &pair,
-                     std::vector<int> &changedAt, int stamp, double h)
+                     const PointSpin &spin, std::vector<int> &changedAt, int stamp, double h)
 {
     const std::array<Vec, 4> x = gather(state.position, pair.v);
     const ClosestPoints cp = closest(pair.kind, x);
@@ -790,18 +832,19 @@ bool answerProximity(const Model &model, State &state, const Eigen::Matrix3Xd &x
     const Vec u1 = relative(state.velocity, pair.v, k.c);
     const double closing = std::min(0.0, u1.dot(n));
     const Vec moved = relative(state.position, pair.v, k.c) - relative(x0, pair.v, k.c);
-    const Vec tangentialMove = (moved - moved.dot(n) * n) / h;
-    const Vec push = ((pair.distance - d) / (h * k.sum)) * n -
-                     frictionImpulse(model, tangentialMove, -closing / k.sum, k.sum);
+    // (with spin, the slide of the point of contact: a ball rolling along the sheet does not slide)
+    double weight = k.sum;
+    const Vec slide = slideWithSpin(state, spin, (moved - moved.dot(n) * n) / h, n, weight);
+    const Vec push = ((pair.distance - d) / (h * k.sum)) * n - frictionImpulse(model, slide, -closing / k.sum, weight);
     applyMove(state.position, pair.v, k, push, h, changedAt, stamp);
-    answerVelocity(model, state, pair.v, k, n, closing);
+    answerVelocity(model, state, pair.v, k, n, closing, spin);
     return true;
 }
 
 // an impact found at fraction t of the motion: the pair's closing motion along the line between its
 // closest points there is stopped for the whole sub-step, its end velocity bounces
 bool answerImpact(const Model &model, State &state, const Eigen::Matrix3Xd &x0, const PairView &pair, double t,
-                  std::vector<int> &changedAt, int stamp, double h)
+                  const PointSpin &spin, std::vector<int> &changedAt, int stamp, double h)
 {
     std::array<Vec, 4> y;
     for (std::size_t a = 0; a < 4; ++a)
@@ -822,9 +865,10 @@ bool answerImpact(const Model &model, State &state, const Eigen::Matrix3Xd &x0, 
     if (!(un < 0.0))
         return false;  // not closing along n: the next pass, or a zone, takes it
     const double j = -un / k.sum;
-    const Vec ut = u - un * n;
-    applyMove(state.position, pair.v, k, j * n - frictionImpulse(model, ut, j, k.sum), h, changedAt, stamp);
-    answerVelocity(model, state, pair.v, k, n, un);
+    double weight = k.sum;
+    const Vec slide = slideWithSpin(state, spin, u - un * n, n, weight);
+    applyMove(state.position, pair.v, k, j * n - frictionImpulse(model, slide, j, weight), h, changedAt, stamp);
+    answerVelocity(model, state, pair.v, k, n, un, spin);
     return true;
 }
 
@@ -1012,7 +1056,7 @@ void collideTriangles(const Model &model, State &state, Workspace &work)
         const PairView pair = view(surface, s, s.candidates[c]);
         if (!whole(s, s.candidates[c]) || (!movedSince(s.changedAt, pair.v, 0) && surelyApart(s, c, pair)))
             continue;
-        answerProximity(model, state, x0, pair, s.changedAt, 0, h);
+        answerProximity(model, state, x0, pair, pointSpin(model, surface, pair), s.changedAt, 0, h);
     }
 
     // 2. continuous passes (stamps 1 ..): a pair is searched again once an answer has moved it, or
@@ -1036,7 +1080,7 @@ void collideTriangles(const Model &model, State &state, Workspace &work)
             if (t > 1.0)
                 continue;
             s.impacted.push_back(int(c));
-            if (answer && answerImpact(model, state, x0, pair, t, s.changedAt, stamp, h))
+            if (answer && answerImpact(model, state, x0, pair, t, pointSpin(model, surface, pair), s.changedAt, stamp, h))
                 ++s.impacts;
             else
                 pending[c] = 1;

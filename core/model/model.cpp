@@ -144,13 +144,15 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *b
             turned = turned || turns(c.friction, c.staticFriction, c.rollingFriction, c.spinningFriction);
     for (const ParticleDesc &p : scene.particles)
         turned = turned || !p.angularVelocity.isZero(0.0);
-    plan.spin = s.spin && turned;
-    if (plan.spin) {
+    const auto setSpin = [&] {
+        plan.spin = true;
         model->invInertia.setZero(n);
         for (Eigen::Index i = 0; i < n; ++i)
             if (model->invMass[i] > 0.0 && model->radius[i] > 0.0)
                 model->invInertia[i] = model->invMass[i] / (kSolidSphereInertia * model->radius[i] * model->radius[i]);
-    }
+    };
+    if (s.spin && turned)
+        setSpin();
 
     // the list as the kernels walk it, and the pass it takes
     model->springLayout = makeSpringLayout(SpringList{model->springA, model->springB, model->restLength,
@@ -185,6 +187,10 @@ std::shared_ptr<const Model> compileModel(const SceneDesc &scene, const Model *b
         if (!surface->empty()) {
             model->surface = std::move(surface);
             plan.triangleCollisions = true;
+            // a sheet with friction turns what rolls on it (triangle_collisions.cpp)
+            if (s.spin && !plan.spin &&
+                turns(model->friction, model->staticFriction, model->rollingFriction, model->spinningFriction))
+                setSpin();
         }
     }
 

@@ -46,8 +46,9 @@ struct StepPlan {
     // the iterative solver and a two-sided plane or rectangle: the resting solve keeps each
     // particle on the side of it where the impacts left it (ContactScratch::sidePosition)
     bool twoSidedColliders = false;
-    // the particles turn (State::angularVelocity, orientation): a contact can have friction,
-    // rolling resistance or spinning friction, or a particle is given a spin. Without it a contact
+    // the particles turn (State::angularVelocity, orientation): a contact (a sheet's triangles
+    // included) can have friction, rolling resistance or spinning friction, or a particle is given
+    // a spin. Without it a contact
     // acts at the centre and nothing turns, as in the handout
     bool spin = false;
     SubStepPath subStep = SubStepPath::Stages;
