@@ -168,6 +168,11 @@ std::uint64_t SimulationController::strike(int particle, const Eigen::Vector3d &
     return post(StrikeEdit{particle, velocityChange, spinChange});
 }
 
+bool SimulationController::sceneTurns() const
+{
+    return m_frame && m_frame->model && m_frame->model->plan.spin;
+}
+
 std::uint64_t SimulationController::sync()
 {
     return post(Sync{});

@@ -52,6 +52,9 @@ public:
     std::uint64_t grab(int particle, const Eigen::Vector3d &target);
     // a blow to a free particle: its velocity and spin change at once (the cue's stroke, a flick)
     std::uint64_t strike(int particle, const Eigen::Vector3d &velocityChange, const Eigen::Vector3d &spinChange);
+    // whether the scene of the latest frame keeps spins (core::StepPlan::spin): a strike's spin is
+    // kept only there
+    bool sceneTurns() const;
     // changes nothing, but the worker publishes a frame once it has applied every earlier message
     std::uint64_t sync();
     // asks the worker to plan the integrator and substeps for a tolerance (m per sub-step) from its

@@ -470,8 +470,7 @@ bool EditTools::spinGrabbed(QWheelEvent *event)
     m_grabSpin += notches * kFlickTurnsPerNotch;
     m_controller->strike(m_grabbed, Eigen::Vector3d::Zero(),
                          notches * kFlickTurnsPerNotch * 2.0 * std::numbers::pi * axis.normalized());
-    const auto frame = m_controller->frame();
-    const bool turns = frame && frame->model && frame->model->plan.spin;
+    const bool turns = m_controller->sceneTurns();
     emit message(turns ? tr("Particle %1 spun %2 turns/s %3 as seen: let go to flick it")
                              .arg(m_grabbed)
                              .arg(std::abs(m_grabSpin), 0, 'g', 3)

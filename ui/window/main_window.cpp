@@ -960,9 +960,7 @@ void MainWindow::strikeCue()
     }
     const Steering::Stroke stroke = m_steering.stroke(ball.radius);
     m_controller->strike(scene.steerable, stroke.velocityChange, stroke.spinChange);
-    // the spin is kept where the scene can turn: the latest frame's model says whether it can
-    const auto frame = m_controller->frame();
-    const bool turns = frame && frame->model && frame->model->plan.spin;
+    const bool turns = m_controller->sceneTurns();
     QString text = tr("Particle %1 struck at %2 m/s, %3").arg(scene.steerable).arg(m_steering.strikeSpeed(), 0, 'g', 3)
                        .arg(cueHeightText(m_steering.cueHeight));
     if (m_steering.cueHeight != 0)
