@@ -315,16 +315,23 @@ void TestContacts::threeBallPyramidHoldsAtItsStatics()
     scene.particles = core::ballPyramid(2, 0.05, 1.0, Eigen::Vector3d::Zero());
     test::Sim sim = test::compile(scene);
     const Eigen::Matrix3Xd start = sim.state.position;
-    for (int i = 0; i < 200; ++i)
+    Eigen::Matrix3Xd atOneSecond;
+    for (int i = 0; i < 1000; ++i) {
         QVERIFY(sim.step());
+        if (i == 899)
+            atOneSecond = sim.state.position;
+    }
     const double spread = (sim.state.position - start).colwise().norm().maxCoeff();
-    qInfo("mu %.3f: the ball that moved most in 2 s moved %.3g m", friction, spread);
+    const double lastSecond = (sim.state.position - atOneSecond).colwise().norm().maxCoeff();
+    qInfo("mu %.3f: the ball that moved most in 10 s moved %.3g m, %.3g m in the last second", friction, spread,
+          lastSecond);
     // standing: moved less than 0.1% of r (near the limit the friction takes hold after a slip of
-    // some micrometres: 22 µm at μ = 0.14) and still at the end; sliding: the top ball is down
-    const double speed = sim.state.velocity.colwise().norm().maxCoeff();
+    // some micrometres: 22 µm at μ = 0.14; with spin the top ball settles 13 µm into the overlap
+    // the position solve leaves, kOverlapSlop, in its first seconds) and still in the last second,
+    // to a tenth of a micrometre; sliding: the top ball is down
     if (stands) {
         QVERIFY2(spread < 1e-3 * 0.05, qPrintable(QString::number(spread)));
-        QVERIFY2(speed < 1e-9, qPrintable(QString::number(speed)));
+        QVERIFY2(lastSecond < 1e-7, qPrintable(QString::number(lastSecond)));
     } else {
         QVERIFY2(spread > 0.05, qPrintable(QString::number(spread)));
     }
@@ -357,6 +364,7 @@ void TestContacts::pileSettles()
     const double kinetic = bench::kineticEnergy(sim.state.velocity, sim.model->mass);
     QVERIFY2(kinetic < test::settleThreshold(sim, bench::kBallRadius), qPrintable(QString::number(kinetic)));
     const double overlap = bench::deepestOverlap(sim.state.position, sim.model->radius, pile.scene.planes);
+    qInfo("deepest overlap at 10 s %.3g mm", 1e3 * overlap);
     QVERIFY2(overlap < 0.01 * bench::kBallRadius, qPrintable(QString::number(overlap)));
 }
 
