@@ -4,6 +4,7 @@
 // recording changed by one step no longer matches; a damaged file is refused with its path.
 
 #include "session/session_file.h"
+#include "tests/session/runner_with.h"
 #include "session/simulation_runner.h"
 
 #include "core/model/generators.h"
@@ -32,12 +33,7 @@ std::shared_ptr<const core::SceneDesc> netScene()
     return std::make_shared<const core::SceneDesc>(scene);
 }
 
-ui::SimulationRunner runnerWith(std::shared_ptr<const core::SceneDesc> scene)
-{
-    ui::SimulationRunner runner;
-    runner.apply(ui::SetSceneEdit{std::move(scene), ui::SceneChange::Replace});
-    return runner;
-}
+using test::runnerWith;
 
 // the recording a StopRecording handed back, and the request it answers
 std::shared_ptr<const ui::SessionRecording> stoppedRecording(ui::SimulationRunner &runner, std::uint64_t *request = nullptr)

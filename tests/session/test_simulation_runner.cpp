@@ -5,6 +5,7 @@
 // waiting messages.
 
 #include "session/simulation_runner.h"
+#include "tests/session/runner_with.h"
 
 #include "core/integrators/error_estimate.h"
 #include "core/model/generators.h"
@@ -42,12 +43,7 @@ std::shared_ptr<const core::SceneDesc> springScene(double stiffness = 100.0, dou
     return scene;
 }
 
-ui::SimulationRunner runnerWith(std::shared_ptr<const core::SceneDesc> scene)
-{
-    ui::SimulationRunner runner;
-    runner.apply(ui::SetSceneEdit{std::move(scene), ui::SceneChange::Replace});
-    return runner;
-}
+using test::runnerWith;
 
 constexpr double kNoBudgetLimit = 1e9;  // s
 // a spring symplectic Euler holds at the 0.25 s step (ω h = 0.79; at the default 100 N/m, 2.5, the

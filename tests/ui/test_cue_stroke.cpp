@@ -3,6 +3,7 @@
 // the closed form's speed for every height of the cue: (5/7) s (1 + h/r).
 
 #include "ui/simulation/steering.h"
+#include "tests/session/runner_with.h"
 
 #include "core/model/diagnostics.h"
 #include "core/model/generators.h"
@@ -40,12 +41,7 @@ std::shared_ptr<const core::SceneDesc> ballOnFelt(double friction = 0.2)
     return scene;
 }
 
-ui::SimulationRunner runnerWith(std::shared_ptr<const core::SceneDesc> scene)
-{
-    ui::SimulationRunner runner;
-    runner.apply(ui::SetSceneEdit{std::move(scene), ui::SceneChange::Replace});
-    return runner;
-}
+using test::runnerWith;
 
 }  // namespace
 

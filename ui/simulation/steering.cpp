@@ -32,12 +32,12 @@ void Steering::raiseCue(int presses)
     cueHeight = std::clamp(cueHeight + presses, -kMaxCueHeight, kMaxCueHeight);
 }
 
-void Steering::apply(const Change &change)
+void Steering::apply(const Change &keys)
 {
-    turn(change.turn);
-    this->change(change.push);
-    changeCue(change.cue);
-    raiseCue(change.height);
+    turn(keys.turn);
+    change(keys.push);
+    changeCue(keys.cue);
+    raiseCue(keys.height);
 }
 
 Eigen::Vector3d Steering::direction() const

@@ -39,7 +39,7 @@ struct Steering {
         int cue = 0;
         int height = 0;
     };
-    void apply(const Change &change);
+    void apply(const Change &keys);
 
     Eigen::Vector3d direction() const;  // unit, horizontal
     double strength(double mass) const;  // N, for a particle of this mass (kg)
