@@ -625,8 +625,8 @@ void solvePositions(const Model &model, State &state, ContactScratch &scratch)
             // (a collider's contact is pushed out to the last hair: a wall is never crossed; and a
             // frictionless pair's too, whose pushes hold nothing back, so cannot pump: a
             // frictionless pyramid of 20 rows left its slop sank 4.3 mm at the top)
-            const bool slips = c.withCollider() || !(c.staticFriction > 0.0 || c.friction > 0.0);
-            const double slop = slips ? 0.0 : kOverlapSlop * (model.radius[c.i] + model.radius[c.j]);
+            const bool pushedOutFully = c.withCollider() || !(c.staticFriction > 0.0 || c.friction > 0.0);
+            const double slop = pushedOutFully ? 0.0 : kOverlapSlop * (model.radius[c.i] + model.radius[c.j]);
             const double overlap = overlapOf(model, state, c) - slop;
             if (overlap > 0.0) {
                 const double push = overlap * w.mass;

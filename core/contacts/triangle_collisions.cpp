@@ -812,8 +812,8 @@ void answerVelocity(const Model &model, State &state, const std::array<int, 4> &
 
 // a pair closer than its distance at the sub-step's end: pushed apart to it along the line between
 // its closest points, its closing velocity taken away (restitution as a contact's)
-bool answerProximity(const Model &model, State &state, const Eigen::Matrix3Xd &x0, const PairView &pair,
-                     const PointSpin &spin, std::vector<int> &changedAt, int stamp, double h)
+bool answerProximity(const Model &model, const ClothSurface &surface, State &state, const Eigen::Matrix3Xd &x0,
+                     const PairView &pair, std::vector<int> &changedAt, int stamp, double h)
 {
     const std::array<Vec, 4> x = gather(state.position, pair.v);
     const ClosestPoints cp = closest(pair.kind, x);
@@ -832,7 +832,9 @@ bool answerProximity(const Model &model, State &state, const Eigen::Matrix3Xd &x
     const Vec u1 = relative(state.velocity, pair.v, k.c);
     const double closing = std::min(0.0, u1.dot(n));
     const Vec moved = relative(state.position, pair.v, k.c) - relative(x0, pair.v, k.c);
-    // (with spin, the slide of the point of contact: a ball rolling along the sheet does not slide)
+    // (with spin, the slide of the point of contact: a ball rolling along the sheet does not slide;
+    // found only for the pairs that are answered, most candidates being clear)
+    const PointSpin spin = pointSpin(model, surface, pair);
     double weight = k.sum;
     const Vec slide = slideWithSpin(state, spin, (moved - moved.dot(n) * n) / h, n, weight);
     const Vec push = ((pair.distance - d) / (h * k.sum)) * n - frictionImpulse(model, slide, -closing / k.sum, weight);
@@ -1056,7 +1058,7 @@ void collideTriangles(const Model &model, State &state, Workspace &work)
         const PairView pair = view(surface, s, s.candidates[c]);
         if (!whole(s, s.candidates[c]) || (!movedSince(s.changedAt, pair.v, 0) && surelyApart(s, c, pair)))
             continue;
-        answerProximity(model, state, x0, pair, pointSpin(model, surface, pair), s.changedAt, 0, h);
+        answerProximity(model, surface, state, x0, pair, s.changedAt, 0, h);
     }
 
     // 2. continuous passes (stamps 1 ..): a pair is searched again once an answer has moved it, or

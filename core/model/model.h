@@ -48,8 +48,7 @@ struct StepPlan {
     bool twoSidedColliders = false;
     // the particles turn (State::angularVelocity, orientation): a contact (a sheet's triangles
     // included) can have friction, rolling resistance or spinning friction, or a particle is given
-    // a spin. Without it a contact
-    // acts at the centre and nothing turns, as in the handout
+    // a spin. Without it a contact acts at the centre and nothing turns, as in the handout
     bool spin = false;
     SubStepPath subStep = SubStepPath::Stages;
 
