@@ -632,8 +632,11 @@ void resolveJam(const Model &model, State &state, ContactScratch &scratch, const
     const double t = impact.time;
     std::vector<int> &members = scratch.zoneMembers;
     std::vector<std::uint8_t> &inZone = scratch.inZone;
+    std::vector<int> &pinnedMet = scratch.zonePinnedMet;
+    // (inZone is all clear between jams, sized once a sub-step: clearing the whole of it for each
+    // jam cost a pass over every particle per jam, which in a large box was most of a jam's time)
     members.assign({impact.i});
-    inZone.assign(std::size_t(model.particleCount()), 0);
+    pinnedMet.clear();
     inZone[std::size_t(impact.i)] = 1;
     if (impact.j >= 0 && model.invMass[impact.j] != 0.0) {
         members.push_back(impact.j);
@@ -696,6 +699,7 @@ void resolveJam(const Model &model, State &state, ContactScratch &scratch, const
                         return;
                     inZone[std::size_t(q)] = 1;
                     if (model.invMass[q] == 0.0) {
+                        pinnedMet.push_back(q);
                         pinned = true;
                         return;
                     }
@@ -706,8 +710,12 @@ void resolveJam(const Model &model, State &state, ContactScratch &scratch, const
         if (!joined && !(pinned && !v.isZero()))
             break;
     }
-    for (int p : members)
+    for (int p : members) {
         redirect(scratch, state, p, pathOf(model, state, scratch, p, h), t, v);
+        inZone[std::size_t(p)] = 0;
+    }
+    for (int p : pinnedMet)
+        inZone[std::size_t(p)] = 0;
     scratch.zonesMade += 1;
 }
 
@@ -726,6 +734,7 @@ void resolveImpacts(const Model &model, State &state, Workspace &work, double h)
     scratch.candidateStart.assign(std::size_t(n) + 1, 0);
     scratch.candidates.clear();
     scratch.isFast.assign(std::size_t(n), 0);
+    scratch.inZone.assign(std::size_t(n), 0);
     if (model.plan.planeCollisions) {
         const int free = int(model.freeParticles.size());
         const int shares = startShares(scratch, free);

@@ -158,6 +158,7 @@ struct ContactScratch {
     std::vector<int> zoneMembers;       // a jam's impact zone
     std::vector<int> zoneQueue;         // its members, searched for their next impacts
     std::vector<std::uint8_t> inZone;   // per particle: in the zone (or a pinned particle it met)
+    std::vector<int> zonePinnedMet;     // the pinned particles a jam's zone met, marked in inZone
 };
 
 }  // namespace core
