@@ -60,9 +60,11 @@ struct ContactGrid {
     std::vector<int> big;                 // particles too big for the cells, checked against all
     std::vector<double> radiusSample;     // radii sampled to pick the cell size
     std::vector<ContactPair> found;       // the pairs in the order the grid finds them
-    std::vector<std::vector<ContactPair>> foundShares;
+    std::vector<std::vector<ContactPair>> foundShares;  // the pairs each thread's share of the grid found
     std::vector<GridExtent> shareExtents;          // per thread's share, while sorting
-    std::vector<std::vector<int>> bigShares;       // per thread's share, its big particles  // the pairs each thread's share of the grid found
+    std::vector<std::vector<int>> bigShares;       // per thread's share, its big particles
+    std::vector<std::vector<int>> shareStarts;     // per thread's share, per bucket: its count, then where it starts
+    std::vector<int> rangeStarts;                  // per range of buckets: its total, then where it starts
     std::vector<std::uint16_t> partners;  // per particle, the grid pairs found for it so far
     // whether a particle reached kMaxGridPartners pairs in the last pass, so that pairs of it
     // may have been left out (a crowd of overlapping particles)

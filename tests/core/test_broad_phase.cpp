@@ -4,6 +4,7 @@
 #include "core/contacts/broad_phase.h"
 #include "core/passes.h"
 #include "core/step.h"
+#include "core/threads.h"
 #include "scene_builder.h"
 
 #include <QtTest>
@@ -18,6 +19,8 @@ private slots:
     void gridEqualsBruteForce_data();
     void gridEqualsBruteForce();
     void gridIsReusedAcrossScenes();
+    void gridSortsAlikeOnAnyThreadCount_data();
+    void gridSortsAlikeOnAnyThreadCount();
     void runEqualsBruteForceRun();
     void stepAllocatesNothingOnceWarm();
     void nonFiniteParticleNeverCollides();
@@ -258,6 +261,46 @@ void TestBroadPhase::gridEqualsBruteForce()
             QVERIFY(grid.pairs[k - 1].i < grid.pairs[k].i ||
                     (grid.pairs[k - 1].i == grid.pairs[k].i && grid.pairs[k - 1].j < grid.pairs[k].j));
     }
+}
+
+// Scenes large enough for the grid to be sorted in parallel shares: the same slots, buckets and
+// pairs as on one thread, and the brute force's pairs
+void TestBroadPhase::gridSortsAlikeOnAnyThreadCount_data()
+{
+    QTest::addColumn<Layout>("layout");
+    QTest::addColumn<int>("count");
+    QTest::newRow("uniform, dense cells") << Layout::Uniform << 20000;
+    QTest::newRow("varied radii") << Layout::VariedRadii << 12000;
+    QTest::newRow("far apart, hashed cells") << Layout::FarApart << 12000;
+    QTest::newRow("not finite") << Layout::NotFinite << 9000;
+    QTest::newRow("few huge") << Layout::FewHuge << 9000;
+    QTest::newRow("pinned") << Layout::Pinned << 9000;
+}
+
+void TestBroadPhase::gridSortsAlikeOnAnyThreadCount()
+{
+    if (core::maxThreadCount() < 2)
+        QSKIP("one processor: the grid is never sorted in shares");
+    QFETCH(Layout, layout);
+    QFETCH(int, count);
+    const test::Sim sim = compileCase(makeCase(layout, count, qHash(QByteArray(QTest::currentDataTag()))));
+    const int before = core::threadCount();
+    core::ContactGrid one, two;
+    core::setThreadCount(1);
+    core::findContacts(*sim.model, sim.state.position, one);
+    core::setThreadCount(2);
+    compareWithBruteForce(sim, two);
+    core::setThreadCount(before);
+    QVERIFY(!one.pairs.empty());
+    QCOMPARE(two.hashed, one.hashed);
+    QCOMPARE(two.bucketStart, one.bucketStart);
+    QCOMPARE(two.slotOf, one.slotOf);
+    QCOMPARE(two.sorted.size(), one.sorted.size());
+    for (std::size_t k = 0; k < one.sorted.size(); ++k) {
+        QCOMPARE(two.sorted[k].particle, one.sorted[k].particle);
+        QCOMPARE(two.sorted[k].cell, one.sorted[k].cell);
+    }
+    QVERIFY(two.pairs == one.pairs);
 }
 
 void TestBroadPhase::gridIsReusedAcrossScenes()
