@@ -49,6 +49,7 @@ void reserve(const Model &model, ContactScratch &scratch)
     scratch.zoneOf.reserve(n);
     scratch.zoneMomentum.resize(3, Eigen::Index(n));
     scratch.zoneMass.reserve(n);
+    scratch.inZone.reserve(n);
 }
 
 }  // namespace
