@@ -131,11 +131,16 @@ double secondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// warms up, then times plan.repetitions samples of a fixed number of steps; ms per step, median
+// the samples' size: steps in a sample and samples (the median counts)
+struct Sampling {
+    int steps = 1;
+    int repetitions = 1;
+};
+
+// the warm-up, at least one step and plan.warmup seconds, which also sizes the samples
 template <typename StepOnce>
-double timeSteps(StepOnce &&stepOnce, const Plan &plan)
+Sampling warmUp(StepOnce &&stepOnce, const Plan &plan)
 {
-    // warm-up: at least one step and plan.warmup seconds; it also sizes the samples
     const auto start = std::chrono::steady_clock::now();
     int warm = 0;
     do {
@@ -144,8 +149,14 @@ double timeSteps(StepOnce &&stepOnce, const Plan &plan)
     } while (secondsSince(start) < plan.warmup);
     const double perStep = secondsSince(start) / warm;
     const int steps = std::clamp(static_cast<int>(std::ceil(plan.sample / perStep)), 1, 1000000);
-    const int repetitions = perStep * steps > 1.0 ? std::min(3, plan.repetitions) : plan.repetitions;
+    return {steps, perStep * steps > 1.0 ? std::min(3, plan.repetitions) : plan.repetitions};
+}
 
+// warms up, then times plan.repetitions samples of a fixed number of steps; ms per step, median
+template <typename StepOnce>
+double timeSteps(StepOnce &&stepOnce, const Plan &plan)
+{
+    const auto [steps, repetitions] = warmUp(stepOnce, plan);
     std::vector<double> samples;
     for (int r = 0; r < repetitions; ++r) {
         const auto begin = std::chrono::steady_clock::now();
@@ -171,15 +182,7 @@ std::vector<SameStepsTiming> timeSameSteps(const core::Model &model, core::State
                                            const std::vector<int> &threads, const Plan &plan)
 {
     core::setThreadCount(threads.front());
-    const auto start = std::chrono::steady_clock::now();
-    int warm = 0;
-    do {
-        core::step(model, state, work);
-        ++warm;
-    } while (secondsSince(start) < plan.warmup);
-    const double perStep = secondsSince(start) / warm;
-    const int steps = std::clamp(static_cast<int>(std::ceil(plan.sample / perStep)), 1, 1000000);
-    const int repetitions = perStep * steps > 1.0 ? std::min(3, plan.repetitions) : plan.repetitions;
+    const auto [steps, repetitions] = warmUp([&] { core::step(model, state, work); }, plan);
     const core::State from = state;
     std::vector<SameStepsTiming> timings;
     for (int t : threads) {
