@@ -189,46 +189,53 @@ int startShares(ContactScratch &scratch, int count)
     return shares;
 }
 
-// particle i's impact with collider k from time `from` on, if any: at `from` already when it touches
-// the collider there and approaches it faster than a resting contact, else where its path meets it
-void colliderImpact(const Model &model, const State &state, const ContactScratch &scratch, std::vector<Impact> &out,
-                    int i, int k, double from, double h)
+// particle i's impacts with each collider from time `from` on, if any: at `from` already where it
+// touches the collider there and approaches it faster than a resting contact, else where its path
+// meets it. (Its path, and where it is at `from` and at the end, are found once for all colliders:
+// a box's walls were each finding them again for every ball)
+void colliderImpacts(const Model &model, const State &state, const ContactScratch &scratch, std::vector<Impact> &out,
+                     int i, double from, double h)
 {
+    if (model.colliders.empty())
+        return;
     const double r = model.radius[i];
-    const Collider &c = model.colliders[std::size_t(k)];
     const TimedPath a = pathOf(model, state, scratch, i, h);
     const double t0 = std::max(from, a.start);
-    // the side it is on at t0: the side it keeps (a two-sided plane is never crossed). Not the side
-    // it began the sub-step on: a ball may pass round a table's edge on the way
     const Eigen::Vector3d x0 = a.position(t0);
-    const double side = sideOf(c, x0);
-    const Separation s0 = separation(c, x0, side);
-    if (!(s0.distance > r)) {
-        // touching (or not finite): an impact now if it comes in fast, else a resting contact
-        if (-s0.normal.dot(a.velocity(t0)) > touchingThreshold(model))
-            push(scratch, out, t0, i, -1 - k);
-        return;
-    }
     const Eigen::Vector3d x1 = state.position.col(i);
-    const bool crossed = c.twoSided && sideOf(c, x1) != side;
-    if (!(separation(c, x1, side).distance <= r + bulge(a.path) || crossed))
-        return;  // clear at both ends, and on the same side
-    // the distance to the collider, on whichever side the path is: advancing never steps past a
-    // touch, so a change of side found on the way is a pass round a rectangle's edge, and a path
-    // through the sheet touches it first. (Measured from the side at t0, a ball passing round a
-    // table's edge and on over the top was found 0.4 m inside it, struck back from there and
-    // left 9 cm inside the ball below: the invariants' seed 72646)
-    const auto gap = [&](double t) {
-        const Eigen::Vector3d x = a.position(t0 + t);
-        return separation(c, x, sideOf(c, x)).distance - r;
-    };
-    const std::optional<double> t = firstTouch(gap, a.speedBound(), h - t0, r);
-    if (!t)
-        return;  // passed the rectangle's edge
-    const Eigen::Vector3d x = a.position(t0 + *t);
-    const Separation s = separation(c, x, sideOf(c, x));
-    if (-s.normal.dot(a.velocity(t0 + *t)) > restingThreshold(model, s.normal))
-        push(scratch, out, t0 + *t, i, -1 - k);
+    const double reach = r + bulge(a.path);
+    for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k) {
+        const Collider &c = model.colliders[std::size_t(k)];
+        // the side it is on at t0: the side it keeps (a two-sided plane is never crossed). Not the
+        // side it began the sub-step on: a ball may pass round a table's edge on the way
+        const double side = sideOf(c, x0);
+        const Separation s0 = separation(c, x0, side);
+        if (!(s0.distance > r)) {
+            // touching (or not finite): an impact now if it comes in fast, else a resting contact
+            if (-s0.normal.dot(a.velocity(t0)) > touchingThreshold(model))
+                push(scratch, out, t0, i, -1 - k);
+            continue;
+        }
+        const bool crossed = c.twoSided && sideOf(c, x1) != side;
+        if (!(separation(c, x1, side).distance <= reach || crossed))
+            continue;  // clear at both ends, and on the same side
+        // the distance to the collider, on whichever side the path is: advancing never steps past a
+        // touch, so a change of side found on the way is a pass round a rectangle's edge, and a path
+        // through the sheet touches it first. (Measured from the side at t0, a ball passing round a
+        // table's edge and on over the top was found 0.4 m inside it, struck back from there and
+        // left 9 cm inside the ball below: the invariants' seed 72646)
+        const auto gap = [&](double t) {
+            const Eigen::Vector3d x = a.position(t0 + t);
+            return separation(c, x, sideOf(c, x)).distance - r;
+        };
+        const std::optional<double> t = firstTouch(gap, a.speedBound(), h - t0, r);
+        if (!t)
+            continue;  // passed the rectangle's edge
+        const Eigen::Vector3d x = a.position(t0 + *t);
+        const Separation s = separation(c, x, sideOf(c, x));
+        if (-s.normal.dot(a.velocity(t0 + *t)) > restingThreshold(model, s.normal))
+            push(scratch, out, t0 + *t, i, -1 - k);
+    }
 }
 
 // one pair from time `from` on: an impact at `from` if they touch then and close faster than a
@@ -549,8 +556,7 @@ void impactsOf(const Model &model, const State &state, ContactScratch &scratch, 
     if (model.invMass[p] == 0.0)
         return;
     if (model.plan.planeCollisions)
-        for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k)
-            colliderImpact(model, state, scratch, scratch.impacts, p, k, t, h);
+        colliderImpacts(model, state, scratch, scratch.impacts, p, t, h);
     if (!model.plan.particleCollisions)
         return;
     // a fast path, or one an impact sent out of its sphere in a scene small enough, is checked
@@ -741,8 +747,7 @@ void resolveImpacts(const Model &model, State &state, Workspace &work, double h)
         parallelShares(free, [&](int share, int begin, int end) {
             std::vector<Impact> &out = scratch.impactShares[std::size_t(share)];
             for (int f = begin; f < end; ++f)
-                for (int k = 0; k < static_cast<int>(model.colliders.size()); ++k)
-                    colliderImpact(model, state, scratch, out, model.freeParticles[std::size_t(f)], k, 0.0, h);
+                colliderImpacts(model, state, scratch, out, model.freeParticles[std::size_t(f)], 0.0, h);
         });
         joinShares(scratch, shares);
     }
