@@ -107,6 +107,16 @@ double bigRadius(const Model &model, const Eigen::VectorXd &radius, ContactGrid 
     return 2.0 * *percentile;
 }
 
+// room in a per-bucket array for the most buckets either layout may take for `count` particles (4
+// a particle dense, under 4 hashed, and one past the end), reserved so that a box that grows never
+// reallocates it
+void reserveForBuckets(std::vector<int> &perBucket, int count)
+{
+    const std::size_t most = 4 * std::size_t(count) + 2;
+    if (perBucket.capacity() < most)
+        perBucket.reserve(most);
+}
+
 // particle i's cell
 std::uint64_t cellOfParticle(const Eigen::Matrix3Xd &position, int i, const Eigen::Vector3d &lo, const Layout &layout)
 {
@@ -175,8 +185,7 @@ void sortInShares(const Model &model, const Eigen::Matrix3Xd &position, const Ei
     grid.bucketStart.resize(buckets + 1);
     parallelShares(n, [&](int share, int begin, int end) {
         std::vector<int> &counts = grid.shareStarts[std::size_t(share)];
-        if (counts.capacity() < 4 * std::size_t(count) + 2)
-            counts.reserve(4 * std::size_t(count) + 2);  // (as bucketStart: a box that grows never reallocates)
+        reserveForBuckets(counts, count);
         counts.assign(buckets, 0);
         for (int i = begin; i < end; ++i) {
             if (grid.slotOf[std::size_t(i)] != 0)
@@ -317,9 +326,7 @@ bool sortIntoGrid(const Model &model, const Eigen::Matrix3Xd &position, const Ei
         layout.mask = layout.buckets - 1;
     }
     grid.hashed = !layout.dense;
-    // (room for the most either layout may take, so that a box that grows never reallocates)
-    if (grid.bucketStart.capacity() < 4 * std::size_t(count) + 2)
-        grid.bucketStart.reserve(4 * std::size_t(count) + 2);
+    reserveForBuckets(grid.bucketStart, count);
 
     if (twoPhaseShares(n) > 1 && layout.buckets < std::uint64_t(std::numeric_limits<int>::max()))
         sortInShares(model, position, radius, grid, layout, lo, count);
